@@ -1,0 +1,24 @@
+#pragma once
+// Parsing of the small value lists the command line takes (`0.5,0.2,0.8`, SG descriptions).
+// Errors are UsageError with a message that names the argument.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/spherical_gaussian.h"
+
+namespace weft {
+
+class UsageError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// Comma-separated finite numbers, exactly `count` of them.
+std::vector<double> parse_numbers(const std::string& text, size_t count, const std::string& arg);
+// A direction: 3 numbers, non-zero length; returned normalised.
+glm::dvec3 parse_direction(const std::string& text, const std::string& arg);
+// `axis_x,axis_y,axis_z,λ,μ_r,μ_g,μ_b`: axis normalised, λ > 0, μ ≥ 0.
+SphericalGaussian parse_sg(const std::string& text, const std::string& arg);
+
+}  // namespace weft

@@ -1,0 +1,15 @@
+#pragma once
+// Each subcommand registers its options on the `weft` app and returns the action to run once
+// the command line is parsed. Actions return the exit code: 0 ok, 1 runtime failure, 2 bad
+// usage or bad input (DESIGN.md §1).
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace weft {
+
+using CommandAction = std::function<int()>;
+
+CommandAction add_eval_command(CLI::App& app);
+
+}  // namespace weft

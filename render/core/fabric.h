@@ -1,0 +1,32 @@
+#pragma once
+// A woven fabric: two threads with their scattering parameters and tangent curves (Table II).
+// Presets are JSON files in assets/fabrics/ (format: assets/fabrics/README.md).
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/microcylinder.h"
+
+namespace weft {
+
+struct Fabric {
+  std::string name;
+  std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
+};
+
+// A fabric file that cannot be used. what() names the file, the field and the value.
+class FabricError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// Parses and validates a fabric from JSON text; `origin` names it in errors.
+Fabric parse_fabric(const std::string& json_text, const std::string& origin);
+Fabric load_fabric(const std::filesystem::path& file);
+// Looks a preset up by name in `dir` (`<dir>/<name>.json`).
+Fabric load_fabric_preset(const std::string& name, const std::filesystem::path& dir);
+std::vector<std::string> list_fabric_presets(const std::filesystem::path& dir);
+
+}  // namespace weft

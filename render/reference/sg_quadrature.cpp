@@ -1,0 +1,88 @@
+#include "reference/sg_quadrature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace weft {
+
+namespace {
+
+// ∫ G(ω) f(ω) dω over the sphere with an n × 2n midpoint grid in (u, φ), where u is the SG's
+// cumulative polar mass: cos θ = 1 + ln(1 − u(1 − e^{−2λ}))/λ makes exp(λ(cos θ − 1)) dcos θ
+// = (1 − e^{−2λ})/λ du.
+dvec3 integrate_one(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const SphericalGaussian& g,
+                    int n, const SgQuadratureOptions& opt) {
+  const double lambda = g.sharpness;
+  const double mass = -std::expm1(-2.0 * lambda);  // 1 − e^{−2λ}
+  const dvec3 z = g.axis;
+  const dvec3 x = glm::normalize(std::abs(z.x) < 0.9 ? glm::cross(dvec3(1, 0, 0), z) : glm::cross(dvec3(0, 1, 0), z));
+  const dvec3 y = glm::cross(z, x);
+  const int n_phi = 2 * n;
+  double r = 0, gr = 0, b = 0;
+#pragma omp parallel reduction(+ : r, gr, b)
+  {
+    ClothBsdf::Point point = bsdf.at(frame);
+#pragma omp for schedule(dynamic, 4)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n;
+      const double cos_t = std::clamp(1.0 + std::log1p(-u * mass) / lambda, -1.0, 1.0);
+      const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+      for (int k = 0; k < n_phi; ++k) {
+        const double phi = 2.0 * std::numbers::pi * (k + 0.5) / n_phi;
+        const dvec3 wi = sin_t * std::cos(phi) * x + sin_t * std::sin(phi) * y + cos_t * z;
+        if (glm::dot(wi, frame.n) <= 0.0) continue;
+        if (opt.visible && !opt.visible(wi)) continue;
+        const dvec3 f = point.integrand(wi, wo);
+        r += f.r;
+        gr += f.g;
+        b += f.b;
+      }
+    }
+  }
+  const double cell = (mass / lambda) * (1.0 / n) * (2.0 * std::numbers::pi / n_phi);
+  return g.amplitude * dvec3(r, gr, b) * cell;
+}
+
+dvec3 integrate_all(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                    std::span<const SphericalGaussian> sgs, int n, const SgQuadratureOptions& opt) {
+  dvec3 sum(0.0);
+  for (const auto& g : sgs)
+    if (g.amplitude != dvec3(0.0)) sum += integrate_one(bsdf, frame, wo, g, n, opt);
+  return sum;
+}
+
+}  // namespace
+
+SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                         std::span<const SphericalGaussian> sgs, const SgQuadratureOptions& opt) {
+  SgQuadratureResult res;
+  if (glm::dot(wo, frame.n) <= 0.0 || sgs.empty()) {
+    res.converged = true;
+    return res;
+  }
+  const long long per_cell = static_cast<long long>(sgs.size()) * 2;
+  int n = std::max(opt.min_polar, 4);
+  dvec3 prev = integrate_all(bsdf, frame, wo, sgs, n, opt);
+  res.evaluations += per_cell * n * n;
+  while (true) {
+    const int next = 2 * n;
+    if (next > opt.max_polar) break;
+    const dvec3 cur = integrate_all(bsdf, frame, wo, sgs, next, opt);
+    res.evaluations += per_cell * next * next;
+    const double scale = std::max({cur.r, cur.g, cur.b});
+    const double change = scale > 0.0 ? glm::length(cur - prev) / glm::length(cur) : 0.0;
+    n = next;
+    prev = cur;
+    res.last_change = change;
+    if (change < opt.tolerance) {
+      res.converged = true;
+      break;
+    }
+  }
+  res.radiance = prev;
+  res.polar_cells = n;
+  return res;
+}
+
+}  // namespace weft

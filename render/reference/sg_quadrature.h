@@ -1,0 +1,36 @@
+#pragma once
+// Ground-truth outgoing radiance at one cloth point lit by spherical Gaussians:
+//   L_o(ω_o) = Σ_k ∫_{n·ω_i>0} G_k(ω_i) V(ω_i) · integrand(ω_i, ω_o) dω_i.
+// Each SG's integral is taken in that SG's own frame with the polar angle warped by the
+// SG's exact inverse CDF, so the Gaussian factor is constant in the warped variable and only
+// the model's own features need resolving, however sharp the light (λ up to 10⁴). The
+// midpoint grid is doubled until the result changes by less than the tolerance.
+#include <functional>
+#include <span>
+
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+
+namespace weft {
+
+struct SgQuadratureOptions {
+  double tolerance = 0.002;  // relative change between two grid levels that counts as converged
+  int min_polar = 64;        // first grid: min_polar × 2·min_polar cells per SG
+  int max_polar = 1024;      // gives up (converged = false) past this
+  // Visibility V(ω_i) at the point; empty means unoccluded.
+  std::function<bool(const dvec3&)> visible;
+};
+
+struct SgQuadratureResult {
+  dvec3 radiance{0.0};
+  bool converged = false;
+  int polar_cells = 0;        // of the last grid
+  long long evaluations = 0;  // integrand evaluations, all levels
+  double last_change = 0.0;   // relative change at the last doubling
+};
+
+SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                         std::span<const SphericalGaussian> sgs,
+                                         const SgQuadratureOptions& options = {});
+
+}  // namespace weft

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Weft's one set-up script: installs the Debian 12 packages the project needs (only what is
+# missing; quiet when all is there), builds, and then runs or tests.
+#   ./setup.sh run    install, build, render the default showroom scene
+#   ./setup.sh test   install, build, run the test suite (what .ci/run does)
+#   ./setup.sh deps | build
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(
+  build-essential cmake pkg-config git
+  libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev
+  libembree-dev libtbb-dev libopenexr-dev libpng-dev libtinygltf-dev
+  libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
+  libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
+  libgtest-dev libgmock-dev
+)
+BUILD_DIR=${WEFT_BUILD_DIR:-build}
+
+deps() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "setup: installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  cmake --build "$BUILD_DIR" -j"$(nproc)"
+}
+
+run_default() {
+  # The renderer arrives with later issues; until then the default fabric's radiance under one light.
+  "$BUILD_DIR/render/app/weft" eval --fabric linen_plain --view 0.5,0.2,0.8 --sg -0.3,0.1,0.9,20,1,1,1
+}
+
+test_all() {
+  # Benchmarks and long bakes carry the label `bench` and stay out of this run.
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" -LE bench
+}
+
+case "${1:-}" in
+  deps) deps ;;
+  build) deps; build ;;
+  run) deps; build; run_default ;;
+  test) deps; build; test_all ;;
+  *) sed -n '2,8p' "$0"; exit 2 ;;
+esac
