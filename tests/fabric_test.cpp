@@ -85,7 +85,7 @@ TEST(Fabric, GarbageAndAbsurdValuesAreRejected) {
             std::string::npos);
   EXPECT_NE(error_of(replace(linen_text(), "\"gamma_s_deg\": 12", "\"gamma_s_deg\": 0")).find("gamma_s_deg"),
             std::string::npos);
-  EXPECT_NE(error_of(replace(linen_text(), "\"eta\": 1.46", "\"eta\": 1e400")).find("eta"), std::string::npos);
+  EXPECT_NE(error_of(replace(linen_text(), "\"eta\": 1.46", "\"eta\": 1e400")).find("1e400"), std::string::npos);
   EXPECT_THROW(load_fabric_preset("../etc/passwd", kDir), FabricError);
   EXPECT_THROW(load_fabric_preset("no_such_fabric", kDir), FabricError);
 }
