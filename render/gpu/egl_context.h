@@ -1,0 +1,49 @@
+#pragma once
+// An OpenGL ES 3 context through EGL. Two ways in: headless (Mesa's surfaceless platform, else
+// the EGL device platform, rendering only to FBOs) and on a GBM device (the kiosk's DRM/KMS
+// scan-out, see kms_display.h).
+#include <stdexcept>
+#include <string>
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+struct gbm_device;
+struct gbm_surface;
+
+namespace weft::gpu {
+
+class GpuError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class EglContext {
+public:
+  // Headless: no window system, no display. Throws GpuError saying what is missing.
+  static EglContext headless();
+  // On a GBM device, with a window surface for scan-out buffers of `format` (a GBM fourcc).
+  static EglContext on_gbm(gbm_device* device, gbm_surface* surface, unsigned format);
+
+  EglContext(EglContext&& o) noexcept;
+  EglContext& operator=(EglContext&&) = delete;
+  EglContext(const EglContext&) = delete;
+  ~EglContext();
+
+  void make_current() const;
+  // Presents the window surface (GBM only); a no-op headless.
+  void swap_buffers() const;
+
+  std::string renderer() const;  // GL_RENDERER
+  std::string version() const;   // GL_VERSION
+  bool has_gl_extension(const char* name) const;
+  EGLDisplay display() const { return display_; }
+
+private:
+  EglContext() = default;
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  EGLSurface surface_ = EGL_NO_SURFACE;
+};
+
+}  // namespace weft::gpu
