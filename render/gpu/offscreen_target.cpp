@@ -22,9 +22,13 @@ OffscreenTarget::OffscreenTarget(int width, int height, bool full_float) : width
     throw GpuError("offscreen target size " + std::to_string(width) + "x" + std::to_string(height) + " is out of range");
   if (!has_extension("GL_EXT_color_buffer_float"))
     throw GpuError("the GL driver cannot render to float targets (no GL_EXT_color_buffer_float)");
+  // Leave the caller's texture binding as it was: a target must not steal a sampler's unit.
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
   glGenTextures(1, &colour_);
   glBindTexture(GL_TEXTURE_2D, colour_);
   glTexStorage2D(GL_TEXTURE_2D, 1, full_float ? GL_RGBA32F : GL_RGBA16F, width, height);
+  glBindTexture(GL_TEXTURE_2D, previous);
   glGenRenderbuffers(1, &depth_);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);

@@ -1,0 +1,110 @@
+// The microcylinder model of DESIGN.md §2 in GLSL ES 3.0, for runtime methods that evaluate it
+// directly (sgpoint). Mirrors render/core/microcylinder.cpp + cloth_bsdf.cpp term by term;
+// tests/microcylinder_parity_test.cpp pins the two together.
+// Needs: #define MAX_TANGENT_SAMPLES before inclusion.
+
+const float PI = 3.14159265358979;
+const float DENOMINATOR_FLOOR = 1e-12;  // kModelDenominatorFloor
+const float Q_FLOOR = 1e-8;             // kQFloor
+
+struct Thread {
+  float eta;
+  vec3 albedo;     // A
+  float kd;
+  float gamma_s;   // radians
+  float gamma_v;
+  float coverage;  // a_j
+  int samples;     // N_j
+};
+
+uniform Thread u_threads[2];
+uniform float u_tilts[2 * MAX_TANGENT_SAMPLES];  // thread 0's N_0 tilts, then thread 1's at MAX_TANGENT_SAMPLES
+
+struct FiberAngles { float theta; float phi; float psi; };
+
+float normal_gaussian(float x, float gamma) {
+  return exp(-x * x / (2.0 * gamma * gamma)) / (gamma * sqrt(2.0 * PI));
+}
+float masking_gaussian(float x) {
+  const float s = 20.0 * PI / 180.0;
+  return exp(-x * x / (2.0 * s * s));
+}
+float masking_mix(float x, float y, float z) { return (1.0 - x) * y * z + x * min(y, z); }
+float wrap_angle(float a) {
+  a = a - 2.0 * PI * floor((a + PI) / (2.0 * PI));  // [−π, π)
+  return a <= -PI ? a + 2.0 * PI : a;
+}
+float fresnel_dielectric(float eta, float cos_i) {
+  cos_i = clamp(cos_i, 0.0, 1.0);
+  float sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1.0) return 1.0;
+  float cos_t = sqrt(1.0 - sin2_t);
+  float r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  float r_p = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  return 0.5 * (r_s * r_s + r_p * r_p);
+}
+
+// Thread frame of DESIGN.md §2: t = cos α·along + sin α·n, n' = −sin α·along + cos α·n, b = axis.
+FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
+  float c = cos(alpha), s = sin(alpha);
+  vec3 t = c * along + s * n;
+  vec3 np = -s * along + c * n;
+  float wt = clamp(dot(w, t), -1.0, 1.0);
+  float wn = dot(w, np);
+  // asin is only good to ~4e-4 on llvmpipe (GLSL ES allows 4096 ULP); atan of the same
+  // angle is ~20x tighter, and (1−x)(1+x) keeps the cosine exact near the poles.
+  return FiberAngles(atan(wt, sqrt((1.0 - wt) * (1.0 + wt))), atan(dot(w, axis), wn), atan(wt, wn));
+}
+
+vec3 scattering(Thread p, FiberAngles i, FiberAngles o) {
+  float theta_d = 0.5 * (i.theta - o.theta), theta_h = 0.5 * (i.theta + o.theta);
+  float phi_d = wrap_angle(i.phi - o.phi);
+  float c = cos(theta_d) * cos(0.5 * phi_d);
+  float fr = fresnel_dielectric(p.eta, c);
+  float f_rs = fr * cos(0.5 * phi_d) * normal_gaussian(theta_h, p.gamma_s);
+  float t = 1.0 - fr;
+  float lobe = (1.0 - p.kd) * normal_gaussian(theta_h, p.gamma_v) + p.kd;
+  vec3 f_rv = (t * t * lobe / max(cos(i.theta) + cos(o.theta), DENOMINATOR_FLOOR)) * p.albedo;
+  return (vec3(f_rs) + f_rv) / max(cos(theta_d) * cos(theta_d), DENOMINATOR_FLOOR);
+}
+float masking_term(FiberAngles i, FiberAngles o) {
+  return masking_mix(masking_gaussian(wrap_angle(i.phi - o.phi)), max(cos(i.phi), 0.0), max(cos(o.phi), 0.0));
+}
+float projection_term(FiberAngles i, FiberAngles o) {
+  return masking_mix(masking_gaussian(wrap_angle(i.psi - o.psi)), max(cos(i.psi), 0.0), max(cos(o.psi), 0.0));
+}
+
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.
+vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
+  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+  vec3 v = cross(n, u);
+  // Q needs ⟨P⟩ of both threads before any W.
+  float q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
+  for (int j = 0; j < 2; ++j) {
+    vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
+    float sum = 0.0;
+    for (int k = 0; k < u_threads[j].samples; ++k) {
+      float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
+      sum += projection_term(fiber_angles(along, axis, n, alpha, wi), fiber_angles(along, axis, n, alpha, wo));
+    }
+    q += u_threads[j].coverage * sum / float(u_threads[j].samples);
+  }
+  if (q <= Q_FLOOR) return vec3(0.0);
+  vec3 total = vec3(0.0);
+  for (int j = 0; j < 2; ++j) {
+    vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < u_threads[j].samples; ++k) {
+      float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
+      FiberAngles fi = fiber_angles(along, axis, n, alpha, wi);
+      FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
+      float p = projection_term(fi, fo);
+      if (p <= 0.0) continue;
+      float w = u_threads[j].coverage * masking_term(fi, fo) * p / q;
+      if (w <= 0.0) continue;
+      sum += scattering(u_threads[j], fi, fo) * (w * cos(fi.theta));
+    }
+    total += sum / float(u_threads[j].samples);
+  }
+  return total;
+}
