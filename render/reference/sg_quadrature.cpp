@@ -8,11 +8,13 @@ namespace weft {
 
 namespace {
 
-// ∫ G(ω) f(ω) dω over the sphere with an n × 2n midpoint grid in (u, φ), where u is the SG's
-// cumulative polar mass: cos θ = 1 + ln(1 − u(1 − e^{−2λ}))/λ makes exp(λ(cos θ − 1)) dcos θ
-// = (1 − e^{−2λ})/λ du.
-dvec3 integrate_one(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const SphericalGaussian& g,
-                    int n, const SgQuadratureOptions& opt) {
+// ∫ G(ω) f(ω) dω over the hemisphere n·ω > 0 with an n × 2n midpoint grid in (u, φ), where u is
+// the SG's cumulative polar mass: cos θ = 1 + ln(1 − u(1 − e^{−2λ}))/λ makes
+// exp(λ(cos θ − 1)) dcos θ = (1 − e^{−2λ})/λ du.
+// `make_f()` returns the integrand f(ω_i) for one thread of execution (it may hold scratch).
+template <class MakeIntegrand>
+dvec3 integrate_one(const MakeIntegrand& make_f, const dvec3& normal, const SphericalGaussian& g, int n,
+                    const SgQuadratureOptions& opt) {
   const double lambda = g.sharpness;
   const double mass = -std::expm1(-2.0 * lambda);  // 1 − e^{−2λ}
   const dvec3 z = g.axis;
@@ -20,9 +22,9 @@ dvec3 integrate_one(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec
   const dvec3 y = glm::cross(z, x);
   const int n_phi = 2 * n;
   double r = 0, gr = 0, b = 0;
-#pragma omp parallel reduction(+ : r, gr, b)
+#pragma omp parallel reduction(+ : r, gr, b) if (opt.parallel)
   {
-    ClothBsdf::Point point = bsdf.at(frame);
+    auto f = make_f();
 #pragma omp for schedule(dynamic, 4)
     for (int i = 0; i < n; ++i) {
       const double u = (i + 0.5) / n;
@@ -31,12 +33,12 @@ dvec3 integrate_one(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec
       for (int k = 0; k < n_phi; ++k) {
         const double phi = 2.0 * std::numbers::pi * (k + 0.5) / n_phi;
         const dvec3 wi = sin_t * std::cos(phi) * x + sin_t * std::sin(phi) * y + cos_t * z;
-        if (glm::dot(wi, frame.n) <= 0.0) continue;
+        if (glm::dot(wi, normal) <= 0.0) continue;
         if (opt.visible && !opt.visible(wi)) continue;
-        const dvec3 f = point.integrand(wi, wo);
-        r += f.r;
-        gr += f.g;
-        b += f.b;
+        const dvec3 v = f(wi);
+        r += v.r;
+        gr += v.g;
+        b += v.b;
       }
     }
   }
@@ -44,31 +46,34 @@ dvec3 integrate_one(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec
   return g.amplitude * dvec3(r, gr, b) * cell;
 }
 
-dvec3 integrate_all(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
-                    std::span<const SphericalGaussian> sgs, int n, const SgQuadratureOptions& opt) {
+template <class MakeIntegrand>
+dvec3 integrate_all(const MakeIntegrand& make_f, const dvec3& normal, std::span<const SphericalGaussian> sgs, int n,
+                    const SgQuadratureOptions& opt) {
   dvec3 sum(0.0);
   for (const auto& g : sgs)
-    if (g.amplitude != dvec3(0.0)) sum += integrate_one(bsdf, frame, wo, g, n, opt);
+    if (g.amplitude != dvec3(0.0)) sum += integrate_one(make_f, normal, g, n, opt);
   return sum;
 }
 
-}  // namespace
-
-SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
-                                         std::span<const SphericalGaussian> sgs, const SgQuadratureOptions& opt) {
+template <class MakeIntegrand>
+SgQuadratureResult integrate(const MakeIntegrand& make_f, const dvec3& normal, std::span<const SphericalGaussian> sgs,
+                             const SgQuadratureOptions& opt) {
   SgQuadratureResult res;
-  if (glm::dot(wo, frame.n) <= 0.0 || sgs.empty()) {
-    res.converged = true;
+  const long long per_cell = static_cast<long long>(sgs.size()) * 2;
+  if (opt.fixed_polar > 0) {
+    const int n = opt.fixed_polar;
+    res.radiance = integrate_all(make_f, normal, sgs, n, opt);
+    res.evaluations = per_cell * n * n;
+    res.polar_cells = n;
     return res;
   }
-  const long long per_cell = static_cast<long long>(sgs.size()) * 2;
   int n = std::max(opt.min_polar, 4);
-  dvec3 prev = integrate_all(bsdf, frame, wo, sgs, n, opt);
+  dvec3 prev = integrate_all(make_f, normal, sgs, n, opt);
   res.evaluations += per_cell * n * n;
   while (true) {
     const int next = 2 * n;
     if (next > opt.max_polar) break;
-    const dvec3 cur = integrate_all(bsdf, frame, wo, sgs, next, opt);
+    const dvec3 cur = integrate_all(make_f, normal, sgs, next, opt);
     res.evaluations += per_cell * next * next;
     const double scale = std::max({cur.r, cur.g, cur.b});
     const double change = scale > 0.0 ? glm::length(cur - prev) / glm::length(cur) : 0.0;
@@ -83,6 +88,33 @@ SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFra
   res.radiance = prev;
   res.polar_cells = n;
   return res;
+}
+
+}  // namespace
+
+SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                         std::span<const SphericalGaussian> sgs, const SgQuadratureOptions& opt) {
+  if (glm::dot(wo, frame.n) <= 0.0 || sgs.empty()) {
+    SgQuadratureResult res;
+    res.converged = true;
+    return res;
+  }
+  auto make_f = [&] {
+    return [point = bsdf.at(frame), &wo](const dvec3& wi) mutable { return point.integrand(wi, wo); };
+  };
+  return integrate(make_f, frame.n, sgs, opt);
+}
+
+SgQuadratureResult integrate_sg_lambertian(const dvec3& n, const dvec3& albedo, std::span<const SphericalGaussian> sgs,
+                                           const SgQuadratureOptions& opt) {
+  if (sgs.empty()) {
+    SgQuadratureResult res;
+    res.converged = true;
+    return res;
+  }
+  const dvec3 brdf = albedo / std::numbers::pi;
+  auto make_f = [&] { return [&](const dvec3& wi) { return brdf * glm::dot(n, wi); }; };
+  return integrate(make_f, n, sgs, opt);
 }
 
 }  // namespace weft

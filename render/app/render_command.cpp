@@ -1,0 +1,193 @@
+// `weft render`: one frame of a showroom scene to EXR (linear radiance) plus a tone-mapped PNG
+// beside it. Methods: `reference` (ground truth of DESIGN.md §2 by ray casting and quadrature).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "app/asset_paths.h"
+#include "app/cli_parse.h"
+#include "app/commands.h"
+#include "core/fabric.h"
+#include "image/image.h"
+#include "reference/scene_render.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+namespace {
+
+struct RenderArgs {
+  std::string scene = "swatch";
+  std::string fabric;  // empty: each cloth object's own
+  std::string env;     // empty: the scene's
+  std::string method = "reference";
+  std::string lighting = "sg";
+  std::string sgs_file;
+  std::string out;
+  int width = 320, height = 240;
+  int sg_grid = 8;
+  int tangent_samples = 32;
+  int check_stride = 4;
+  bool no_check = false;
+  double exposure = 1.0;
+};
+
+// A one-line bar on stderr, redrawn in place: "[#####.....]  48%  12 s".
+class ProgressBar {
+public:
+  explicit ProgressBar(std::string label) : label_(std::move(label)), start_(std::chrono::steady_clock::now()) {}
+  void operator()(double fraction) {
+    const int percent = static_cast<int>(std::lround(100.0 * fraction));
+    if (percent == last_) return;
+    last_ = percent;
+    const int filled = percent * 30 / 100;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stderr, "\r%s [%s%s] %3d%% %6.1f s", label_.c_str(), std::string(filled, '#').c_str(),
+                 std::string(30 - filled, '.').c_str(), percent, s);
+    if (percent >= 100) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  }
+
+private:
+  std::string label_;
+  std::chrono::steady_clock::time_point start_;
+  int last_ = -1;
+};
+
+std::filesystem::path png_beside(const std::filesystem::path& exr) {
+  auto p = exr;
+  p.replace_extension(".png");
+  return p;
+}
+
+int run_render(const RenderArgs& a) {
+  if (a.method != "reference")
+    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference)");
+  if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
+  if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
+    throw UsageError("--width/--height: must be within 1..8192");
+  if (a.sg_grid < 1 || a.sg_grid > 512) throw UsageError("--sg-grid: must be within 1..512");
+  if (a.tangent_samples < 1 || a.tangent_samples > 4096) throw UsageError("--tangent-samples: must be within 1..4096");
+  if (a.check_stride < 1) throw UsageError("--check-stride: must be ≥ 1");
+  if (!(a.exposure > 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be > 0");
+  const std::filesystem::path out(a.out);
+  if (out.extension() != ".exr") throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
+
+  Scene scene;
+  try {
+    scene = load_scene_preset(a.scene, assets_dir() / "scenes");
+  } catch (const SceneError& e) {
+    throw UsageError(e.what());
+  }
+  for (const auto& obj : scene.objects)
+    if (obj.repair.degenerate_triangles_dropped > 0)
+      std::cerr << "weft render: mesh " << scene.name << "/" << obj.name << ": dropped "
+                << obj.repair.degenerate_triangles_dropped << " degenerate triangles\n";
+  if (!a.fabric.empty())
+    for (auto& obj : scene.objects)
+      if (obj.material == Material::cloth) obj.fabric = a.fabric;
+  std::map<std::string, Fabric> fabrics;
+  for (const auto& obj : scene.objects)
+    if (obj.material == Material::cloth && !fabrics.count(obj.fabric))
+      fabrics.emplace(obj.fabric, load_fabric_preset(obj.fabric, assets_dir() / "fabrics"));
+  const std::string env = a.env.empty() ? scene.environment : a.env;
+
+  ReferenceLighting lighting;
+  if (a.lighting == "map")
+    throw UsageError("--lighting map: environment-map lighting is not built in this version; use --lighting sg");
+  if (!a.sgs_file.empty()) {
+    try {
+      lighting.sgs = load_sg_list(a.sgs_file);
+    } catch (const SceneError& e) {
+      throw UsageError("--sgs: " + std::string(e.what()));
+    }
+    lighting.description = std::to_string(lighting.sgs.size()) + " SGs from " + a.sgs_file;
+  } else {
+    lighting.sgs = scene.sgs;
+    lighting.description = std::to_string(lighting.sgs.size()) + " SGs (scene default)";
+  }
+  lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+
+  ReferenceRenderOptions opt;
+  opt.width = a.width;
+  opt.height = a.height;
+  opt.sg_grid = a.sg_grid;
+  opt.tangent_samples = a.tangent_samples;
+  opt.check_stride = a.check_stride;
+  opt.check_convergence = !a.no_check;
+  ProgressBar bar("weft render " + scene.name);
+  opt.progress = [&bar](double f) { bar(f); };
+
+  std::cerr << "weft render: scene " << scene.name << ", " << a.width << "x" << a.height << ", lighting "
+            << lighting.description << ", SG grid " << a.sg_grid << "x" << 2 * a.sg_grid << " per SG, "
+            << a.tangent_samples << " tangent samples per thread\n";
+  const ReferenceRenderer renderer(scene, fabrics, lighting, opt);
+  const ReferenceRenderResult r = renderer.render(0);
+  write_exr(r.image, out);
+  write_png(r.image, png_beside(out), a.exposure);
+
+  nlohmann::ordered_json j;
+  j["scene"] = scene.name;
+  j["method"] = a.method;
+  j["lighting"] = a.lighting;
+  j["environment"] = env;
+  j["width"] = a.width;
+  j["height"] = a.height;
+  j["sg_grid"] = a.sg_grid;
+  j["tangent_samples"] = a.tangent_samples;
+  j["seconds"] = r.seconds;
+  j["exr"] = out.string();
+  j["png"] = png_beside(out).string();
+  if (opt.check_convergence) {
+    const auto& c = r.convergence;
+    j["convergence"] = {{"compared_with", "2x grid resolution"},
+                        {"check_stride", a.check_stride},
+                        {"pixels_checked", c.pixels_checked},
+                        {"relative_rmse", c.relative_rmse},
+                        {"cloth_relative_rmse", c.cloth_relative_rmse},
+                        {"max_pixel_change", c.max_pixel_change},
+                        {"seconds", c.seconds}};
+    std::cerr << "weft render: done in " << r.seconds << " s; convergence (1 in " << a.check_stride * a.check_stride
+              << " pixels at twice the grid): relative RMSE " << 100 * c.relative_rmse << " % (cloth "
+              << 100 * c.cloth_relative_rmse << " %), max pixel change " << 100 * c.max_pixel_change << " %\n";
+  } else {
+    std::cerr << "weft render: done in " << r.seconds << " s (convergence not checked)\n";
+  }
+  std::cout << j.dump() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+CommandAction add_render_command(CLI::App& app) {
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* sub = app.add_subcommand("render", "Render one frame of a showroom scene to EXR (+ tone-mapped PNG)");
+  sub->add_option("--scene", a->scene, "Scene name (assets/scenes/NAME.json): swatch, pillow, drape, curtain")
+      ->capture_default_str();
+  sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
+  sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2)")->capture_default_str();
+  sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
+      ->capture_default_str();
+  sub->add_option("--sgs", a->sgs_file, "SG lighting from a JSON file ({\"sgs\":[...]}, as `weft fit --json` writes)");
+  sub->add_option("--out", a->out, "Output .exr (a .png is written beside it)")->required();
+  sub->add_option("--width", a->width, "Image width")->capture_default_str();
+  sub->add_option("--height", a->height, "Image height")->capture_default_str();
+  sub->add_option("--sg-grid", a->sg_grid, "Reference: SG quadrature grid N (N x 2N cells per SG)")
+      ->capture_default_str();
+  sub->add_option("--tangent-samples", a->tangent_samples, "Reference: tangent samples per thread N_j")
+      ->capture_default_str();
+  sub->add_option("--check-stride", a->check_stride,
+                  "Convergence check: re-render every Nth pixel (in x and y) at twice the grid")
+      ->capture_default_str();
+  sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
+  sub->add_option("--exposure", a->exposure, "PNG: multiply radiance by this before sRGB encoding")
+      ->capture_default_str();
+  return [a] { return run_render(*a); };
+}
+
+}  // namespace weft

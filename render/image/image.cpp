@@ -1,0 +1,74 @@
+#include "image/image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include <ImfFrameBuffer.h>
+#include <ImfOutputFile.h>
+#include <ImfChannelList.h>
+#include <ImfHeader.h>
+#include <png.h>
+
+namespace weft {
+
+void write_exr(const Image& image, const std::filesystem::path& file) {
+  try {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+    std::vector<float> rgb(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = static_cast<float>(image.pixels[i][c]);
+    Imf::FrameBuffer fb;
+    const size_t xs = 3 * sizeof(float), ys = xs * image.width;
+    char* base = reinterpret_cast<char*>(rgb.data());
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    Imf::OutputFile out(file.c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(image.height);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot write EXR " + file.string() + ": " + e.what());
+  }
+}
+
+namespace {
+unsigned char srgb8(double linear) {
+  const double x = std::clamp(std::isfinite(linear) ? linear : 0.0, 0.0, 1.0);
+  const double s = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned char>(std::lround(255.0 * s));
+}
+}  // namespace
+
+void write_png(const Image& image, const std::filesystem::path& file, double exposure) {
+  std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(file.c_str(), "wb"), std::fclose);
+  if (!fp) throw std::runtime_error("cannot open " + file.string() + " for writing");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("libpng: out of memory writing " + file.string());
+  }
+  std::vector<unsigned char> row(static_cast<size_t>(image.width) * 3);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("libpng: failed writing " + file.string());
+  }
+  png_init_io(png, fp.get());
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = srgb8(exposure * image.at(x, y)[c]);
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+}
+
+}  // namespace weft

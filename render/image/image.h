@@ -1,0 +1,25 @@
+#pragma once
+// A linear-radiance RGB image and its two file forms: OpenEXR (float, lossless: for
+// measuring) and a tone-mapped 8-bit sRGB PNG (for people to look at).
+#include <filesystem>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace weft {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<glm::dvec3> pixels;  // row-major, row 0 at the top
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), pixels(static_cast<size_t>(w) * h, glm::dvec3(0.0)) {}
+  glm::dvec3& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
+  const glm::dvec3& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+};
+
+// RGB float EXR (ZIP compression). Throws std::runtime_error naming the file.
+void write_exr(const Image& image, const std::filesystem::path& file);
+// 8-bit sRGB PNG of exposure × radiance, clamped to [0, 1].
+void write_png(const Image& image, const std::filesystem::path& file, double exposure = 1.0);
+
+}  // namespace weft

@@ -1,0 +1,181 @@
+#include "reference/scene_render.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+
+#include <omp.h>
+
+#include "reference/sg_quadrature.h"
+
+namespace weft {
+
+namespace {
+using glm::dvec3;
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+}  // namespace
+
+ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                                     ReferenceLighting lighting, const ReferenceRenderOptions& options)
+    : scene_(scene), rays_(scene), lighting_(std::move(lighting)), options_(options) {
+  if (options_.width < 1 || options_.height < 1 || options_.width > 16384 || options_.height > 16384)
+    throw std::invalid_argument("image size must be within 1..16384 pixels per side");
+  if (options_.sg_grid < 1) throw std::invalid_argument("sg_grid must be ≥ 1");
+  if (lighting_.sgs.empty() && !lighting_.samples) throw std::invalid_argument("reference: no lighting given");
+  for (const auto& obj : scene.objects) {
+    if (obj.material != Material::cloth) {
+      bsdfs_.push_back(nullptr);
+      continue;
+    }
+    auto it = fabrics.find(obj.fabric);
+    if (it == fabrics.end()) throw std::invalid_argument("reference: no fabric '" + obj.fabric + "' loaded");
+    bsdfs_.push_back(std::make_unique<ClothBsdf>(it->second, options_.tangent_samples));
+  }
+}
+
+const std::vector<DirectionalSample>& ReferenceRenderer::samples_at(int level) const {
+  auto it = samples_.find(level);
+  if (it == samples_.end()) it = samples_.emplace(level, lighting_.samples(level)).first;
+  return it->second;
+}
+
+dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) const {
+  SurfacePoint s = rays_.surface(hit);
+  // Two-sided: shade the side the viewer is on.
+  if (glm::dot(s.geometric_normal, wo) < 0.0) {
+    s.geometric_normal = -s.geometric_normal;
+    s.normal = -s.normal;
+  }
+  const dvec3 ng = s.geometric_normal;
+  const dvec3 origin = s.position + ng * rays_.ray_epsilon();
+  // Directions below the geometric surface are blocked by the surface itself.
+  auto visible = [&](const dvec3& wi) { return glm::dot(wi, ng) > 0.0 && rays_.unoccluded(origin, wi); };
+
+  const SceneObject& obj = scene_.objects[hit.object];
+  const ClothBsdf* bsdf = bsdfs_[hit.object].get();
+  SurfaceFrame frame;
+  if (bsdf) frame = SurfaceFrame::from_normal_warp(s.normal, s.warp);
+
+  if (!lighting_.sgs.empty()) {
+    SgQuadratureOptions opt;
+    opt.fixed_polar = options_.sg_grid << level;
+    opt.parallel = false;
+    opt.visible = visible;
+    if (bsdf) return integrate_sg_lighting(*bsdf, frame, wo, lighting_.sgs, opt).radiance;
+    return integrate_sg_lambertian(s.normal, obj.albedo, lighting_.sgs, opt).radiance;
+  }
+  // Directional samples: Σ_k power_k · V · f(ω_k).
+  const auto& samples = samples_at(level);
+  dvec3 sum(0.0);
+  if (bsdf) {
+    if (glm::dot(frame.n, wo) <= 0.0) return sum;
+    ClothBsdf::Point point = bsdf->at(frame);
+    for (const auto& d : samples)
+      if (glm::dot(d.direction, frame.n) > 0.0 && visible(d.direction))
+        sum += d.power * point.integrand(d.direction, wo);
+  } else {
+    const dvec3 brdf = obj.albedo / std::numbers::pi;
+    for (const auto& d : samples) {
+      const double c = glm::dot(d.direction, s.normal);
+      if (c > 0.0 && visible(d.direction)) sum += d.power * brdf * c;
+    }
+  }
+  return sum;
+}
+
+dvec3 ReferenceRenderer::pixel(int x, int y, int level, PixelKind* kind) const {
+  const dvec3 dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
+  const auto hit = rays_.intersect(scene_.camera.position, dir);
+  if (!hit) {
+    if (kind) *kind = PixelKind::background;
+    return lighting_.background ? lighting_.background(dir) : dvec3(0.0);
+  }
+  if (kind)
+    *kind = scene_.objects[hit->object].material == Material::cloth ? PixelKind::cloth : PixelKind::lambertian;
+  return shade(*hit, -dir, level);
+}
+
+ReferenceRenderResult ReferenceRenderer::render(int level) const {
+  const auto start = std::chrono::steady_clock::now();
+  if (lighting_.sgs.empty()) samples_at(level);
+  ReferenceRenderResult res;
+  res.image = Image(options_.width, options_.height);
+  res.kinds.assign(res.image.pixels.size(), PixelKind::background);
+  std::atomic<int> rows_done{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int y = 0; y < options_.height; ++y) {
+    try {
+      for (int x = 0; x < options_.width; ++x) {
+        PixelKind k;
+        res.image.at(x, y) = pixel(x, y, level, &k);
+        res.kinds[static_cast<size_t>(y) * options_.width + x] = k;
+      }
+    } catch (...) {
+      std::lock_guard lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+    const int done = ++rows_done;
+    if (options_.progress && omp_get_thread_num() == 0) options_.progress(double(done) / options_.height);
+  }
+  if (error) std::rethrow_exception(error);
+  if (options_.progress) options_.progress(1.0);
+  res.seconds = seconds_since(start);
+  if (options_.check_convergence) res.convergence = convergence(res, level);
+  return res;
+}
+
+ConvergenceReport ReferenceRenderer::convergence(const ReferenceRenderResult& result, int level) const {
+  const auto start = std::chrono::steady_clock::now();
+  if (lighting_.sgs.empty()) samples_at(level + 1);
+  const int stride = std::max(1, options_.check_stride);
+  struct Pair {
+    int x, y;
+    bool cloth;
+  };
+  std::vector<Pair> pixels;
+  for (int y = stride / 2; y < options_.height; y += stride)
+    for (int x = stride / 2; x < options_.width; x += stride) {
+      const PixelKind k = result.kinds[static_cast<size_t>(y) * options_.width + x];
+      if (k != PixelKind::background) pixels.push_back({x, y, k == PixelKind::cloth});
+    }
+  std::vector<dvec3> fine(pixels.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (size_t i = 0; i < pixels.size(); ++i) fine[i] = pixel(pixels[i].x, pixels[i].y, level + 1);
+
+  ConvergenceReport r;
+  r.level = level;
+  r.pixels_checked = pixels.size();
+  double se = 0, sum = 0, se_c = 0, sum_c = 0;
+  size_t n_c = 0;
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const dvec3 d = result.image.at(pixels[i].x, pixels[i].y) - fine[i];
+    se += glm::dot(d, d);
+    sum += glm::length(fine[i]);
+    if (pixels[i].cloth) {
+      se_c += glm::dot(d, d);
+      sum_c += glm::length(fine[i]);
+      ++n_c;
+    }
+  }
+  if (!pixels.empty() && sum > 0) {
+    const double mean = sum / pixels.size();
+    r.relative_rmse = std::sqrt(se / pixels.size()) / mean;
+    for (size_t i = 0; i < pixels.size(); ++i) {
+      const double change = glm::length(result.image.at(pixels[i].x, pixels[i].y) - fine[i]) /
+                            std::max(glm::length(fine[i]), mean);
+      r.max_pixel_change = std::max(r.max_pixel_change, change);
+    }
+  }
+  if (n_c > 0 && sum_c > 0) r.cloth_relative_rmse = std::sqrt(se_c / n_c) / (sum_c / n_c);
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+}  // namespace weft

@@ -1,0 +1,96 @@
+#pragma once
+// Ground truth of DESIGN.md §2 for a whole scene: per pixel, one primary ray through the pixel
+// centre (Embree); at a cloth hit the shading frame is the interpolated normal and warp, and
+//   L_o = ∫ L(ω_i) V(ω_i) · ClothBsdf::Point::integrand(ω_i, ω_o) dω_i
+// is integrated deterministically with visibility by shadow rays; Lambertian surfaces
+// integrate albedo/π · n·ω_i instead. Direct illumination only. Two lightings:
+//  - SG: the SG-warped midpoint grid of sg_quadrature.h at a fixed level (`sg_grid`);
+//  - directional samples (an environment map's texels, stratified by the caller): a sum.
+// Convergence is measured by re-rendering a subset of pixels at twice the resolution.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+#include "image/image.h"
+#include "reference/ray_scene.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+// One direction of a discretised environment: radiance integrated over its solid-angle cell.
+struct DirectionalSample {
+  glm::dvec3 direction;  // unit
+  glm::dvec3 power;      // ∫_cell L dω  (RGB)
+};
+
+// The lighting the reference integrates, at a given resolution level (level 0 = base; each
+// level doubles the resolution in both angular directions, i.e. 4× the samples).
+struct ReferenceLighting {
+  // SG lighting (used when non-empty).
+  SgLighting sgs;
+  // Otherwise: the directional samples at a level.
+  std::function<std::vector<DirectionalSample>(int level)> samples;
+  // Radiance seen directly along a ray (background pixels).
+  std::function<glm::dvec3(const glm::dvec3&)> background;
+  std::string description;
+};
+
+struct ReferenceRenderOptions {
+  int width = 320, height = 240;
+  int sg_grid = 8;           // SG lighting: sg_grid × 2·sg_grid cells per SG at level 0
+  int tangent_samples = 32;  // N_j per thread
+  // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
+  int check_stride = 4;
+  bool check_convergence = true;
+  // Called with the fraction done, from one thread, at most a few hundred times.
+  std::function<void(double)> progress;
+};
+
+// Which surface a pixel sees.
+enum class PixelKind : uint8_t { background = 0, cloth = 1, lambertian = 2 };
+
+struct ConvergenceReport {
+  int level = 0;                 // rendered level; compared with level+1
+  size_t pixels_checked = 0;     // surface pixels of the subset
+  double relative_rmse = 0.0;    // sqrt(mean |x−x₂|²)/mean |x₂| over those pixels (luminance-free RGB norm)
+  double cloth_relative_rmse = 0.0;
+  double max_pixel_change = 0.0; // max |x−x₂|/max(|x₂|, mean |x₂|)
+  double seconds = 0.0;
+};
+
+struct ReferenceRenderResult {
+  Image image;
+  std::vector<PixelKind> kinds;  // per pixel
+  double seconds = 0.0;
+  ConvergenceReport convergence;
+};
+
+class ReferenceRenderer {
+public:
+  // `fabrics`: preset name → fabric for every cloth object of the scene.
+  ReferenceRenderer(const Scene& scene, const std::map<std::string, Fabric>& fabrics, ReferenceLighting lighting,
+                    const ReferenceRenderOptions& options);
+
+  // Radiance of pixel (x, y) at a resolution level, and what it saw.
+  glm::dvec3 pixel(int x, int y, int level, PixelKind* kind = nullptr) const;
+  ReferenceRenderResult render(int level = 0) const;
+  // Re-renders the check subset at level+1 and compares it with `result` (rendered at level).
+  ConvergenceReport convergence(const ReferenceRenderResult& result, int level) const;
+
+  // Shading of a surface point seen from direction wo (unit, toward the viewer) at a level.
+  glm::dvec3 shade(const RayHit& hit, const glm::dvec3& wo, int level) const;
+
+private:
+  const Scene& scene_;
+  RayScene rays_;
+  std::vector<std::unique_ptr<ClothBsdf>> bsdfs_;  // per object; null for Lambertian
+  ReferenceLighting lighting_;
+  ReferenceRenderOptions options_;
+  mutable std::map<int, std::vector<DirectionalSample>> samples_;  // filled before parallel use
+  const std::vector<DirectionalSample>& samples_at(int level) const;
+};
+
+}  // namespace weft

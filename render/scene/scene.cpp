@@ -1,0 +1,224 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/procedural_meshes.h"
+
+namespace weft {
+
+namespace {
+
+using json = nlohmann::json;
+
+std::string read_text(const std::filesystem::path& file, const char* what) {
+  std::ifstream in(file);
+  if (!in) throw SceneError(std::string("cannot open ") + what + " " + file.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Field readers: `where` is "file: objects[2].mesh" style; messages name the field.
+const json& field(const json& j, const std::string& key, const std::string& where) {
+  if (!j.is_object()) throw SceneError(where + ": expected an object");
+  auto it = j.find(key);
+  if (it == j.end()) throw SceneError(where + ": missing field '" + key + "'");
+  return *it;
+}
+
+double number(const json& v, const std::string& where) {
+  if (!v.is_number()) throw SceneError(where + ": expected a number, got " + v.dump());
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) throw SceneError(where + ": not a finite number");
+  return x;
+}
+
+double number_or(const json& j, const std::string& key, double fallback, const std::string& where, double lo,
+                 double hi) {
+  if (!j.contains(key)) return fallback;
+  const double x = number(j[key], where + "." + key);
+  if (x < lo || x > hi)
+    throw SceneError(where + "." + key + ": " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "]");
+  return x;
+}
+
+glm::dvec3 vec3(const json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != 3) throw SceneError(where + ": expected [x, y, z], got " + v.dump());
+  return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
+}
+
+std::string text(const json& v, const std::string& where) {
+  if (!v.is_string()) throw SceneError(where + ": expected a string, got " + v.dump());
+  return v.get<std::string>();
+}
+
+SphericalGaussian parse_sg(const json& j, const std::string& where) {
+  SphericalGaussian g;
+  const glm::dvec3 axis = vec3(field(j, "axis", where), where + ".axis");
+  if (!(glm::length(axis) > 1e-9)) throw SceneError(where + ".axis: zero length");
+  g.axis = glm::normalize(axis);
+  g.sharpness = number(field(j, "sharpness", where), where + ".sharpness");
+  if (!(g.sharpness > 0.0 && g.sharpness <= 1e5))
+    throw SceneError(where + ".sharpness: must be in (0, 1e5], got " + std::to_string(g.sharpness));
+  g.amplitude = vec3(field(j, "amplitude", where), where + ".amplitude");
+  if (g.amplitude.r < 0 || g.amplitude.g < 0 || g.amplitude.b < 0)
+    throw SceneError(where + ".amplitude: must be ≥ 0");
+  return g;
+}
+
+SgLighting parse_sg_array(const json& list, const std::string& where) {
+  if (!list.is_array() || list.empty()) throw SceneError(where + ": expected a non-empty array of SGs");
+  SgLighting sgs;
+  for (size_t i = 0; i < list.size(); ++i) sgs.push_back(parse_sg(list[i], where + "[" + std::to_string(i) + "]"));
+  return sgs;
+}
+
+TriangleMesh generate_mesh(const json& m, const std::string& where, const std::filesystem::path& base_dir) {
+  const std::string gen = text(field(m, "generator", where), where + ".generator");
+  auto num = [&](const char* key, double fallback, double lo, double hi) {
+    return number_or(m, key, fallback, where, lo, hi);
+  };
+  auto res = [&](double fallback) { return static_cast<int>(num("resolution", fallback, 1, 256)); };
+  TriangleMesh mesh;
+  if (gen == "swatch") {
+    mesh = swatch_mesh(num("size", 1.0, 1e-3, 1e3), res(16));
+  } else if (gen == "quad") {
+    mesh = quad_mesh(num("size_x", 10.0, 1e-3, 1e4), num("size_y", 10.0, 1e-3, 1e4));
+  } else if (gen == "pillow") {
+    mesh = pillow_mesh(num("size_x", 1.0, 1e-3, 1e3), num("size_y", 1.0, 1e-3, 1e3), num("height", 0.3, 1e-3, 1e3),
+                       num("wrinkle", 0.02, 0.0, 1e2), res(40));
+  } else if (gen == "floor_cloth") {
+    mesh = floor_cloth_mesh(num("size_x", 6.0, 1e-3, 1e3), num("size_y", 6.0, 1e-3, 1e3),
+                            num("fold_height", 0.3, 0.0, 1e2), num("flat_radius", 1.0, 0.0, 1e3), res(48));
+  } else if (gen == "curtain") {
+    mesh = curtain_mesh(num("width", 2.0, 1e-3, 1e3), num("height", 2.5, 1e-3, 1e3),
+                        static_cast<int>(num("folds", 5, 0, 100)), num("fold_depth", 0.1, 0.0, 1e2), res(32));
+  } else if (gen == "bezier_patches") {
+    const std::string file = text(field(m, "file", where), where + ".file");
+    mesh = bezier_patch_mesh(base_dir / file, res(8));
+  } else {
+    throw SceneError(where + ".generator: unknown generator '" + gen +
+                     "' (swatch, quad, pillow, floor_cloth, curtain, bezier_patches)");
+  }
+  glm::dvec3 translate(0.0);
+  if (m.contains("translate")) translate = vec3(m["translate"], where + ".translate");
+  transform_mesh(mesh, num("scale", 1.0, 1e-6, 1e6), num("rotate_z_deg", 0.0, -360, 360), translate);
+  return mesh;
+}
+
+}  // namespace
+
+glm::dvec3 camera_ray(const Camera& c, int width, int height, double px, double py) {
+  const glm::dvec3 forward = glm::normalize(c.target - c.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, c.up));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double tan_half = std::tan(0.5 * c.fov_deg * 3.14159265358979323846 / 180.0);
+  const double aspect = double(width) / height;
+  const double sx = (2.0 * px / width - 1.0) * tan_half * aspect;
+  const double sy = (1.0 - 2.0 * py / height) * tan_half;
+  return glm::normalize(forward + sx * right + sy * up);
+}
+
+SgLighting parse_sg_list_json(const std::string& json_text, const std::string& origin) {
+  json j;
+  try {
+    j = json::parse(json_text);
+  } catch (const json::exception& e) {
+    throw SceneError(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  if (j.is_object()) return parse_sg_array(field(j, "sgs", origin), origin + ": sgs");
+  return parse_sg_array(j, origin);
+}
+
+SgLighting load_sg_list(const std::filesystem::path& file) {
+  return parse_sg_list_json(read_text(file, "SG file"), file.string());
+}
+
+Scene parse_scene(const std::string& json_text, const std::string& origin, const std::filesystem::path& base_dir) {
+  json j;
+  try {
+    j = json::parse(json_text);
+  } catch (const json::exception& e) {
+    throw SceneError(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  Scene s;
+  s.name = text(field(j, "name", origin), origin + ": name");
+  if (j.contains("description")) s.description = text(j["description"], origin + ": description");
+
+  const std::string cw = origin + ": camera";
+  const json& cam = field(j, "camera", origin);
+  s.camera.position = vec3(field(cam, "position", cw), cw + ".position");
+  s.camera.target = vec3(field(cam, "target", cw), cw + ".target");
+  s.camera.up = vec3(field(cam, "up", cw), cw + ".up");
+  s.camera.fov_deg = number(field(cam, "fov_deg", cw), cw + ".fov_deg");
+  if (!(s.camera.fov_deg > 1.0 && s.camera.fov_deg < 170.0))
+    throw SceneError(cw + ".fov_deg: must be in (1, 170) degrees, got " + std::to_string(s.camera.fov_deg));
+  const glm::dvec3 view = s.camera.target - s.camera.position;
+  if (!(glm::length(view) > 1e-9)) throw SceneError(cw + ": position and target coincide");
+  if (!(glm::length(glm::cross(view, s.camera.up)) > 1e-9 * glm::length(view)))
+    throw SceneError(cw + ".up: zero or parallel to the view direction");
+
+  s.environment = text(field(j, "environment", origin), origin + ": environment");
+  s.sgs = parse_sg_array(field(j, "sgs", origin), origin + ": sgs");
+
+  const json& objects = field(j, "objects", origin);
+  if (!objects.is_array() || objects.empty()) throw SceneError(origin + ": objects: expected a non-empty array");
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const json& o = objects[i];
+    const std::string where = origin + ": objects[" + std::to_string(i) + "]";
+    SceneObject obj;
+    obj.name = text(field(o, "name", where), where + ".name");
+    const std::string material = text(field(o, "material", where), where + ".material");
+    if (material == "cloth") {
+      obj.material = Material::cloth;
+      obj.fabric = text(field(o, "fabric", where), where + ".fabric");
+    } else if (material == "lambertian") {
+      obj.material = Material::lambertian;
+      obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");
+      for (int c = 0; c < 3; ++c)
+        if (obj.albedo[c] < 0.0 || obj.albedo[c] > 1.0)
+          throw SceneError(where + ".albedo: components must be in [0, 1]");
+    } else {
+      throw SceneError(where + ".material: '" + material + "' is neither 'cloth' nor 'lambertian'");
+    }
+    try {
+      obj.mesh = generate_mesh(field(o, "mesh", where), where + ".mesh", base_dir);
+      obj.repair = finish_mesh(obj.mesh, obj.material == Material::cloth, s.name + "/" + obj.name);
+    } catch (const MeshError& e) {
+      throw SceneError(where + ": " + e.what());
+    }
+    s.objects.push_back(std::move(obj));
+  }
+  return s;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+  return parse_scene(read_text(file, "scene file"), file.string(), file.parent_path());
+}
+
+Scene load_scene_preset(const std::string& name, const std::filesystem::path& dir) {
+  const auto file = dir / (name + ".json");
+  if (!std::filesystem::exists(file)) {
+    std::string known;
+    for (const auto& n : list_scene_presets(dir)) known += (known.empty() ? "" : ", ") + n;
+    throw SceneError("no scene '" + name + "' in " + dir.string() + " (known: " + known + ")");
+  }
+  return load_scene(file);
+}
+
+std::vector<std::string> list_scene_presets(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace weft

@@ -1,0 +1,65 @@
+#pragma once
+// A showroom scene: camera, default lighting, and objects (cloth with a fabric, or Lambertian
+// occluders with an albedo) whose meshes are generated from the parameters in the scene file.
+// Format: assets/scenes/README.md.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/spherical_gaussian.h"
+#include "scene/mesh.h"
+
+namespace weft {
+
+// A scene file that cannot be used; what() names the file, the field and the problem.
+class SceneError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Camera {
+  glm::dvec3 position{0, -3, 1};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 0, 1};
+  double fov_deg = 40.0;  // vertical field of view
+};
+
+// Unit direction of the pinhole ray through image point (px, py) of a width×height image;
+// (0,0) is the top-left corner, pixel (x, y)'s centre is (x+½, y+½).
+glm::dvec3 camera_ray(const Camera& camera, int width, int height, double px, double py);
+
+enum class Material { cloth, lambertian };
+
+struct SceneObject {
+  std::string name;
+  Material material = Material::lambertian;
+  std::string fabric;        // cloth: preset name
+  glm::dvec3 albedo{0.5};    // lambertian
+  TriangleMesh mesh;
+  MeshRepairReport repair;
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  Camera camera;
+  std::string environment;   // env map name (assets/envmaps/NAME.exr)
+  SgLighting sgs;            // default SG lighting (until/unless fitted from the map)
+  std::vector<SceneObject> objects;
+};
+
+// Parses a scene description; meshes are generated (and repaired) here. `base_dir` resolves
+// data files the generators read (the teapot's patches). `origin` names the text in errors.
+Scene parse_scene(const std::string& json_text, const std::string& origin, const std::filesystem::path& base_dir);
+Scene load_scene(const std::filesystem::path& file);
+// `<dir>/<name>.json`.
+Scene load_scene_preset(const std::string& name, const std::filesystem::path& dir);
+std::vector<std::string> list_scene_presets(const std::filesystem::path& dir);
+
+// SG lighting as JSON: {"sgs":[{"axis":[x,y,z],"sharpness":λ,"amplitude":[r,g,b]},...]} or the
+// bare array. Axes are normalised; λ must be in (0, 1e5], amplitudes finite and ≥ 0.
+SgLighting parse_sg_list_json(const std::string& json_text, const std::string& origin);
+SgLighting load_sg_list(const std::filesystem::path& file);
+
+}  // namespace weft
