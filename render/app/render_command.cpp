@@ -10,6 +10,7 @@
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
+#include "app/gpu_render.h"
 #include "app/commands.h"
 #include "core/fabric.h"
 #include "image/image.h"
@@ -34,6 +35,7 @@ struct RenderArgs {
   int check_stride = 4;
   bool no_check = false;
   double exposure = 1.0;
+  int timed_frames = 20;
 };
 
 // A one-line bar on stderr, redrawn in place: "[#####.....]  48%  12 s".
@@ -65,8 +67,8 @@ std::filesystem::path png_beside(const std::filesystem::path& exr) {
 }
 
 int run_render(const RenderArgs& a) {
-  if (a.method != "reference")
-    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference)");
+  if (a.method != "reference" && a.method != "sgpoint")
+    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference, sgpoint)");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -111,6 +113,23 @@ int run_render(const RenderArgs& a) {
     lighting.description = std::to_string(lighting.sgs.size()) + " SGs (scene default)";
   }
   lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+
+  if (a.method != "reference") {
+    const GpuFrame f = render_gpu_frame(scene, fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames);
+    write_exr(f.image, out);
+    write_png(f.image, png_beside(out), a.exposure);
+    nlohmann::ordered_json j;
+    j["scene"] = scene.name;
+    j["method"] = a.method;
+    j["width"] = a.width;
+    j["height"] = a.height;
+    j["renderer"] = f.renderer;
+    j["median_ms"] = f.median_ms;
+    j["frames"] = f.frames;
+    j["out"] = a.out;
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
 
   ReferenceRenderOptions opt;
   opt.width = a.width;
@@ -185,6 +204,8 @@ CommandAction add_render_command(CLI::App& app) {
                   "Convergence check: re-render every Nth pixel (in x and y) at twice the grid")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
+  sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
+      ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: multiply radiance by this before sRGB encoding")
       ->capture_default_str();
   return [a] { return run_render(*a); };

@@ -1,0 +1,23 @@
+#pragma once
+// `weft render` for the runtime methods: one headless GLES frame, read back as linear radiance.
+#include <map>
+#include <string>
+
+#include "core/fabric.h"
+#include "core/spherical_gaussian.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+struct GpuFrame {
+  Image image;
+  std::string renderer;     // GL_RENDERER
+  double median_ms = 0.0;   // median frame time over `frames` frames after a warm-up, glFinish included
+  int frames = 0;
+};
+
+GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
+                          const std::string& method, int width, int height, int timed_frames);
+
+}  // namespace weft
