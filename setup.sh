@@ -14,6 +14,7 @@ PACKAGES=(
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libgtest-dev libgmock-dev
+  clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
 )
 BUILD_DIR=${WEFT_BUILD_DIR:-build}
 

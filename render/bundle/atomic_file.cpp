@@ -1,0 +1,69 @@
+#include "bundle/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <string>
+#include <system_error>
+
+namespace weft::bundle {
+namespace {
+
+[[noreturn]] void fail(const std::string& step, const std::filesystem::path& file) {
+  throw std::system_error(errno, std::generic_category(), step + " " + file.string());
+}
+
+void fsync_directory(const std::filesystem::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) fail("cannot open directory", dir);
+  const int rc = ::fsync(fd);
+  const int saved = errno;
+  ::close(fd);
+  errno = saved;
+  if (rc != 0) fail("cannot fsync directory", dir);
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& target, std::span<const std::byte> bytes) {
+  const std::filesystem::path dir =
+      target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+  // The pid keeps two writers (two processes) from sharing a temporary.
+  const std::filesystem::path temp =
+      dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()));
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("cannot create", temp);
+  auto abandon = [&](const std::string& step) {
+    const int saved = errno;
+    ::close(fd);
+    ::unlink(temp.c_str());
+    errno = saved;
+    fail(step, temp);
+  };
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      abandon("cannot write");
+    }
+    done += std::size_t(n);
+  }
+  if (::fsync(fd) != 0) abandon("cannot fsync");
+  if (::close(fd) != 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    errno = saved;
+    fail("cannot close", temp);
+  }
+  if (::rename(temp.c_str(), target.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    errno = saved;
+    fail("cannot rename over " + target.string() + ": from", temp);
+  }
+  fsync_directory(dir);
+}
+
+}  // namespace weft::bundle

@@ -1,0 +1,76 @@
+#include "bundle/bundle_fallback.h"
+
+#include <algorithm>
+#include <iostream>
+#include <optional>
+
+#include "bundle/atomic_file.h"
+
+namespace weft::bundle {
+namespace {
+
+BundleReader open_accepted(const std::filesystem::path& file, const FallbackOptions& options) {
+  BundleReader r = BundleReader::open(file);
+  if (options.accept) options.accept(r);
+  return r;
+}
+
+// Whether the last good copy already holds exactly these bytes (saves a flash write per boot).
+bool same_as_last_good(const std::filesystem::path& copy, std::span<const std::byte> bytes) {
+  try {
+    const BundleReader old = BundleReader::open(copy);
+    return std::ranges::equal(old.bytes(), bytes);
+  } catch (const BundleError&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+std::filesystem::path last_good_path(const std::filesystem::path& last_good_dir) {
+  return last_good_dir / "last-good.weftbundle";
+}
+
+OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
+                                       const std::filesystem::path& last_good_dir,
+                                       const FallbackOptions& options) {
+  const auto log = [&](const std::string& line) {
+    if (options.log)
+      options.log(line);
+    else
+      std::cerr << "weft: " << line << '\n';
+  };
+  const std::filesystem::path copy = last_good_path(last_good_dir);
+
+  std::string primary_error;
+  try {
+    BundleReader bundle = open_accepted(primary, options);
+    if (!same_as_last_good(copy, bundle.bytes())) {
+      try {
+        std::filesystem::create_directories(last_good_dir);
+        write_file_atomically(copy, bundle.bytes());
+        log("bundle " + primary.string() + " verified; saved as the last good bundle " + copy.string());
+      } catch (const std::exception& e) {
+        // The primary is fine; only the safety copy could not be refreshed.
+        log("bundle " + primary.string() + " verified, but the last good copy was not updated: " +
+            e.what());
+      }
+    }
+    return {std::move(bundle), primary, false, ""};
+  } catch (const BundleError& e) {
+    primary_error = e.what();
+  }
+
+  log(primary_error + "; falling back to the last good bundle " + copy.string());
+  try {
+    BundleReader bundle = open_accepted(copy, options);
+    log("using the last good bundle " + copy.string());
+    return {std::move(bundle), copy, true, primary_error};
+  } catch (const BundleError& e) {
+    log(std::string("the last good bundle is unusable too: ") + e.what());
+    throw BundleError(primary.string(), "file", "",
+                      "no usable bundle: " + primary_error + "; last good copy: " + e.what());
+  }
+}
+
+}  // namespace weft::bundle

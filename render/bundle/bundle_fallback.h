@@ -1,0 +1,38 @@
+#pragma once
+// Boot-time bundle selection for the kiosk (DESIGN.md §5): use the freshly baked bundle if it
+// verifies, else the last good copy, and say why. A bundle that verifies becomes the new last
+// good copy (replaced atomically, so a power cut never leaves a half-written one).
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+
+#include "bundle/bundle_reader.h"
+
+namespace weft::bundle {
+
+struct FallbackOptions {
+  // Extra checks by the consumer (required sections present, shapes it can use...); throw
+  // BundleError to reject the bundle. A rejected primary is not saved as last good.
+  std::function<void(const BundleReader&)> accept;
+  // Where operator-readable lines go (the kiosk sends them to the journal); default: stderr.
+  std::function<void(std::string_view)> log;
+};
+
+struct OpenedBundle {
+  BundleReader bundle;
+  std::filesystem::path file;   // the file actually opened
+  bool is_last_good = false;    // true when the primary was unusable
+  std::string primary_error;    // why the primary was unusable ("" when it was used)
+};
+
+// The last good copy kept in `last_good_dir`.
+std::filesystem::path last_good_path(const std::filesystem::path& last_good_dir);
+
+// Opens `primary`; on any BundleError opens the last good copy instead. Throws BundleError
+// (with both reasons) only when neither can be used.
+OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
+                                       const std::filesystem::path& last_good_dir,
+                                       const FallbackOptions& options = {});
+
+}  // namespace weft::bundle
