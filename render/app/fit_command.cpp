@@ -22,7 +22,7 @@ struct FitArgs {
   bool json = false;
   std::string preview;
   std::string out;
-  std::string nonfinite = "fail";
+  std::string nonfinite = "clamp";
   int grid = 128;
   int iterations = 40;
   std::string warm;
