@@ -140,6 +140,7 @@ EnvMap blur_to_lobe(const EnvMap& m, double lambda_b) {
 // bright source is placed to within a fit-grid texel.
 void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_lambda, double max_lambda,
                 SgLighting& sgs) {
+  if (static_cast<int>(sgs.size()) >= count) return;  // a full warm start
   const Samples coarse = samples_of(resample(map, 32, 16));
   const size_t n = coarse.size();
   // Candidate sharpnesses: doubling from min to what the 32×16 grid resolves, (16/π)² ≈ 26;
