@@ -1,6 +1,8 @@
 // The panel firmware core: decoder, debouncer, report encoding, descriptor, simulator bytes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <vector>
 
@@ -275,4 +277,19 @@ TEST(PanelSimulator, MotionBeyondOneReportCarriesOver) {
   std::vector<int> deltas;
   for (const auto& rep : r.reports) deltas.push_back(static_cast<int8_t>(rep.bytes[2]));
   EXPECT_EQ(deltas, (std::vector<int>{127, 127, 46}));
+}
+
+// The udev rule grants the kiosk access by VID/PID; it must name the ids the firmware presents.
+TEST(UdevRule, MatchesTheFirmwareIds) {
+  std::ifstream in(std::string(WEFT_SOURCE_ASSETS) + "/../systemd/70-weft-panel.rules");
+  ASSERT_TRUE(in) << "systemd/70-weft-panel.rules missing";
+  std::string line, hidraw_rule;
+  while (std::getline(in, line))
+    if (line.rfind("SUBSYSTEM==\"hidraw\"", 0) == 0) hidraw_rule = line;
+  char vid[8], pid[8];
+  std::snprintf(vid, sizeof vid, "%04x", kPanelVendorId);
+  std::snprintf(pid, sizeof pid, "%04x", kPanelProductId);
+  EXPECT_NE(hidraw_rule.find(std::string("ATTRS{idVendor}==\"") + vid + "\""), std::string::npos) << hidraw_rule;
+  EXPECT_NE(hidraw_rule.find(std::string("ATTRS{idProduct}==\"") + pid + "\""), std::string::npos) << hidraw_rule;
+  EXPECT_NE(hidraw_rule.find("GROUP=\"weft\""), std::string::npos) << hidraw_rule;
 }
