@@ -5,7 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -14,9 +18,9 @@ struct Run {
   std::string out;
 };
 
-Run run(const std::string& args) {
+Run run_program(const std::string& program, const std::string& args) {
   Run r;
-  FILE* p = ::popen((std::string(WEFT_PANEL_SIM) + " " + args + " 2>&1").c_str(), "r");
+  FILE* p = ::popen((program + " " + args + " 2>&1").c_str(), "r");
   if (!p) return r;
   char buf[4096];
   size_t n;
@@ -25,6 +29,8 @@ Run run(const std::string& args) {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
 }
+
+Run run(const std::string& args) { return run_program(WEFT_PANEL_SIM, args); }
 
 std::string write_script(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()) + ".knobs");
@@ -66,5 +72,31 @@ TEST(PanelSimCli, BadInputExitsTwoWithTheLine) {
   EXPECT_NE(r.out.find("script line 2: bad dial '9'"), std::string::npos) << r.out;
   EXPECT_EQ(run("--format csv " + script).status, 2);
   EXPECT_EQ(run("/nonexistent/script.knobs").status, 2);
+  std::filesystem::remove(script);
+}
+
+// `weft panel --simulate`: the script through the simulated USB panel, the real HID backend,
+// the mapper and the channel, printed as the fabric the renderer would draw.
+TEST(WeftPanelCommand, SimulatedPanelChangesTheFabric) {
+  const auto help = run_program(WEFT_BINARY, "panel --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--simulate"), std::string::npos);
+  const auto script = write_script("weftpanel", "turn 0 +5\nturn 2 +8\nturn 3 +2\n");
+  const auto r = run_program(WEFT_BINARY, "panel --simulate " + script + " --speed 20 --fabric linen_plain");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("weft panel: USB knob panel 1209:57ef connected"), std::string::npos) << r.out;
+  std::string last_line, line;
+  std::istringstream lines(r.out);
+  while (std::getline(lines, line))
+    if (!line.empty() && line[0] == '{') last_line = line;
+  const auto j = nlohmann::json::parse(last_line);
+  // Hue 195° → 210°: (0.06, 0.18, 0.30); 8 gloss steps: γ halves (12°, 24° → 6°, 12°).
+  EXPECT_EQ(j["fabric"], "linen_plain");
+  EXPECT_EQ(j["warp"]["A"], (std::vector<double>{0.06, 0.18, 0.3}));
+  EXPECT_EQ(j["weft"]["gamma_s_deg"], 6.0);
+  EXPECT_EQ(j["weft"]["gamma_v_deg"], 12.0);
+  EXPECT_EQ(j["env_rotation_deg"], 10.0);
+  const auto bad = run_program(WEFT_BINARY, "panel --simulate /nonexistent.knobs");
+  EXPECT_EQ(bad.status, 2);
   std::filesystem::remove(script);
 }
