@@ -1,10 +1,13 @@
 // Benchmark: time from a knob report arriving (hid_read returning its bytes on the HID thread)
 // to the new parameters being visible to a render thread polling the AppearanceChannel.
 // Runs the real HidKnobSource, KnobController and channel; only the USB device is replaced.
-// Label `bench` (not in CI). Prints median / p99 / max over N reports.
+// Label `bench` (not in CI). Prints median / p99 / max over N reports. The arrival time is
+// taken when the read returns the bytes (after the reader thread woke up), as hid_read would.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <cstdio>
 #include <thread>
 #include <vector>
@@ -21,7 +24,9 @@ namespace {
 constexpr int kReports = 20000;
 
 struct Feed {
-  std::atomic<int> released{0};  // reports the bench allows the device to deliver
+  std::mutex m;
+  std::condition_variable cv;
+  int released = 0;              // reports the bench allows the device to deliver (under m)
   int delivered = 0;             // HID thread only
   std::vector<Clock::time_point> arrival = std::vector<Clock::time_point>(kReports);
 };
@@ -30,9 +35,11 @@ class BenchDevice final : public HidDevice {
 public:
   explicit BenchDevice(Feed& f) : f_(f) {}
   int read(uint8_t* buffer, size_t capacity, int timeout_ms) override {
-    const auto end = Clock::now() + std::chrono::milliseconds(timeout_ms);
-    while (f_.released.load(std::memory_order_acquire) <= f_.delivered) {
-      if (Clock::now() > end) return 0;
+    {
+      // Blocks like hid_read_timeout in poll(): the reader sleeps until the "USB" delivers.
+      std::unique_lock lock(f_.m);
+      if (!f_.cv.wait_for(lock, std::chrono::milliseconds(timeout_ms), [&] { return f_.released > f_.delivered; }))
+        return 0;
     }
     weft::firmware::PanelReport r;
     r.sequence = static_cast<uint8_t>(f_.delivered);
@@ -76,11 +83,14 @@ int main() {
   std::vector<double> latency_us(kReports);
   uint64_t seen = controller.channel().version();
   for (int i = 0; i < kReports; ++i) {
-    feed.released.store(i + 1, std::memory_order_release);
+    {
+      std::lock_guard lock(feed.m);
+      feed.released = i + 1;
+    }
+    feed.cv.notify_one();
     AppearanceState s;
     uint64_t v = seen;
-    while ((v = controller.channel().version()) == seen) {
-    }
+    while ((v = controller.channel().version()) == seen) std::this_thread::yield();
     controller.channel().read(s);
     const auto visible = Clock::now();
     seen = v;
@@ -91,7 +101,7 @@ int main() {
   std::printf("panel report -> parameter visible to the render thread (%d reports)\n", kReports);
   std::printf("  median %.2f us   p99 %.2f us   p99.9 %.2f us   max %.2f us\n", latency_us[kReports / 2],
               latency_us[kReports * 99 / 100], latency_us[kReports * 999 / 1000], latency_us.back());
-  std::printf("  (the max is the OS preempting one of the two spinning threads)\n");
+  std::printf("  (tail outliers are the OS preempting a thread on a busy machine)\n");
   std::printf("  (a renderer polling once per frame adds up to one frame period on top)\n");
   return 0;
 }
