@@ -9,7 +9,9 @@ string(REGEX MATCHALL "U [^\n]+" undefined "${out}")
 set(foreign "")
 foreach(u IN LISTS undefined)
   string(REGEX REPLACE "^U " "" sym "${u}")
-  if(NOT sym MATCHES "^_ZN4weft8firmware")
+  # memcpy/memset/memmove: what a compiler may emit for struct copies; every freestanding
+  # toolchain provides them.
+  if(NOT sym MATCHES "^_ZN4weft8firmware" AND NOT sym MATCHES "^(memcpy|memset|memmove)$")
     list(APPEND foreign ${sym})
   endif()
 endforeach()

@@ -47,7 +47,7 @@ bool GpioPanelDecoder::on_edge(unsigned offset, int level, uint32_t time_ms, Kno
   }
   for (int i = 0; i < kButtonCount; ++i)
     if (config_.buttons[i] == static_cast<int>(offset)) raw_pressed_[i] = level == 0;
-  changed |= update_buttons(time_ms, out);
+  changed |= update_buttons(time_ms);
   out.buttons = buttons_;
   return changed;
 }
@@ -55,12 +55,12 @@ bool GpioPanelDecoder::on_edge(unsigned offset, int level, uint32_t time_ms, Kno
 bool GpioPanelDecoder::on_idle(uint32_t now_ms, KnobEvent& out) {
   out = KnobEvent{};
   out.time_ms = now_ms;
-  const bool changed = update_buttons(now_ms, out);
+  const bool changed = update_buttons(now_ms);
   out.buttons = buttons_;
   return changed;
 }
 
-bool GpioPanelDecoder::update_buttons(uint32_t now_ms, KnobEvent&) {
+bool GpioPanelDecoder::update_buttons(uint32_t now_ms) {
   uint8_t held = 0;
   for (int i = 0; i < kButtonCount; ++i)
     if (debouncers_[i].update(raw_pressed_[i], now_ms)) held |= static_cast<uint8_t>(1u << i);

@@ -36,7 +36,7 @@ public:
   int settle_timeout_ms() const;
 
 private:
-  bool update_buttons(uint32_t now_ms, KnobEvent& out);
+  bool update_buttons(uint32_t now_ms);
 
   GpioPanelConfig config_;
   std::array<firmware::QuadratureDecoder, kDialCount> decoders_;
