@@ -100,3 +100,43 @@ TEST(WeftPanelCommand, SimulatedPanelChangesTheFabric) {
   EXPECT_EQ(bad.status, 2);
   std::filesystem::remove(script);
 }
+
+// Power cut and boot: the first run saves the knobs, the second restores them; a damaged file
+// falls back to the preset and says so.
+TEST(WeftPanelCommand, StateSurvivesARestartAndCorruptionFallsBack) {
+  const auto dir = std::filesystem::temp_directory_path() / ("weft_panel_cli_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string state = (dir / "knobs.json").string();
+  const auto turn = write_script("turn", "turn 1 -8\n");
+  const auto idle = write_script("idle", "");
+  auto last_json = [](const std::string& out) {
+    std::string last, line;
+    std::istringstream lines(out);
+    while (std::getline(lines, line))
+      if (!line.empty() && line[0] == '{') last = line;
+    return nlohmann::json::parse(last);
+  };
+  const auto first = run_program(WEFT_BINARY, "panel --simulate " + turn + " --speed 20 --state " + state);
+  ASSERT_EQ(first.status, 0) << first.out;
+  EXPECT_NE(first.out.find("no saved knob state"), std::string::npos) << first.out;
+  // Brightness −8 steps halves linen's A.
+  EXPECT_EQ(last_json(first.out)["warp"]["A"], (std::vector<double>{0.03, 0.12, 0.15}));
+  const auto second = run_program(WEFT_BINARY, "panel --simulate " + idle + " --state " + state);
+  ASSERT_EQ(second.status, 0) << second.out;
+  EXPECT_NE(second.out.find("restored knob state from " + state), std::string::npos) << second.out;
+  EXPECT_EQ(last_json(second.out)["weft"]["A"], (std::vector<double>{0.03, 0.12, 0.15}));
+
+  std::ofstream(state, std::ios::trunc) << "{\"format\":\"weft-kn";  // torn
+  const auto third = run_program(WEFT_BINARY, "panel --simulate " + idle + " --state " + state);
+  ASSERT_EQ(third.status, 0) << third.out;
+  EXPECT_NE(third.out.find("is unusable (not valid JSON"), std::string::npos) << third.out;
+  EXPECT_NE(third.out.find("falling back to preset 'linen_plain'"), std::string::npos) << third.out;
+  EXPECT_EQ(last_json(third.out)["weft"]["A"], (std::vector<double>{0.06, 0.24, 0.3}));
+
+  const auto bad_source = run_program(WEFT_BINARY, "panel --source usb --duration 0.1");
+  EXPECT_EQ(bad_source.status, 2);
+  EXPECT_NE(bad_source.out.find("unknown source 'usb'"), std::string::npos) << bad_source.out;
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(turn);
+  std::filesystem::remove(idle);
+}
