@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   add(weft::add_eval_command);
   add(weft::add_render_command);
   add(weft::add_fit_command);
+  add(weft::add_panel_command);
 
   try {
     app.parse(argc, argv);

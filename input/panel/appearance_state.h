@@ -1,0 +1,27 @@
+#pragma once
+// What the knobs decide about the picture, in the renderer's terms, as a plain value that can be
+// copied between threads without locks. The renderer applies it to the selected preset:
+//   A = albedo (RGB), γ_s = preset γ_s · gamma_scale, γ_v = preset γ_v · gamma_scale
+// (both lobes scale together so their ratio stays the preset's), and rotates the environment
+// about +Z by env_rotation_deg.
+#include <cstdint>
+#include <type_traits>
+
+namespace weft::input {
+
+struct ThreadAppearance {
+  float albedo[3] = {0.5f, 0.5f, 0.5f};  // A, linear RGB
+  float gamma_scale = 1.0f;              // multiplies γ_s and γ_v
+};
+
+enum class ThreadSelection : uint8_t { both = 0, warp = 1, weft = 2 };
+
+struct AppearanceState {
+  uint32_t preset_index = 0;       // into the preset list the mapper was given
+  ThreadAppearance thread[2];      // [0] warp (thread 1), [1] weft (thread 2)
+  float env_rotation_deg = 0.0f;   // [0, 360)
+  ThreadSelection selection = ThreadSelection::both;  // which thread the dials edit (on-screen hint)
+};
+static_assert(std::is_trivially_copyable_v<AppearanceState>);
+
+}  // namespace weft::input

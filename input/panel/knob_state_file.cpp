@@ -1,0 +1,168 @@
+#include "panel/knob_state_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace weft::input {
+namespace {
+
+constexpr int kVersion = 1;
+constexpr int kAbsurd = 100000;  // no knob is ever turned this far
+const char* kSelectionNames[] = {"both", "warp", "weft"};
+
+std::string fnv1a64(const std::string& s) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+int steps(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || !j[key].is_number_integer())
+    throw KnobStateError(std::string("'") + key + "' is missing or not an integer");
+  const auto v = j[key].get<int64_t>();
+  if (v < -kAbsurd || v > kAbsurd) throw KnobStateError(std::string("'") + key + "' = " + std::to_string(v) + " is absurd");
+  return static_cast<int>(v);
+}
+
+bool fsync_path(const std::filesystem::path& p, int flags, std::string& why) {
+  const int fd = ::open(p.c_str(), flags);
+  if (fd < 0) {
+    why = "cannot open " + p.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  const bool ok = ::fsync(fd) == 0;
+  if (!ok) why = "fsync " + p.string() + ": " + std::strerror(errno);
+  ::close(fd);
+  return ok;
+}
+
+}  // namespace
+
+std::string knob_state_text(const KnobPositions& p, const std::vector<PresetLook>& presets) {
+  nlohmann::ordered_json j;
+  j["format"] = "weft-knobs";
+  j["version"] = kVersion;
+  j["preset"] = presets.at(p.preset).name;
+  j["selection"] = kSelectionNames[static_cast<int>(p.selection) % 3];
+  j["threads"] = nlohmann::ordered_json::array();
+  for (int t = 0; t < 2; ++t)
+    j["threads"].push_back({{"hue_steps", p.hue_steps[t]},
+                            {"brightness_steps", p.brightness_steps[t]},
+                            {"gloss_steps", p.gloss_steps[t]}});
+  j["env_steps"] = p.env_steps;
+  j["checksum"] = fnv1a64(j.dump());
+  return j.dump(2) + "\n";
+}
+
+KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets) {
+  nlohmann::ordered_json j;
+  try {
+    j = nlohmann::ordered_json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw KnobStateError(std::string("not valid JSON (") + e.what() + ")");
+  }
+  if (!j.is_object() || j.value("format", "") != "weft-knobs") throw KnobStateError("not a weft knob state file");
+  if (!j.contains("version") || j["version"] != kVersion)
+    throw KnobStateError("unsupported version " + (j.contains("version") ? j["version"].dump() : std::string("(none)")));
+  if (!j.contains("checksum") || !j["checksum"].is_string()) throw KnobStateError("checksum missing");
+  const std::string stored = j["checksum"].get<std::string>();
+  j.erase("checksum");
+  if (fnv1a64(j.dump()) != stored) throw KnobStateError("checksum mismatch (file damaged)");
+
+  KnobPositions p;
+  const std::string preset = j.value("preset", "");
+  bool found = false;
+  for (size_t i = 0; i < presets.size(); ++i)
+    if (presets[i].name == preset) p.preset = static_cast<uint32_t>(i), found = true;
+  if (!found) throw KnobStateError("fabric preset '" + preset + "' is not installed");
+  const std::string selection = j.value("selection", "");
+  found = false;
+  for (int i = 0; i < 3; ++i)
+    if (selection == kSelectionNames[i]) p.selection = static_cast<ThreadSelection>(i), found = true;
+  if (!found) throw KnobStateError("unknown thread selection '" + selection + "'");
+  if (!j.contains("threads") || !j["threads"].is_array() || j["threads"].size() != 2)
+    throw KnobStateError("'threads' must list 2 threads");
+  for (int t = 0; t < 2; ++t) {
+    const auto& th = j["threads"][t];
+    if (!th.is_object()) throw KnobStateError("thread entry is not an object");
+    p.hue_steps[t] = steps(th, "hue_steps");
+    p.brightness_steps[t] = steps(th, "brightness_steps");
+    p.gloss_steps[t] = steps(th, "gloss_steps");
+  }
+  p.env_steps = steps(j, "env_steps");
+  return p;
+}
+
+bool write_file_atomically(const std::filesystem::path& file, const std::string& text, std::string& why) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    why = "cannot create " + tmp.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      why = "cannot write " + tmp.string() + ": " + std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return false;
+    }
+    done += static_cast<size_t>(n);
+  }
+  // Data on disk before the rename makes it visible, or a power cut could leave an empty file.
+  if (::fsync(fd) != 0) {
+    why = "fsync " + tmp.string() + ": " + std::strerror(errno);
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  ::close(fd);
+  if (::rename(tmp.c_str(), file.c_str()) != 0) {
+    why = "cannot rename " + tmp.string() + " to " + file.string() + ": " + std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  // The rename itself is only durable once the directory is.
+  const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  return fsync_path(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC, why);
+}
+
+RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::vector<PresetLook>& presets,
+                                 uint32_t default_preset) {
+  RestoredKnobs r;
+  r.positions.preset = default_preset < presets.size() ? default_preset : 0;
+  const std::string preset_name = presets.at(r.positions.preset).name;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    r.message = "no saved knob state at " + file.string() + "; starting from preset '" + preset_name + "'";
+    return r;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    r.positions = parse_knob_state(text.str(), presets);
+    r.from_file = true;
+    r.message = "restored knob state from " + file.string() + " (preset '" + presets[r.positions.preset].name + "')";
+  } catch (const KnobStateError& e) {
+    r.message = "saved knob state " + file.string() + " is unusable (" + e.what() +
+                "); falling back to preset '" + preset_name + "'";
+  }
+  return r;
+}
+
+}  // namespace weft::input
