@@ -7,6 +7,7 @@
 #include <random>
 
 #include "bake/sigmoid_gain.h"
+#include "core/circular_gaussian.h"
 
 using namespace weft;
 
@@ -74,17 +75,13 @@ TEST(TripleProduct, HTendsToTheGaussianCdfForNarrowLobes) {
     }
 }
 
-TEST(TripleProduct, Eq13MatchesGaussianQuadrature) {
-  // Eq. 13 is exact for Gaussians: compare with ∫∫ exp(−(x−μ)²/σ²) by midpoint rule.
-  const double tl = 0.4, pk = -1.3, sl = 0.35, sp = 0.6;
-  const int n = 4000;
-  double it = 0, ip = 0;
-  for (int i = 0; i < n; ++i) {
-    const double x = -kPi / 2 + (i + 0.5) * kPi / n;
-    it += std::exp(-(x - tl) * (x - tl) / (sl * sl)) * kPi / n;
-    ip += std::exp(-(x - pk) * (x - pk) / (sp * sp)) * kPi / n;
-  }
-  EXPECT_NEAR(gaussian_pair_integral_eq13(tl, pk, sl, sp), it * ip, 1e-6);
+TEST(TripleProduct, ExactHTendsToCoresUntruncatedClosedForm) {
+  // core's linear_visibility_ratio is H for Gaussians over the whole plane; for narrow lobes the
+  // square and the circular shape stop mattering and the exact H must agree with it.
+  for (double beta : {0.2, 0.9, 1.4})
+    for (double d : {-0.05, 0.0, 0.04})
+      EXPECT_NEAR(occluded_ratio_h(0.04, 0.07, d, std::cos(beta), std::sin(beta)),
+                  linear_visibility_ratio(0.04, 0.07, d, std::cos(beta), std::sin(beta)), 1e-3);
 }
 
 TEST(SigmoidGain, FitWithinOneHundredthOfHAtThePapersFigure5Bandwidths) {

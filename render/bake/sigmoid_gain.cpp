@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/circular_gaussian.h"
+
 namespace weft {
 
 namespace {
@@ -54,25 +56,13 @@ double gaussian_spread(double sigma_l, double sigma_prime, double grad_theta, do
                           sigma_prime * sigma_prime * grad_phi * grad_phi) / len2);
 }
 
-double circular_gaussian_value(double x, double mu, double sigma) {
-  return std::exp(2.0 / (sigma * sigma) * (std::cos(x - mu) - 1.0));
-}
-
-double gaussian_pair_integral_eq13(double theta_l, double phi_k, double sigma_l,
-                                   double sigma_prime) {
-  const double t = std::erf((kHalfPi - theta_l) / sigma_l) - std::erf((-kHalfPi - theta_l) / sigma_l);
-  const double p =
-      std::erf((kHalfPi - phi_k) / sigma_prime) - std::erf((-kHalfPi - phi_k) / sigma_prime);
-  return kPi * sigma_l * sigma_prime / 4.0 * t * p;
-}
-
 double integrate_circular_gaussian(double a, double b, double mu, double sigma) {
   check_sigma(sigma);
   const double reach = support_half_width(sigma);
   a = std::max(a, mu - reach);
   b = std::min(b, mu + reach);
   return gauss_legendre(a, b, sigma / 4,
-                        [&](double x) { return circular_gaussian_value(x, mu, sigma); });
+                        [&](double x) { return circular_gaussian(x, mu, sigma); });
 }
 
 CircularGaussianCdf::CircularGaussianCdf(double sigma) : sigma_(sigma) {
@@ -96,8 +86,8 @@ double CircularGaussianCdf::operator()(double x) const {
   // Cubic Hermite with the exact derivative C' = g^c.
   const double x0 = -kHalfPi + m * step_;
   const double c0 = cumulative_[m], c1 = cumulative_[m + 1];
-  const double d0 = circular_gaussian_value(x0, 0, sigma_) * step_;
-  const double d1 = circular_gaussian_value(x0 + step_, 0, sigma_) * step_;
+  const double d0 = circular_gaussian(x0, 0, sigma_) * step_;
+  const double d1 = circular_gaussian(x0 + step_, 0, sigma_) * step_;
   const double t2 = t * t, t3 = t2 * t;
   return (2 * t3 - 3 * t2 + 1) * c0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * c1 +
          (t3 - t2) * d1;
@@ -135,7 +125,7 @@ double occluded_ratio_h(const CircularGaussianCdf& theta_cdf, const CircularGaus
   double sum = 0;
   for (size_t s = 0; s + 1 < breaks.size(); ++s)
     sum += gauss_legendre(breaks[s], breaks[s + 1], width, [&](double x) {
-      return circular_gaussian_value(x, 0, outer.sigma()) * inner_visible(x);
+      return circular_gaussian(x, 0, outer.sigma()) * inner_visible(x);
     });
   return std::clamp(sum / (outer.total() * inner.total()), 0.0, 1.0);
 }
@@ -146,7 +136,7 @@ double occluded_ratio_h(double sigma_l, double sigma_prime, double d, double gra
                           grad_theta, grad_phi);
 }
 
-double circular_gaussian_pair_integral(double theta_l, double phi_k, double sigma_l,
+double circular_gaussian_pair_quadrature(double theta_l, double phi_k, double sigma_l,
                                        double sigma_prime) {
   return integrate_circular_gaussian(-kHalfPi, kHalfPi, theta_l, sigma_l) *
          integrate_circular_gaussian(-kHalfPi, kHalfPi, phi_k, sigma_prime);
@@ -156,7 +146,7 @@ double triple_product_linear_visibility(double theta_l, double phi_k, double sig
                                         double sigma_prime, double a, double b, double c) {
   check_sigma(sigma_l);
   check_sigma(sigma_prime);
-  if (a == 0 && b == 0) return c > 0 ? circular_gaussian_pair_integral(theta_l, phi_k, sigma_l, sigma_prime) : 0.0;
+  if (a == 0 && b == 0) return c > 0 ? circular_gaussian_pair_quadrature(theta_l, phi_k, sigma_l, sigma_prime) : 0.0;
   // Visible half-line of one axis given the other: separable when one coefficient is 0.
   auto visible_part = [](double coef, double rhs, double mu, double sigma) {
     // ∫ g^c(y; μ, σ) over {y ∈ [−π/2, π/2] : coef·y > rhs}
@@ -182,7 +172,7 @@ double triple_product_linear_visibility(double theta_l, double phi_k, double sig
   double sum = 0;
   for (size_t s = 0; s + 1 < breaks.size(); ++s)
     sum += gauss_legendre(breaks[s], breaks[s + 1], width, [&](double theta) {
-      return circular_gaussian_value(theta, theta_l, sigma_l) *
+      return circular_gaussian(theta, theta_l, sigma_l) *
              visible_part(b, -c - a * theta, phi_k, sigma_prime);
     });
   return sum;
@@ -353,7 +343,7 @@ Eq12Errors eq12_half_plane_errors(double sigma_l, double sigma_prime, int n) {
       const double phi_k = -kHalfPi + (b + 0.5) * kPi / n;
       const double truth = truth_theta * z_phi[b];
       const double eq12 = z_theta * z_phi[b] * h;
-      const double eq12_13 = gaussian_pair_integral_eq13(theta_l, phi_k, sigma_l, sigma_prime) * h;
+      const double eq12_13 = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_prime) * h;
       sum_exact += std::pow(eq12 - truth, 2);
       sum_eq13 += std::pow(eq12_13 - truth, 2);
     }

@@ -4,7 +4,10 @@
 // κ(σ_l, σ'_l, ∇d) that replaces H at run time:  H ≈ 1 / (1 + exp(−κ·d)).
 //
 // Circular Gaussian (seed 000 Eq. 2): g^c(x; μ, σ) = exp(2/σ² · (cos(x − μ) − 1)).
-// All integrals run over the paper's square [−π/2, π/2]² in (θ_i, φ_i).
+// All integrals run over the paper's square [−π/2, π/2]² in (θ_i, φ_i). g^c itself and Eq. 13
+// (the Gaussian closed form of the unoccluded pair integral) live in core/circular_gaussian.h;
+// core's linear_visibility_ratio is H for untruncated Gaussians, the limit this file's exact H
+// (truncated circular Gaussians, what the paper fits its sigmoid to) tends to for narrow lobes.
 //
 // H is computed here by quadrature that is exact to ~1e−9: one axis is integrated with
 // Gauss–Legendre panels, the other in closed form through a tabulated cumulative integral of
@@ -14,16 +17,6 @@
 #include <vector>
 
 namespace weft {
-
-// g^c(x; μ, σ) of seed 000 Eq. 2.
-double circular_gaussian_value(double x, double mu, double sigma);
-
-// ∫_{−π/2}^{π/2} g^c(θ; θ_l, σ_l) dθ · ∫_{−π/2}^{π/2} g^c(φ; φ_k, σ') dφ with both circular
-// Gaussians replaced by Gaussians exp(−(x−μ)²/σ²) (seed 000 Eq. 13):
-//   π σ_l σ' / 4 · [erf((π/2−θ_l)/σ_l) − erf((−π/2−θ_l)/σ_l)] · [same for φ_k, σ'].
-// (Implemented here because the shared circular-Gaussian header was not available yet.)
-double gaussian_pair_integral_eq13(double theta_l, double phi_k, double sigma_l,
-                                   double sigma_prime);
 
 // Cumulative integral C(x) = ∫_{−π/2}^{x} g^c(t; 0, σ) dt on [−π/2, π/2] (clamped outside).
 class CircularGaussianCdf {
@@ -56,8 +49,9 @@ double occluded_ratio_h(double sigma_l, double sigma_prime, double d, double gra
 //   ∫∫ g^c(θ; θ_l, σ_l) g^c(φ; φ_k, σ') V' dθ dφ over [−π/2, π/2]².
 double triple_product_linear_visibility(double theta_l, double phi_k, double sigma_l,
                                         double sigma_prime, double a, double b, double c);
-// ∫∫ g^c(θ; θ_l, σ_l) g^c(φ; φ_k, σ') over [−π/2, π/2]² (no visibility), exactly.
-double circular_gaussian_pair_integral(double theta_l, double phi_k, double sigma_l,
+// ∫∫ g^c(θ; θ_l, σ_l) g^c(φ; φ_k, σ') over [−π/2, π/2]² (no visibility) by quadrature: the
+// quantity Eq. 13 approximates (core's circular_gaussian_pair_integral).
+double circular_gaussian_pair_quadrature(double theta_l, double phi_k, double sigma_l,
                                        double sigma_prime);
 
 // s = sqrt((σ_l²·∂d/∂θ² + σ'²·∂d/∂φ²) / (2|∇d|²)): the standard deviation along ∇d of
