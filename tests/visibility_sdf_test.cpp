@@ -155,6 +155,23 @@ TEST(VertexSdf, OpenSkyMeasuresTheDistanceToTheHorizon) {
   }
 }
 
+TEST(VertexSdf, EqualsTheFullPeriodicCircleCropped) {
+  // vertex_sdf frames the hemisphere with the horizon instead of transforming the whole circle.
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  dvec3 m[3];
+  for (auto& x : m) x = glm::normalize(dvec3(u(rng), u(rng), u(rng)));
+  auto occluded = [&](const dvec3&, const dvec3& w) {
+    return glm::dot(w, m[0]) > 0.6 || glm::dot(w, m[1]) > 0.7 || std::sin(9 * w.x) * w.y > 0.2;
+  };
+  const int n = 48;
+  const VertexSdf sdf = vertex_sdf(SurfaceFrame{}, dvec3(0), n, 1, occluded);
+  const DistanceGrid full = hemisphere_crop(
+      signed_distance(sample_visibility(SurfaceFrame{}, dvec3(0), n, occluded), kPi / n, true, true));
+  ASSERT_EQ(full.values.size(), sdf.d.values.size());
+  for (size_t k = 0; k < full.values.size(); ++k) EXPECT_DOUBLE_EQ(sdf.d.values[k], full.values[k]);
+}
+
 TEST(VertexSdf, DirectionsFollowTheThreadFrameAngles) {
   // ω(θ, φ) must give back θ, φ through the canonical model's fiber_angles (α = 0, thread 1).
   const SurfaceFrame frame = SurfaceFrame::from_normal_warp(glm::normalize(dvec3(0.2, -0.1, 1)), dvec3(1, 0.3, 0));

@@ -169,9 +169,19 @@ VertexSdf vertex_sdf(const SurfaceFrame& frame, const dvec3& origin, int resolut
   const int fine = resolution * supersample;
   const double h_fine = kPi / fine;
   const VisibilityGrid vis = sample_visibility(frame, origin, fine, occluded);
-  const DistanceGrid full = signed_distance(vis, h_fine, /*periodic_cols=*/true,
-                                            /*boundary_offset=*/true);
-  const DistanceGrid hemi = hemisphere_crop(full);
+  // Only the hemisphere is kept, and everything below it is occluded, so the full periodic
+  // circle reduces to the hemisphere plus one occluded column on each side (the horizon): from a
+  // hemisphere cell, any φ path across the seam is longer than the direct one (|Δφ| < π), and
+  // the nearest occluded cell below the horizon is in the first column past it. Same values as
+  // signed_distance(vis, h, true, true) cropped (tested), at a quarter of the cost.
+  VisibilityGrid framed{fine, fine + 2, std::vector<uint8_t>(size_t(fine) * (fine + 2), 0)};
+  for (int i = 0; i < fine; ++i)
+    for (int j = 0; j < fine; ++j) framed.at(i, j + 1) = vis.at(i, fine / 2 + j);
+  const DistanceGrid framed_d = signed_distance(framed, h_fine, /*periodic_cols=*/false,
+                                                /*boundary_offset=*/true);
+  DistanceGrid hemi{fine, fine, std::vector<double>(size_t(fine) * fine)};
+  for (int i = 0; i < fine; ++i)
+    for (int j = 0; j < fine; ++j) hemi.at(i, j) = framed_d.at(i, j + 1);
   VertexSdf out;
   out.h = kPi / resolution;
   out.d = {resolution, resolution, std::vector<double>(size_t(resolution) * resolution, 0.0)};

@@ -82,7 +82,7 @@ struct SdfGradient {
 SdfGradient sdf_gradient(const DistanceGrid& d, double h, bool periodic_cols);
 
 // Everything per vertex in one call: visibility on the full circle at `resolution`
-// (× `supersample`), exact SDF there (φ periodic), boundary-offset, then the hemisphere
+// (× `supersample`), exact boundary-offset SDF (equal to the φ-periodic full-circle one), the hemisphere
 // resolution × resolution square (supersampled grids are box-filtered down, as the paper
 // samples 512² and keeps 128²).
 struct VertexSdf {
