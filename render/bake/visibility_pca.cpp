@@ -81,9 +81,15 @@ SdfPca fit_sdf_pca(const Eigen::MatrixXf& sdfs, const SdfPcaOptions& options) {
   pca.basis = u.leftCols(chosen);
   pca.coefficients = pca.basis.transpose() * x;
   // Measured, not predicted: what a reader of the bundle will get back.
-  const Eigen::MatrixXd residual = (x - pca.basis * pca.coefficients).cast<double>();
-  pca.rms_error = std::sqrt(residual.squaredNorm() / (cells * vertices));
-  pca.max_error = residual.cwiseAbs().maxCoeff();
+  // Column by column: a whole residual matrix would double the memory of a large bake.
+  double squared = 0, worst = 0;
+  for (Eigen::Index v = 0; v < x.cols(); ++v) {
+    const Eigen::VectorXd r = (x.col(v) - pca.basis * pca.coefficients.col(v)).cast<double>();
+    squared += r.squaredNorm();
+    worst = std::max(worst, r.cwiseAbs().maxCoeff());
+  }
+  pca.rms_error = std::sqrt(squared / (cells * vertices));
+  pca.max_error = worst;
   return pca;
 }
 
