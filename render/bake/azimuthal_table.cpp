@@ -95,4 +95,29 @@ AzimuthalTable bake_azimuthal_table(const AzimuthalTableSettings& s) {
   return t;
 }
 
+double azimuthal_interpolation_error(const AzimuthalTable& t, int stride) {
+  const auto& s = t.settings;
+  const int q = s.quadrature_points;
+  const double h = kPi / q;
+  double worst = 0.0;
+  for (int l = 0; l + 1 < s.lambda_nodes; l += stride)
+    for (int k = 0; k + 1 < s.phi_k_nodes; k += stride)
+      for (int o = 0; o + 1 < s.phi_o_nodes; o += stride) {
+        const double lp = std::expm1(0.5 * (std::log1p(t.lambda_node(l)) + std::log1p(t.lambda_node(l + 1))));
+        const double pk = 0.5 * (t.phi_k_node(k) + t.phi_k_node(k + 1));
+        const double po = 0.5 * (t.phi_o_node(o) + t.phi_o_node(o + 1));
+        const double z = circular_gaussian_full_integral(lp);
+        for (int m : {1, 6, 10}) {
+          if (m > s.max_power) continue;
+          double sum = 0.0;
+          for (int i = 0; i < q; ++i) {
+            const double x = -kPi / 2 + (i + 0.5) * h;
+            sum += std::exp(lp * (std::cos(x - pk) - 1.0)) * std::pow(std::cos(0.5 * (x - po)), m);
+          }
+          worst = std::max(worst, std::abs(t.value(m, po, pk, lp) - sum * h) / z);
+        }
+      }
+  return worst;
+}
+
 }  // namespace weft

@@ -48,4 +48,8 @@ double circular_gaussian_full_integral(double lambda_prime);
 
 AzimuthalTable bake_azimuthal_table(const AzimuthalTableSettings& settings = {});
 
+// Worst |interpolated − integral| / Z(λ') at the centres of every `stride`-th cell (the
+// farthest points from the nodes), powers 1, 6 and 10, by the bake's own quadrature.
+double azimuthal_interpolation_error(const AzimuthalTable& table, int stride = 4);
+
 }  // namespace weft
