@@ -55,7 +55,6 @@ TEST(LambdaLevelSelection, TighterTargetsNeedAtLeastAsManyLevels) {
   s.xi_resolution = 16;
   s.wo_resolution = 12;
   s.wi_resolution = 32;
-  s.wi_min_resolution = 16;
   s.lambda_max = 256.0;
   const Choice loose = select_lambda_levels(f, s, 0.5, 3);
   const Choice tight = select_lambda_levels(f, s, 1e-4, 3);

@@ -20,10 +20,11 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Probe radiance L(ξ, ω_o), (ξ × ω_o) column-major.
 Eigen::MatrixXd probe_radiance(const Fabric& fabric, std::array<int, 2> samples, const TangentProbe& p) {
   const ClothBsdf bsdf(fabric, samples);
-  const HemisphereCellGrid wi_grid{p.wi_resolution}, wo_grid{p.wo_resolution};
+  const HemisphereNodeGrid wi_grid{p.wi_resolution};
+  const HemisphereCellGrid wo_grid{p.wo_resolution};
   const HemisphereNodeGrid xi_grid{p.xi_resolution};
   std::vector<glm::dvec3> wi(wi_grid.size()), xi(xi_grid.size());
-  for (int i = 0; i < wi_grid.size(); ++i) wi[i] = wi_grid.centre(i);
+  for (int i = 0; i < wi_grid.size(); ++i) wi[i] = wi_grid.node(i);
   for (int i = 0; i < xi_grid.size(); ++i) xi[i] = xi_grid.node(i);
   Eigen::MatrixXd f(wi_grid.size(), wo_grid.size());
 #pragma omp parallel
@@ -38,7 +39,9 @@ Eigen::MatrixXd probe_radiance(const Fabric& fabric, std::array<int, 2> samples,
       }
     }
   }
-  const SgKernel k = sg_kernel(wi_grid, xi, p.lambda);
+  BakeSettings quadrature;
+  quadrature.wi_resolution = p.wi_resolution;
+  const SgKernel k = sg_kernel(wi_grid, xi, p.lambda, quadrature_resolution_for(quadrature, p.lambda));
   const Eigen::Map<const Eigen::MatrixXf> g(k.g.data(), k.rows, k.cols);
   return g.cast<double>() * f;
 }
@@ -62,9 +65,10 @@ double tangent_sample_error(const Fabric& fabric, std::array<int, 2> samples, st
   return relative_rms(probe_radiance(fabric, samples, probe), probe_radiance(fabric, reference, probe));
 }
 
-Choice select_tangent_samples(const Fabric& fabric, int thread, double target, const TangentProbe& probe) {
+namespace {
+Choice select_tangent_samples_against(const Fabric& fabric, int thread, double target, const TangentProbe& probe,
+                                      const Eigen::MatrixXd& ref) {
   const int nc = probe.converged_samples;
-  const Eigen::MatrixXd ref = probe_radiance(fabric, {nc, nc}, probe);
   Choice c;
   for (int n : probe.candidates) {
     std::array<int, 2> s{nc, nc};
@@ -77,8 +81,15 @@ Choice select_tangent_samples(const Fabric& fabric, int thread, double target, c
   }
   return c;
 }
+}  // namespace
 
-Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, double target, int xi_stride) {
+Choice select_tangent_samples(const Fabric& fabric, int thread, double target, const TangentProbe& probe) {
+  const int nc = probe.converged_samples;
+  return select_tangent_samples_against(fabric, thread, target, probe, probe_radiance(fabric, {nc, nc}, probe));
+}
+
+Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, double target, int xi_stride,
+                            int wo_stride) {
   base.validate();
   constexpr int kLadder = 33;  // ×2^{1/4}: the candidates' levels and their midpoints
   BakeSettings ladder = base;
@@ -86,26 +97,22 @@ Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, doub
   const std::vector<double> lambdas = ladder.lambdas();
 
   const HemisphereNodeGrid xi_grid{base.xi_resolution}, wo_grid{base.wo_resolution};
-  std::vector<glm::dvec3> xi, wo(wo_grid.size());
+  std::vector<glm::dvec3> xi, wo;
   for (int j = 0; j < xi_grid.n; j += xi_stride)
     for (int i = 0; i < xi_grid.n; i += xi_stride) xi.push_back(xi_grid.node(j * xi_grid.n + i));
-  for (int i = 0; i < wo_grid.size(); ++i) wo[i] = wo_grid.node(i);
+  for (int j = 0; j < wo_grid.n; j += wo_stride)
+    for (int i = 0; i < wo_grid.n; i += wo_stride) wo.push_back(wo_grid.node(j * wo_grid.n + i));
 
   const ClothBsdf bsdf(fabric, base.tangent_samples);
-  std::map<int, WeightGrid> grids;
-  grids.emplace(base.wi_resolution, evaluate_weight_grid(bsdf, base.wi_resolution, wo));
+  const WeightGrid grid = evaluate_weight_grid(bsdf, base.wi_resolution, wo);
   // T on the ladder: [level][t], each (ξ subsample × ω_o).
   std::vector<std::vector<Eigen::MatrixXf>> t_at(kLadder);
   for (int l = 0; l < kLadder; ++l) {
-    const int n = wi_resolution_for(base, lambdas[l]);
-    for (int m = base.wi_resolution; m > n; m /= 2)
-      if (!grids.count(m / 2)) grids.emplace(m / 2, grids.at(m).coarsened());
-    const WeightGrid& grid = grids.at(n);
-    const SgKernel k = sg_kernel(grid.wi, xi, lambdas[l]);
-    for (int t = 0; t < grid.samples(); ++t) {
-      const std::vector<float> v = convolve_weights(grid, t, k);
-      t_at[l].push_back(Eigen::Map<const Eigen::MatrixXf>(v.data(), k.rows, grid.wo_count));
-    }
+    const SgKernel k = sg_kernel(grid.wi, xi, lambdas[l], quadrature_resolution_for(base, lambdas[l]));
+    const std::vector<float> all = convolve_all_weights(grid, k);
+    for (int t = 0; t < grid.samples(); ++t)
+      t_at[l].push_back(Eigen::Map<const Eigen::MatrixXf>(all.data() + size_t(t) * k.rows * grid.wo_count, k.rows,
+                                                         grid.wo_count));
   }
   Choice c;
   for (int stride : {8, 4, 2}) {
@@ -136,10 +143,18 @@ SelectionResult select_bake_settings(const Fabric& fabric, double target, const 
     if (progress) progress(f, s);
   };
   const char* thread_names[2] = {"tangent samples, thread 1", "tangent samples, thread 2"};
+  const TangentProbe probe;
+  auto t_ref = std::chrono::steady_clock::now();
+  report(0.0, "converged reference for tangent samples");
+  const Eigen::MatrixXd ref =
+      probe_radiance(fabric, {probe.converged_samples, probe.converged_samples}, probe);
+  r.rows.push_back({"tangent-sample reference", std::to_string(probe.converged_samples) + "+" +
+                                                    std::to_string(probe.converged_samples) + " (converged)",
+                    0.0, 0, seconds_since(t_ref)});
   for (int j = 0; j < 2; ++j) {
-    report(0.4 * j, thread_names[j]);
-    const auto t0 = std::chrono::steady_clock::now();
-    const Choice c = select_tangent_samples(fabric, j, target);
+    report(0.2 + 0.3 * j, thread_names[j]);
+    auto t0 = std::chrono::steady_clock::now();
+    const Choice c = select_tangent_samples_against(fabric, j, target, probe, ref);
     r.settings.tangent_samples[j] = c.value;
     r.rows.push_back({thread_names[j], std::to_string(c.value), c.error, 0, seconds_since(t0)});
   }

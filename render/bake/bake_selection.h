@@ -31,12 +31,13 @@ struct SelectionResult {
 };
 
 // The error probe for tangent samples: radiance L(ξ, ω_o) = Σ_i G_λ(ξ, ω_i)·f(ω_i, ω_o)·ΔΩ
-// with f = ClothBsdf::Point::integrand (summed over RGB), ξ on a node grid, ω_o on a cell grid.
+// with f = ClothBsdf::Point::integrand (summed over RGB) on an ω_i node grid (interpolated onto
+// the lobe's quadrature as in the bake), ξ on a node grid, ω_o on a cell grid.
 struct TangentProbe {
-  int xi_resolution = 12;
-  int wo_resolution = 12;
-  int wi_resolution = 64;
-  double lambda = 256.0;      // sharp, yet resolved by the ω_i grid (spacing 0.039 < 1/√λ)
+  int xi_resolution = 8;
+  int wo_resolution = 8;
+  int wi_resolution = 48;
+  double lambda = 128.0;      // sharp; f between the ω_i nodes is interpolated
   int converged_samples = 32;
   std::vector<int> candidates{1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
 };
@@ -56,8 +57,9 @@ Choice select_tangent_samples(const Fabric& fabric, int thread, double target, c
 
 // Number of log-spaced λ levels over [lambda_min, lambda_max] of `base` (5, 9 or 17: spacing
 // ×4, ×2, ×√2) whose interpolation error at the midpoints is ≤ target (17 if none is).
-// `xi_stride` subsamples the ξ node grid for the probe.
-Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, double target, int xi_stride = 6);
+// `xi_stride` and `wo_stride` subsample the ξ and ω_o node grids for the probe.
+Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, double target, int xi_stride = 6,
+                            int wo_stride = 3);
 
 // All of the above, in order; the SVD error is set to the target.
 SelectionResult select_bake_settings(const Fabric& fabric, double target, const BakeSettings& base,

@@ -10,28 +10,6 @@
 
 namespace weft {
 
-WeightGrid WeightGrid::coarsened() const {
-  if (wi.n % 2 != 0) throw std::invalid_argument("WeightGrid::coarsened: odd grid " + std::to_string(wi.n));
-  WeightGrid c;
-  c.wi.n = wi.n / 2;
-  c.wo_count = wo_count;
-  const int n = wi.n, m = c.wi.n;
-  c.w.resize(w.size());
-  for (size_t t = 0; t < w.size(); ++t) {
-    c.w[t].assign(size_t(m) * m * wo_count, 0.0f);
-    for (int o = 0; o < wo_count; ++o) {
-      const float* src = w[t].data() + size_t(o) * n * n;
-      float* dst = c.w[t].data() + size_t(o) * m * m;
-      for (int j = 0; j < m; ++j)
-        for (int i = 0; i < m; ++i) {
-          const int f = 2 * j * n + 2 * i;
-          dst[j * m + i] = 0.25f * (src[f] + src[f + 1] + src[f + n] + src[f + n + 1]);
-        }
-    }
-  }
-  return c;
-}
-
 WeightGrid evaluate_weight_grid(const ClothBsdf& bsdf, int wi_n, std::span<const glm::dvec3> wo,
                                 const std::function<void(int, int)>& progress) {
   WeightGrid g;
@@ -41,7 +19,7 @@ WeightGrid evaluate_weight_grid(const ClothBsdf& bsdf, int wi_n, std::span<const
   const int wi_count = g.wi.size();
   g.w.assign(samples, std::vector<float>(size_t(wi_count) * wo.size()));
   std::vector<glm::dvec3> wi(wi_count);
-  for (int i = 0; i < wi_count; ++i) wi[i] = g.wi.centre(i);
+  for (int i = 0; i < wi_count; ++i) wi[i] = g.wi.node(i);
 
   std::atomic<int> done{0};
 #pragma omp parallel
@@ -62,20 +40,53 @@ WeightGrid evaluate_weight_grid(const ClothBsdf& bsdf, int wi_n, std::span<const
   return g;
 }
 
-SgKernel sg_kernel(const HemisphereCellGrid& grid, std::span<const glm::dvec3> xi, double lambda) {
+SgKernel sg_kernel(const HemisphereNodeGrid& grid, std::span<const glm::dvec3> xi, double lambda, int quadrature_n) {
+  const HemisphereCellGrid quad{quadrature_n > 0 ? quadrature_n : grid.n};
   SgKernel k;
   k.rows = static_cast<int>(xi.size());
   k.cols = grid.size();
-  k.g.resize(size_t(k.rows) * k.cols);
-  std::vector<glm::dvec3> wi(k.cols);
-  for (int i = 0; i < k.cols; ++i) wi[i] = grid.centre(i);
-#pragma omp parallel for
-  for (int r = 0; r < k.rows; ++r) {
-    double sum = 0.0;
-    for (int i = 0; i < k.cols; ++i) sum += std::exp(lambda * (glm::dot(xi[r], wi[i]) - 1.0));
-    const double inv = sum > 0.0 ? 1.0 / sum : 0.0;
-    for (int i = 0; i < k.cols; ++i)
-      k.g[size_t(i) * k.rows + r] = float(std::exp(lambda * (glm::dot(xi[r], wi[i]) - 1.0)) * inv);
+  k.g.assign(size_t(k.rows) * k.cols, 0.0f);
+  const int qn = quad.n, n = grid.n;
+  std::vector<glm::dvec3> wq(quad.size());
+  for (int i = 0; i < quad.size(); ++i) wq[i] = quad.centre(i);
+  // Bilinear taps of each quadrature cell centre among the sample cell centres.
+  struct Tap {
+    int index[4];
+    float weight[4];
+  };
+  std::vector<Tap> taps(quad.size());
+  for (int c = 0; c < quad.size(); ++c) {
+    Tap& tap = taps[c];
+    auto axis = [&](int q, int& i0, int& i1, float& f) {
+      // Node i sits at i/(n − 1) on [0, 1]; quadrature centre q at (q + ½)/qn.
+      const double x = (q + 0.5) / qn * (n - 1);
+      i0 = std::min(static_cast<int>(x), n - 2);
+      i1 = i0 + 1;
+      f = static_cast<float>(x - i0);
+    };
+    int x0, x1, y0, y1;
+    float fx, fy;
+    axis(c % qn, x0, x1, fx);
+    axis(c / qn, y0, y1, fy);
+    tap = {{y0 * n + x0, y0 * n + x1, y1 * n + x0, y1 * n + x1},
+           {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy}};
+  }
+#pragma omp parallel
+  {
+    std::vector<double> row(k.cols);
+#pragma omp for schedule(dynamic, 8)
+    for (int r = 0; r < k.rows; ++r) {
+      std::fill(row.begin(), row.end(), 0.0);
+      double sum = 0.0;
+      for (int c = 0; c < quad.size(); ++c) {
+        const double g = std::exp(lambda * (glm::dot(xi[r], wq[c]) - 1.0));
+        if (g < 1e-12) continue;  // beyond the lobe's reach: below float resolution of the row
+        sum += g;
+        for (int q = 0; q < 4; ++q) row[taps[c].index[q]] += g * taps[c].weight[q];
+      }
+      const double inv = sum > 0.0 ? 1.0 / sum : 0.0;
+      for (int i = 0; i < k.cols; ++i) k.g[size_t(i) * k.rows + r] = static_cast<float>(row[i] * inv);
+    }
   }
   return k;
 }
@@ -87,6 +98,21 @@ std::vector<float> convolve_weights(const WeightGrid& grid, int t, const SgKerne
   const Eigen::Map<const Eigen::MatrixXf> w(grid.w[t].data(), wi_count, grid.wo_count);
   std::vector<float> out(size_t(kernel.rows) * grid.wo_count);
   Eigen::Map<Eigen::MatrixXf> result(out.data(), kernel.rows, grid.wo_count);
+  result.noalias() = g * w;
+  return out;
+}
+
+std::vector<float> convolve_all_weights(const WeightGrid& grid, const SgKernel& kernel) {
+  const int wi_count = grid.wi.size();
+  if (kernel.cols != wi_count) throw std::invalid_argument("convolve_all_weights: kernel and grid disagree on ω_i");
+  const Eigen::Map<const Eigen::MatrixXf> g(kernel.g.data(), kernel.rows, kernel.cols);
+  // Stack the samples' W side by side so one large GEMM does every sample.
+  Eigen::MatrixXf w(wi_count, size_t(grid.wo_count) * grid.samples());
+  for (int t = 0; t < grid.samples(); ++t)
+    w.middleCols(size_t(t) * grid.wo_count, grid.wo_count) =
+        Eigen::Map<const Eigen::MatrixXf>(grid.w[t].data(), wi_count, grid.wo_count);
+  std::vector<float> out(size_t(kernel.rows) * w.cols());
+  Eigen::Map<Eigen::MatrixXf> result(out.data(), kernel.rows, w.cols());
   result.noalias() = g * w;
   return out;
 }

@@ -2,7 +2,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <map>
+#include <algorithm>
 #include <stdexcept>
 
 #include "bake/low_rank.h"
@@ -36,7 +36,6 @@ void BakeSettings::validate() const {
   require(xi_resolution >= 2 && xi_resolution <= 512, "xi_resolution must be in [2, 512]");
   require(wo_resolution >= 2 && wo_resolution <= 512, "wo_resolution must be in [2, 512]");
   require(wi_resolution >= 2 && wi_resolution <= 1024, "wi_resolution must be in [2, 1024]");
-  require(wi_min_resolution >= 1 && wi_min_resolution <= wi_resolution, "wi_min_resolution must be in [1, wi_resolution]");
   require(cell_per_lobe > 0.0 && std::isfinite(cell_per_lobe), "cell_per_lobe must be positive");
   require(lambda_min > 0.0 && std::isfinite(lambda_min) && lambda_max >= lambda_min && std::isfinite(lambda_max) &&
               lambda_max <= 1e5,
@@ -47,14 +46,9 @@ void BakeSettings::validate() const {
   require(max_rank >= 0, "max_rank must be >= 0");
 }
 
-int wi_resolution_for(const BakeSettings& s, double lambda) {
-  int n = s.wi_resolution;
-  const double spacing_limit = s.cell_per_lobe / std::sqrt(lambda);
-  // Halve while the coarser grid still resolves the lobe (and stays at or above the floor).
-  while (n % 2 == 0 && n / 2 >= s.wi_min_resolution &&
-         std::sqrt(2.0 * 3.141592653589793) / (n / 2) <= spacing_limit)
-    n /= 2;
-  return n;
+int quadrature_resolution_for(const BakeSettings& s, double lambda) {
+  const int needed = static_cast<int>(std::ceil(std::sqrt(2.0 * 3.141592653589793 * lambda) / s.cell_per_lobe));
+  return std::clamp(needed, s.wi_resolution, 1024);
 }
 
 WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& settings, const BakeProgress& progress,
@@ -85,38 +79,26 @@ WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& 
   // Share of the progress bar: W grid first, then one step per (level, t).
   constexpr double kWeightShare = 0.3;
   auto t0 = std::chrono::steady_clock::now();
-  std::map<int, WeightGrid> grids;  // by ω_i resolution
-  grids.emplace(settings.wi_resolution,
-                evaluate_weight_grid(bsdf, settings.wi_resolution, wo, [&](int done, int total) {
-                  report(kWeightShare * done / total, "weights W(t, ω_i, ω_o)");
-                }));
+  const WeightGrid grid = evaluate_weight_grid(bsdf, settings.wi_resolution, wo, [&](int done, int total) {
+    report(kWeightShare * done / total, "weights W(t, ω_i, ω_o)");
+  });
   time.weights_s = seconds_since(t0);
 
   out.tables.resize(size_t(samples) * levels);
   LowRankOptions lr;
   lr.relative_error = settings.svd_error;
   lr.max_rank = settings.max_rank;
+  const size_t block = size_t(xi.size()) * grid.wo_count;
   for (int l = 0; l < levels; ++l) {
     const double lambda = out.lambdas[l];
-    const int n = wi_resolution_for(settings, lambda);
     auto tc = std::chrono::steady_clock::now();
-    if (!grids.count(n)) {
-      int m = settings.wi_resolution;
-      while (m > n) {
-        if (!grids.count(m / 2)) grids.emplace(m / 2, grids.at(m).coarsened());
-        m /= 2;
-      }
-    }
-    const WeightGrid& grid = grids.at(n);
-    const SgKernel kernel = sg_kernel(grid.wi, xi, lambda);
+    const SgKernel kernel = sg_kernel(grid.wi, xi, lambda, quadrature_resolution_for(settings, lambda));
+    const std::vector<float> all = convolve_all_weights(grid, kernel);
     time.convolve_s += seconds_since(tc);
     for (int t = 0; t < samples; ++t) {
       tc = std::chrono::steady_clock::now();
-      const std::vector<float> table = convolve_weights(grid, t, kernel);
-      time.convolve_s += seconds_since(tc);
-      tc = std::chrono::steady_clock::now();
       lr.seed = 1u + unsigned(t * levels + l);
-      LowRankFactors f = truncated_svd(table.data(), kernel.rows, grid.wo_count, lr);
+      LowRankFactors f = truncated_svd(all.data() + t * block, kernel.rows, grid.wo_count, lr);
       time.compress_s += seconds_since(tc);
       CompressedTable& c = out.tables[size_t(t) * levels + l];
       c.rank = f.rank;

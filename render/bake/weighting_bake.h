@@ -6,9 +6,9 @@
 //      have equal solid angle, so it cancels: G's rows are the discrete Eq. 10 weights) and
 //      T_{t,λ} = G · W_t, one GEMM per (t, λ);
 //   3. each T_{t,λ} truncated by SVD to a relative Frobenius error target (low_rank.h).
-// Broad lobes do not need the fine ω_i grid: a level uses the coarsest power-of-two
-// coarsening of it (2×2 cells averaged into one, exact on the equal-area grid) whose cell
-// spacing √(2π)/n stays below `cell_per_lobe` × the lobe's angular width 1/√λ.
+// W is sampled on a fixed ω_i node grid; each level integrates its lobe on a quadrature grid
+// fine enough for it (cell spacing √(2π)/n ≤ `cell_per_lobe` × the lobe's width 1/√λ), with W
+// interpolated bilinearly from the samples and the interpolation folded into G (sg_convolution.h).
 #include <array>
 #include <functional>
 #include <string>
@@ -24,9 +24,8 @@ struct BakeSettings {
   std::array<int, 2> tangent_samples{3, 3};  // N_j; seed 000 Table 1 uses 6 in all for linen
   int xi_resolution = 48;                    // ξ node grid n×n (paper: 48×48)
   int wo_resolution = 48;                    // ω_o node grid n×n (paper: 48×48)
-  int wi_resolution = 96;                    // finest ω_i quadrature grid n×n cells
-  int wi_min_resolution = 48;                // coarsest ω_i grid a broad level may use
-  double cell_per_lobe = 0.75;               // ω_i cell spacing ≤ this × 1/√λ
+  int wi_resolution = 48;                    // ω_i nodes where W is sampled, n×n
+  double cell_per_lobe = 0.75;               // quadrature cell spacing ≤ this × 1/√λ
   // λ = 2/σ²: the paper samples σ from 1/√2 to 1/(16√2) logarithmically, i.e. λ 4..1024.
   double lambda_min = 4.0, lambda_max = 1024.0;
   int lambda_levels = 9;                     // log-spaced, both ends included
@@ -50,7 +49,7 @@ struct BakeTimings {
 WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& settings,
                                       const BakeProgress& progress = {}, BakeTimings* timings = nullptr);
 
-// The ω_i grid resolution a level of sharpness λ uses under `settings`.
-int wi_resolution_for(const BakeSettings& settings, double lambda);
+// The quadrature grid (n×n cells) a level of sharpness λ uses under `settings`.
+int quadrature_resolution_for(const BakeSettings& settings, double lambda);
 
 }  // namespace weft
