@@ -79,6 +79,9 @@ AzimuthalTable bake_azimuthal_table(const AzimuthalTableSettings& s) {
       double p = 1.0;
       for (int m = 0; m < M; ++m, p *= base) c[m](i, o) = p;
     }
+  // Levels are independent; one per thread of execution keeps each small GEMM single-threaded
+  // (splitting 65×2048×33 products across threads costs more than it saves).
+#pragma omp parallel for schedule(dynamic, 1)
   for (int l = 0; l < s.lambda_nodes; ++l) {
     const double lp = t.lambda_node(l);
     const double inv_z = 1.0 / circular_gaussian_full_integral(lp);

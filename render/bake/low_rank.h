@@ -19,7 +19,7 @@ struct LowRankFactors {
 struct LowRankOptions {
   double relative_error = 0.01;  // target on ‖A − U·Vᵀ‖_F / ‖A‖_F
   int max_rank = 0;              // 0: no cap besides min(rows, cols)
-  int initial_width = 16;        // first range-finder width; doubled while the target is missed
+  int initial_width = 32;        // first range-finder width; doubled while the target is missed
   unsigned seed = 1;
 };
 
