@@ -67,6 +67,7 @@ int run_bake_tables(const BakeTablesArgs& a) {
     throw UsageError("--target-error: must be in (0, 1), got " + std::to_string(a.target_error));
   const Fabric fabric = load_fabric_preset(a.fabric, assets_dir() / "fabrics");
   BakeSettings settings;
+  settings.tangent_samples = paper_tangent_samples(fabric.name);
   std::vector<SelectionRow> rows;
   ProgressBar bar;
   const auto start = std::chrono::steady_clock::now();
@@ -150,9 +151,12 @@ CommandAction add_bake_tables_command(CLI::App& app) {
                   "Choose tangent samples, λ levels and SVD ranks so each table's relative error stays under E "
                   "(default: the paper's settings)");
   sub->add_option("--samples", a->samples, "Override tangent samples per thread: N1,N2")->delimiter(',');
-  sub->add_option("--levels", a->levels, "Override the number of λ levels (4..1024, log-spaced)");
-  sub->add_option("--svd-error", a->svd_error, "Override the relative SVD truncation error per table");
-  sub->add_option("--wi-resolution", a->wi_resolution, "Override the finest ω_i quadrature grid (n×n cells)");
+  sub->add_option("--levels", a->levels, "Override the number of λ levels (4..1024, log-spaced)")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--svd-error", a->svd_error, "Override the relative SVD truncation error per table")
+      ->check(CLI::Range(1e-6, 0.999));
+  sub->add_option("--wi-resolution", a->wi_resolution, "Override the ω_i node grid W is sampled on (n×n)")
+      ->check(CLI::Range(2, 1024));
   return [a] { return run_bake_tables(*a); };
 }
 

@@ -135,6 +135,16 @@ Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, doub
   return c;
 }
 
+std::array<int, 2> paper_tangent_samples(const std::string& name) {
+  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (starts("linen")) return {3, 3};
+  if (starts("polyester")) return {8, 8};
+  if (starts("silk_shot")) return {5, 5};
+  if (starts("silk")) return {5, 5};
+  if (starts("velvet")) return {4, 4};
+  return {3, 3};
+}
+
 SelectionResult select_bake_settings(const Fabric& fabric, double target, const BakeSettings& base,
                                      const BakeProgress& progress) {
   SelectionResult r;

@@ -61,6 +61,11 @@ Choice select_tangent_samples(const Fabric& fabric, int thread, double target, c
 Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, double target, int xi_stride = 6,
                             int wo_stride = 3);
 
+// The paper's tangent samples (seed 000 Table 1 gives |C_1| + |C_2| per cloth: linen 6,
+// polyester 16, silk 10, velvet 8, silk shot 10), split evenly between the threads since the
+// paper gives only the sum; 3+3 for a fabric it does not list.
+std::array<int, 2> paper_tangent_samples(const std::string& fabric_name);
+
 // All of the above, in order; the SVD error is set to the target.
 SelectionResult select_bake_settings(const Fabric& fabric, double target, const BakeSettings& base,
                                      const BakeProgress& progress = {});
