@@ -95,7 +95,7 @@ int run_bake_tables(const BakeTablesArgs& a) {
   std::cerr << "weft bake-tables: " << fabric.name << ": " << settings.tangent_samples[0] << "+"
             << settings.tangent_samples[1] << " tangent samples, " << settings.lambda_levels << " sharpness levels λ "
             << settings.lambda_min << ".." << settings.lambda_max << ", ξ " << settings.xi_resolution << "², ω_o "
-            << settings.wo_resolution << "², ω_i ≤ " << settings.wi_resolution << "², SVD error ≤ "
+            << settings.wo_resolution << "², W on " << settings.wi_resolution << "² ω_i nodes, SVD error ≤ "
             << settings.svd_error << "\n";
   BakeTimings timings;
   const auto bake_start = std::chrono::steady_clock::now();
