@@ -14,5 +14,6 @@ CommandAction add_eval_command(CLI::App& app);
 CommandAction add_render_command(CLI::App& app);
 CommandAction add_fit_command(CLI::App& app);
 CommandAction add_panel_command(CLI::App& app);
+CommandAction add_bake_tables_command(CLI::App& app);
 
 }  // namespace weft

@@ -1,0 +1,49 @@
+#pragma once
+// The direction grids the weighting tables live on (seed 000 §3.1: 48×48 ξ, 48×48 ω_o).
+//
+// Parameterisation: the upper hemisphere (z ≥ 0 in the local frame n = +z, warp u = +x,
+// weft v = +y) is mapped from the square [−1,1]² by Shirley–Chiu's concentric square→disk map
+// followed by Lambert's equal-area disk→hemisphere map (z = 1 − r², xy scaled by √(2 − r²)).
+// Both maps preserve area, so every cell of an N×N grid on the square covers the same solid
+// angle 2π/N², and the square is continuous across the whole hemisphere (no seam, no pole),
+// which is what bilinear interpolation needs.
+//
+// Two kinds of grid on that square:
+//  - a node grid (tables): N×N nodes at s = −1 + 2·i/(N−1), so the horizon is on the border;
+//    values between nodes are bilinear in s;
+//  - a cell grid (quadrature): N×N cells with centres at s = −1 + (2i+1)/N, each of solid
+//    angle 2π/N².
+// Index of (i, j) is j·N + i, i along the square's x.
+#include <array>
+
+#include <glm/glm.hpp>
+
+namespace weft {
+
+// Square [−1,1]² → unit direction with z ≥ 0.
+glm::dvec3 hemisphere_from_square(glm::dvec2 s);
+// Unit direction → square. Directions below the horizon (z < 0) are first moved onto it
+// (z = 0, xy renormalised); the zero vector and non-finite input give the zenith.
+glm::dvec2 square_from_hemisphere(glm::dvec3 w);
+
+// Four nodes and their bilinear weights (sum 1).
+struct BilinearTap {
+  std::array<int, 4> index;
+  std::array<double, 4> weight;
+};
+
+struct HemisphereNodeGrid {
+  int n = 48;
+  int size() const { return n * n; }
+  glm::dvec3 node(int index) const;
+  BilinearTap tap(const glm::dvec3& w) const;
+};
+
+struct HemisphereCellGrid {
+  int n = 96;
+  int size() const { return n * n; }
+  glm::dvec3 centre(int index) const;
+  double solid_angle() const;  // of every cell: 2π/n²
+};
+
+}  // namespace weft
