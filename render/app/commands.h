@@ -11,6 +11,7 @@ namespace weft {
 using CommandAction = std::function<int()>;
 
 CommandAction add_eval_command(CLI::App& app);
+CommandAction add_fit_command(CLI::App& app);
 CommandAction add_render_command(CLI::App& app);
 
 }  // namespace weft
