@@ -37,8 +37,8 @@ build() {
 }
 
 run_default() {
-  # The renderer arrives with later issues; until then the default fabric's radiance under one light.
-  "$BUILD_DIR/render/app/weft" eval --fabric linen_plain --view 0.5,0.2,0.8 --sg -0.3,0.1,0.9,20,1,1,1
+  # The ground-truth render of the default scene (a few minutes on 2 cores): pillow.exr + pillow.png.
+  "$BUILD_DIR/render/app/weft" render --scene pillow --method reference --out "$BUILD_DIR/pillow.exr"
 }
 
 test_all() {

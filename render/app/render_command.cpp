@@ -14,6 +14,10 @@
 #include "app/commands.h"
 #include "core/fabric.h"
 #include "image/image.h"
+#include "lighting/env_map.h"
+#include "lighting/sg_fit.h"
+#include "lighting/sg_set_io.h"
+#include "reference/environment_samples.h"
 #include "reference/scene_render.h"
 #include "scene/scene.h"
 
@@ -31,10 +35,12 @@ struct RenderArgs {
   std::string out;
   int width = 320, height = 240;
   int sg_grid = 8;
-  int tangent_samples = 32;
-  int check_stride = 4;
+  int map_width = 128;
+  int sg_count = 10;
+  int tangent_samples = 16;
+  int check_stride = 6;
   bool no_check = false;
-  double exposure = 1.0;
+  double exposure = 0.0;  // 0: automatic
   int timed_frames = 20;
 };
 
@@ -73,9 +79,12 @@ int run_render(const RenderArgs& a) {
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
   if (a.sg_grid < 1 || a.sg_grid > 512) throw UsageError("--sg-grid: must be within 1..512");
+  if (a.map_width < 4 || a.map_width > 4096 || a.map_width % 2)
+    throw UsageError("--map-width: must be even and within 4..4096");
+  if (a.sg_count < 1 || a.sg_count > 64) throw UsageError("--sg-count: must be within 1..64");
   if (a.tangent_samples < 1 || a.tangent_samples > 4096) throw UsageError("--tangent-samples: must be within 1..4096");
   if (a.check_stride < 1) throw UsageError("--check-stride: must be ≥ 1");
-  if (!(a.exposure > 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be > 0");
+  if (!(a.exposure >= 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be ≥ 0 (0: automatic)");
   const std::filesystem::path out(a.out);
   if (out.extension() != ".exr") throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
 
@@ -98,26 +107,54 @@ int run_render(const RenderArgs& a) {
       fabrics.emplace(obj.fabric, load_fabric_preset(obj.fabric, assets_dir() / "fabrics"));
   const std::string env = a.env.empty() ? scene.environment : a.env;
 
-  ReferenceLighting lighting;
-  if (a.lighting == "map")
-    throw UsageError("--lighting map: environment-map lighting is not built in this version; use --lighting sg");
-  if (!a.sgs_file.empty()) {
-    try {
-      lighting.sgs = load_sg_list(a.sgs_file);
-    } catch (const SceneError& e) {
-      throw UsageError("--sgs: " + std::string(e.what()));
-    }
-    lighting.description = std::to_string(lighting.sgs.size()) + " SGs from " + a.sgs_file;
-  } else {
-    lighting.sgs = scene.sgs;
-    lighting.description = std::to_string(lighting.sgs.size()) + " SGs (scene default)";
+  const auto env_file = assets_dir() / "envmaps" / (env + ".exr");
+  if (!std::filesystem::exists(env_file)) throw UsageError("--env: no environment map " + env_file.string());
+  EnvMapRepairs repairs;
+  std::shared_ptr<EnvMap> map;
+  try {
+    map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, &repairs));
+  } catch (const EnvMapError& e) {
+    throw UsageError(e.what());
   }
-  lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+  if (repairs.total() > 0)
+    std::cerr << "weft render: environment " << env << ": clamped " << repairs.nan << " NaN, " << repairs.infinite
+              << " infinite and " << repairs.negative << " negative channel values to 0\n";
+
+  ReferenceLighting lighting;
+  if (a.lighting == "map") {
+    if (!a.sgs_file.empty()) throw UsageError("--sgs: only with --lighting sg");
+    const int base = a.map_width;
+    lighting.samples = [map, base](int level) { return environment_samples(*map, base << level); };
+    lighting.background = [map](const glm::dvec3& d) { return map->lookup(d); };
+    lighting.description = "map " + env + " as " + std::to_string(base) + "x" + std::to_string(base / 2) +
+                           " stratified cells";
+  } else {
+    if (!a.sgs_file.empty()) {
+      try {
+        lighting.sgs = load_sg_set(a.sgs_file);
+      } catch (const SgSetError& e) {
+        throw UsageError(std::string("--sgs: ") + e.what());
+      }
+      lighting.description = std::to_string(lighting.sgs.size()) + " SGs from " + a.sgs_file;
+    } else {
+      const auto t = std::chrono::steady_clock::now();
+      SgFitOptions fit;
+      fit.count = a.sg_count;
+      lighting.sgs = fit_sgs(*map, fit);
+      lighting.description = std::to_string(lighting.sgs.size()) + " SGs fitted to " + env + " (" +
+                             std::to_string(std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count())
+                                 .substr(0, 4) +
+                             " s)";
+    }
+    lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+  }
 
   if (a.method != "reference") {
     const GpuFrame f = render_gpu_frame(scene, fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames);
     write_exr(f.image, out);
-    write_png(f.image, png_beside(out), a.exposure);
+    std::vector<bool> drawn(f.image.pixels.size());  // the GPU frame clears the background to 0
+    for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = f.image.pixels[i] != glm::dvec3(0.0);
+    write_png(f.image, png_beside(out), a.exposure > 0.0 ? a.exposure : auto_exposure(f.image, drawn));
     nlohmann::ordered_json j;
     j["scene"] = scene.name;
     j["method"] = a.method;
@@ -142,12 +179,17 @@ int run_render(const RenderArgs& a) {
   opt.progress = [&bar](double f) { bar(f); };
 
   std::cerr << "weft render: scene " << scene.name << ", " << a.width << "x" << a.height << ", lighting "
-            << lighting.description << ", SG grid " << a.sg_grid << "x" << 2 * a.sg_grid << " per SG, "
+            << lighting.description
+            << (a.lighting == "sg" ? ", SG grid " + std::to_string(a.sg_grid) + "x" + std::to_string(2 * a.sg_grid) + " per SG, "
+                                   : std::string(", "))
             << a.tangent_samples << " tangent samples per thread\n";
   const ReferenceRenderer renderer(scene, fabrics, lighting, opt);
   const ReferenceRenderResult r = renderer.render(0);
   write_exr(r.image, out);
-  write_png(r.image, png_beside(out), a.exposure);
+  std::vector<bool> surface(r.kinds.size());
+  for (size_t i = 0; i < r.kinds.size(); ++i) surface[i] = r.kinds[i] != PixelKind::background;
+  const double exposure = a.exposure > 0.0 ? a.exposure : auto_exposure(r.image, surface);
+  write_png(r.image, png_beside(out), exposure);
 
   nlohmann::ordered_json j;
   j["scene"] = scene.name;
@@ -156,14 +198,17 @@ int run_render(const RenderArgs& a) {
   j["environment"] = env;
   j["width"] = a.width;
   j["height"] = a.height;
-  j["sg_grid"] = a.sg_grid;
+  j["lighting_description"] = lighting.description;
+  if (a.lighting == "sg") j["sg_grid"] = a.sg_grid;
+  else j["map_width"] = a.map_width;
   j["tangent_samples"] = a.tangent_samples;
   j["seconds"] = r.seconds;
   j["exr"] = out.string();
   j["png"] = png_beside(out).string();
+  j["png_exposure"] = exposure;
   if (opt.check_convergence) {
     const auto& c = r.convergence;
-    j["convergence"] = {{"compared_with", "2x grid resolution"},
+    j["convergence"] = {{"compared_with", "2x lighting resolution and 2x tangent samples"},
                         {"check_stride", a.check_stride},
                         {"pixels_checked", c.pixels_checked},
                         {"relative_rmse", c.relative_rmse},
@@ -171,7 +216,7 @@ int run_render(const RenderArgs& a) {
                         {"max_pixel_change", c.max_pixel_change},
                         {"seconds", c.seconds}};
     std::cerr << "weft render: done in " << r.seconds << " s; convergence (1 in " << a.check_stride * a.check_stride
-              << " pixels at twice the grid): relative RMSE " << 100 * c.relative_rmse << " % (cloth "
+              << " pixels at twice the lighting resolution and tangent samples): relative RMSE " << 100 * c.relative_rmse << " % (cloth "
               << 100 * c.cloth_relative_rmse << " %), max pixel change " << 100 * c.max_pixel_change << " %\n";
   } else {
     std::cerr << "weft render: done in " << r.seconds << " s (convergence not checked)\n";
@@ -189,24 +234,28 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or sgpoint (GPU)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
-  sub->add_option("--sgs", a->sgs_file, "SG lighting from a JSON file ({\"sgs\":[...]}, as `weft fit --json` writes)");
+  sub->add_option("--sgs", a->sgs_file,
+                  "SG lighting from a JSON file (as `weft fit --out` writes); default: fit the environment map");
+  sub->add_option("--sg-count", a->sg_count, "SGs to fit to the map when no --sgs is given")->capture_default_str();
   sub->add_option("--out", a->out, "Output .exr (a .png is written beside it)")->required();
   sub->add_option("--width", a->width, "Image width")->capture_default_str();
   sub->add_option("--height", a->height, "Image height")->capture_default_str();
   sub->add_option("--sg-grid", a->sg_grid, "Reference: SG quadrature grid N (N x 2N cells per SG)")
       ->capture_default_str();
+  sub->add_option("--map-width", a->map_width, "Reference, --lighting map: cells across the map (W x W/2)")
+      ->capture_default_str();
   sub->add_option("--tangent-samples", a->tangent_samples, "Reference: tangent samples per thread N_j")
       ->capture_default_str();
   sub->add_option("--check-stride", a->check_stride,
-                  "Convergence check: re-render every Nth pixel (in x and y) at twice the grid")
+                  "Convergence check: re-render every Nth pixel (in x and y) at twice the lighting resolution and tangent samples")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
-  sub->add_option("--exposure", a->exposure, "PNG: multiply radiance by this before sRGB encoding")
+  sub->add_option("--exposure", a->exposure, "PNG: exposure before the 1-exp(-x) tone curve and sRGB (0: automatic, from the mean of the surfaces)")
       ->capture_default_str();
   return [a] { return run_render(*a); };
 }

@@ -64,11 +64,23 @@ void write_png(const Image& image, const std::filesystem::path& file, double exp
   png_write_info(png, info);
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) row[3 * x + c] = srgb8(exposure * image.at(x, y)[c]);
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = srgb8(-std::expm1(-exposure * image.at(x, y)[c]));
     png_write_row(png, row.data());
   }
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
+}
+
+double auto_exposure(const Image& image, const std::vector<bool>& include) {
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    if (!include.empty() && !include[i]) continue;
+    const glm::dvec3& p = image.pixels[i];
+    const double lum = 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
+    if (std::isfinite(lum)) sum += lum, ++n;
+  }
+  return n > 0 && sum > 0 ? 0.4 / (sum / n) : 1.0;
 }
 
 }  // namespace weft

@@ -27,14 +27,17 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
     throw std::invalid_argument("image size must be within 1..16384 pixels per side");
   if (options_.sg_grid < 1) throw std::invalid_argument("sg_grid must be ≥ 1");
   if (lighting_.sgs.empty() && !lighting_.samples) throw std::invalid_argument("reference: no lighting given");
+  if (options_.tangent_samples < 1) throw std::invalid_argument("tangent_samples must be ≥ 1");
   for (const auto& obj : scene.objects) {
-    if (obj.material != Material::cloth) {
-      bsdfs_.push_back(nullptr);
-      continue;
+    const Fabric* fabric = nullptr;
+    if (obj.material == Material::cloth) {
+      auto it = fabrics.find(obj.fabric);
+      if (it == fabrics.end()) throw std::invalid_argument("reference: no fabric '" + obj.fabric + "' loaded");
+      fabric = &it->second;
     }
-    auto it = fabrics.find(obj.fabric);
-    if (it == fabrics.end()) throw std::invalid_argument("reference: no fabric '" + obj.fabric + "' loaded");
-    bsdfs_.push_back(std::make_unique<ClothBsdf>(it->second, options_.tangent_samples));
+    for (int level = 0; level < kLevels; ++level)
+      bsdfs_[level].push_back(fabric ? std::make_unique<ClothBsdf>(*fabric, options_.tangent_samples << level)
+                                     : nullptr);
   }
 }
 
@@ -56,8 +59,9 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   // Directions below the geometric surface are blocked by the surface itself.
   auto visible = [&](const dvec3& wi) { return glm::dot(wi, ng) > 0.0 && rays_.unoccluded(origin, wi); };
 
+  if (level < 0 || level >= kLevels) throw std::invalid_argument("reference: level out of range");
   const SceneObject& obj = scene_.objects[hit.object];
-  const ClothBsdf* bsdf = bsdfs_[hit.object].get();
+  const ClothBsdf* bsdf = bsdfs_[level][hit.object].get();
   SurfaceFrame frame;
   if (bsdf) frame = SurfaceFrame::from_normal_warp(s.normal, s.warp);
 
@@ -133,6 +137,7 @@ ReferenceRenderResult ReferenceRenderer::render(int level) const {
 
 ConvergenceReport ReferenceRenderer::convergence(const ReferenceRenderResult& result, int level) const {
   const auto start = std::chrono::steady_clock::now();
+  if (level + 1 >= kLevels) throw std::invalid_argument("reference: convergence level out of range");
   if (lighting_.sgs.empty()) samples_at(level + 1);
   const int stride = std::max(1, options_.check_stride);
   struct Pair {

@@ -7,7 +7,9 @@
 //  - SG: the SG-warped midpoint grid of sg_quadrature.h at a fixed level (`sg_grid`);
 //  - directional samples (an environment map's texels, stratified by the caller): a sum.
 // Convergence is measured by re-rendering a subset of pixels at twice the resolution.
+#include <array>
 #include <functional>
+#include <memory>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,7 +29,8 @@ struct DirectionalSample {
 };
 
 // The lighting the reference integrates, at a given resolution level (level 0 = base; each
-// level doubles the resolution in both angular directions, i.e. 4× the samples).
+// level doubles the angular resolution in both directions, i.e. 4× the lighting samples, and
+// doubles the tangent samples N_j).
 struct ReferenceLighting {
   // SG lighting (used when non-empty).
   SgLighting sgs;
@@ -41,7 +44,7 @@ struct ReferenceLighting {
 struct ReferenceRenderOptions {
   int width = 320, height = 240;
   int sg_grid = 8;           // SG lighting: sg_grid × 2·sg_grid cells per SG at level 0
-  int tangent_samples = 32;  // N_j per thread
+  int tangent_samples = 16;  // N_j per thread at level 0 (each level doubles it too)
   // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
   int check_stride = 4;
   bool check_convergence = true;
@@ -86,7 +89,9 @@ public:
 private:
   const Scene& scene_;
   RayScene rays_;
-  std::vector<std::unique_ptr<ClothBsdf>> bsdfs_;  // per object; null for Lambertian
+  static constexpr int kLevels = 3;
+  // [level][object]; null for Lambertian.
+  std::array<std::vector<std::unique_ptr<ClothBsdf>>, kLevels> bsdfs_;
   ReferenceLighting lighting_;
   ReferenceRenderOptions options_;
   mutable std::map<int, std::vector<DirectionalSample>> samples_;  // filled before parallel use

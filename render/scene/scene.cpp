@@ -58,27 +58,6 @@ std::string text(const json& v, const std::string& where) {
   return v.get<std::string>();
 }
 
-SphericalGaussian parse_sg(const json& j, const std::string& where) {
-  SphericalGaussian g;
-  const glm::dvec3 axis = vec3(field(j, "axis", where), where + ".axis");
-  if (!(glm::length(axis) > 1e-9)) throw SceneError(where + ".axis: zero length");
-  g.axis = glm::normalize(axis);
-  g.sharpness = number(field(j, "sharpness", where), where + ".sharpness");
-  if (!(g.sharpness > 0.0 && g.sharpness <= 1e5))
-    throw SceneError(where + ".sharpness: must be in (0, 1e5], got " + std::to_string(g.sharpness));
-  g.amplitude = vec3(field(j, "amplitude", where), where + ".amplitude");
-  if (g.amplitude.r < 0 || g.amplitude.g < 0 || g.amplitude.b < 0)
-    throw SceneError(where + ".amplitude: must be ≥ 0");
-  return g;
-}
-
-SgLighting parse_sg_array(const json& list, const std::string& where) {
-  if (!list.is_array() || list.empty()) throw SceneError(where + ": expected a non-empty array of SGs");
-  SgLighting sgs;
-  for (size_t i = 0; i < list.size(); ++i) sgs.push_back(parse_sg(list[i], where + "[" + std::to_string(i) + "]"));
-  return sgs;
-}
-
 TriangleMesh generate_mesh(const json& m, const std::string& where, const std::filesystem::path& base_dir) {
   const std::string gen = text(field(m, "generator", where), where + ".generator");
   auto num = [&](const char* key, double fallback, double lo, double hi) {
@@ -125,21 +104,6 @@ glm::dvec3 camera_ray(const Camera& c, int width, int height, double px, double 
   return glm::normalize(forward + sx * right + sy * up);
 }
 
-SgLighting parse_sg_list_json(const std::string& json_text, const std::string& origin) {
-  json j;
-  try {
-    j = json::parse(json_text);
-  } catch (const json::exception& e) {
-    throw SceneError(origin + ": not valid JSON (" + e.what() + ")");
-  }
-  if (j.is_object()) return parse_sg_array(field(j, "sgs", origin), origin + ": sgs");
-  return parse_sg_array(j, origin);
-}
-
-SgLighting load_sg_list(const std::filesystem::path& file) {
-  return parse_sg_list_json(read_text(file, "SG file"), file.string());
-}
-
 Scene parse_scene(const std::string& json_text, const std::string& origin, const std::filesystem::path& base_dir) {
   json j;
   try {
@@ -165,7 +129,6 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     throw SceneError(cw + ".up: zero or parallel to the view direction");
 
   s.environment = text(field(j, "environment", origin), origin + ": environment");
-  s.sgs = parse_sg_array(field(j, "sgs", origin), origin + ": sgs");
 
   const json& objects = field(j, "objects", origin);
   if (!objects.is_array() || objects.empty()) throw SceneError(origin + ": objects: expected a non-empty array");

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "core/spherical_gaussian.h"
 #include "scene/mesh.h"
 
 namespace weft {
@@ -44,8 +43,8 @@ struct Scene {
   std::string name;
   std::string description;
   Camera camera;
-  std::string environment;   // env map name (assets/envmaps/NAME.exr)
-  SgLighting sgs;            // default SG lighting (until/unless fitted from the map)
+  std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
+                             // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;
 };
 
@@ -56,10 +55,5 @@ Scene load_scene(const std::filesystem::path& file);
 // `<dir>/<name>.json`.
 Scene load_scene_preset(const std::string& name, const std::filesystem::path& dir);
 std::vector<std::string> list_scene_presets(const std::filesystem::path& dir);
-
-// SG lighting as JSON: {"sgs":[{"axis":[x,y,z],"sharpness":λ,"amplitude":[r,g,b]},...]} or the
-// bare array. Axes are normalised; λ must be in (0, 1e5], amplitudes finite and ≥ 0.
-SgLighting parse_sg_list_json(const std::string& json_text, const std::string& origin);
-SgLighting load_sg_list(const std::filesystem::path& file);
 
 }  // namespace weft

@@ -1,0 +1,83 @@
+// `weft render` end to end on tiny images: files written, exit codes for bad input.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int code;
+  std::string out;
+};
+
+static CliResult weft(const std::string& args) {
+  const std::string cmd = std::string(WEFT_BINARY) + " " + args + " 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+static fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("weft_render_cli_" + name); }
+
+static bool is_png(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  return std::string(sig + 1, 3) == "PNG";
+}
+
+TEST(RenderCli, SwatchWithSgsFileWritesExrAndPng) {
+  const fs::path sgs = temp("sgs.json"), exr = temp("swatch.exr");
+  std::ofstream(sgs) << R"({"sgs":[{"axis":[0,0,1],"sharpness":3,"amplitude":[1,1,1]}]})";
+  const CliResult r = weft("render --scene swatch --sgs " + sgs.string() +
+                     " --width 16 --height 12 --sg-grid 2 --tangent-samples 4 --check-stride 4 --out " + exr.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scene"], "swatch");
+  EXPECT_TRUE(j.contains("convergence"));
+  EXPECT_GT(fs::file_size(exr), 100u);
+  EXPECT_TRUE(is_png(temp("swatch.png")));
+  fs::remove(exr);
+  fs::remove(temp("swatch.png"));
+  fs::remove(sgs);
+}
+
+TEST(RenderCli, MapLighting) {
+  const fs::path exr = temp("map.exr");
+  const CliResult r = weft("render --scene swatch --lighting map --map-width 16 --width 12 --height 9 --tangent-samples 4 "
+                     "--no-convergence-check --out " + exr.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["lighting"], "map");
+  EXPECT_TRUE(is_png(temp("map.png")));
+  fs::remove(exr);
+  fs::remove(temp("map.png"));
+}
+
+TEST(RenderCli, BadInputExitsWithTwo) {
+  const std::string out = " --out " + temp("bad.exr").string();
+  EXPECT_EQ(weft("render --scene no_such_scene" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --fabric no_such_fabric" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --env no_such_map" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --lighting photons" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --method sheen" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --width 0" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --sgs /nonexistent.json" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --out image.png").code, 2);
+  EXPECT_EQ(weft("render --scene swatch").code, 2);  // --out is required
+  EXPECT_FALSE(fs::exists(temp("bad.exr")));
+}
+
+TEST(RenderCli, Help) {
+  const CliResult r = weft("render --help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--lighting"), std::string::npos);
+}
