@@ -276,3 +276,28 @@ TEST(LowRank, RankGrowsAsTheTargetTightensOnARealTable) {
   }
   EXPECT_GT(previous, 1);
 }
+
+// A straight thread's samples all have tilt 0, so their W (hence T) are identical and one
+// stored table serves them all; samples of different threads never share.
+TEST(WeightingBake, SamplesWithTheSameTiltShareOneTable) {
+  const Fabric satin = preset("polyester_satin_charmeuse");  // thread 2: offsets 0, 0
+  const ClothBsdf bsdf(satin, std::array<int, 2>{2, 3});
+  const HemisphereNodeGrid g{12};
+  std::vector<glm::dvec3> wo(g.size());
+  for (int i = 0; i < g.size(); ++i) wo[i] = g.node(i);
+  const WeightGrid grid = evaluate_weight_grid(bsdf, 12, wo);
+  EXPECT_EQ(grid.w[2], grid.w[4]);
+  EXPECT_NE(grid.w[0], grid.w[1]);
+
+  BakeSettings s;
+  s.tangent_samples = {2, 3};
+  s.xi_resolution = s.wo_resolution = 12;
+  s.wi_resolution = 12;
+  s.lambda_levels = 2;
+  s.lambda_max = 8.0;
+  const WeightingTables tb = bake_weighting_tables(satin, s);
+  EXPECT_EQ(tb.sample_count(), 5);
+  EXPECT_EQ(tb.distinct_count(), 3);
+  EXPECT_EQ(tb.sample_table, (std::vector<int>{0, 1, 2, 2, 2}));
+  EXPECT_EQ(&tb.table(2, 1), &tb.table(4, 1));
+}

@@ -127,8 +127,8 @@ int run_bake_tables(const BakeTablesArgs& a) {
                 r.bytes ? format_bytes(r.bytes).c_str() : "-", r.seconds);
   std::printf("bake: %.2f s (W grid %.2f s, G·W %.2f s, SVD %.2f s); with selection %.2f s\n", bake_s,
               timings.weights_s, timings.convolve_s, timings.compress_s, total_s);
-  std::printf("tables: %d samples × %d levels, %s, relative Frobenius error mean %.3g max %.3g\n",
-              tables.sample_count(), tables.level_count(), format_bytes(tables.bytes()).c_str(), summary.mean_error,
+  std::printf("tables: %d samples (%d distinct) × %d levels, %s, relative Frobenius error mean %.3g max %.3g\n",
+              tables.sample_count(), tables.distinct_count(), tables.level_count(), format_bytes(tables.bytes()).c_str(), summary.mean_error,
               summary.max_error);
   std::printf("rank histogram:");
   for (const auto& [rank, count] : summary.rank_histogram) std::printf(" %d:%d", rank, count);

@@ -102,15 +102,20 @@ std::vector<float> convolve_weights(const WeightGrid& grid, int t, const SgKerne
   return out;
 }
 
-std::vector<float> convolve_all_weights(const WeightGrid& grid, const SgKernel& kernel) {
+std::vector<float> convolve_all_weights(const WeightGrid& grid, const SgKernel& kernel, std::span<const int> samples) {
   const int wi_count = grid.wi.size();
   if (kernel.cols != wi_count) throw std::invalid_argument("convolve_all_weights: kernel and grid disagree on ω_i");
   const Eigen::Map<const Eigen::MatrixXf> g(kernel.g.data(), kernel.rows, kernel.cols);
   // Stack the samples' W side by side so one large GEMM does every sample.
-  Eigen::MatrixXf w(wi_count, size_t(grid.wo_count) * grid.samples());
-  for (int t = 0; t < grid.samples(); ++t)
-    w.middleCols(size_t(t) * grid.wo_count, grid.wo_count) =
-        Eigen::Map<const Eigen::MatrixXf>(grid.w[t].data(), wi_count, grid.wo_count);
+  std::vector<int> all;
+  if (samples.empty()) {
+    for (int t = 0; t < grid.samples(); ++t) all.push_back(t);
+    samples = all;
+  }
+  Eigen::MatrixXf w(wi_count, size_t(grid.wo_count) * samples.size());
+  for (size_t k = 0; k < samples.size(); ++k)
+    w.middleCols(k * grid.wo_count, grid.wo_count) =
+        Eigen::Map<const Eigen::MatrixXf>(grid.w.at(samples[k]).data(), wi_count, grid.wo_count);
   std::vector<float> out(size_t(kernel.rows) * w.cols());
   Eigen::Map<Eigen::MatrixXf> result(out.data(), kernel.rows, w.cols());
   result.noalias() = g * w;

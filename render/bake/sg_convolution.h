@@ -41,8 +41,9 @@ SgKernel sg_kernel(const HemisphereNodeGrid& wi, std::span<const glm::dvec3> xi,
 
 // T_{t,λ} = G · W_t: (kernel rows × wo_count), column-major.
 std::vector<float> convolve_weights(const WeightGrid& grid, int t, const SgKernel& kernel);
-// All samples at once, G · [W_0 … W_{S−1}]: (kernel rows × wo_count·S), column-major, sample-major
-// column blocks.
-std::vector<float> convolve_all_weights(const WeightGrid& grid, const SgKernel& kernel);
+// Several samples at once, G · [W_{t_0} … W_{t_k}] (all samples when `samples` is empty):
+// (kernel rows × wo_count·k), column-major, one column block per listed sample.
+std::vector<float> convolve_all_weights(const WeightGrid& grid, const SgKernel& kernel,
+                                        std::span<const int> samples = {});
 
 }  // namespace weft

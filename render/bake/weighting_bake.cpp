@@ -69,7 +69,6 @@ WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& 
   const ClothBsdf bsdf(fabric, settings.tangent_samples);
   for (int j = 0; j < 2; ++j)
     for (int k = 0; k < bsdf.sample_count(j); ++k) out.tilts.push_back(bsdf.tilt(j, k));
-  const int samples = bsdf.total_samples();
   const int levels = out.level_count();
 
   std::vector<glm::dvec3> xi(out.xi_grid.size()), wo(out.wo_grid.size());
@@ -84,7 +83,18 @@ WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& 
   });
   time.weights_s = seconds_since(t0);
 
-  out.tables.resize(size_t(samples) * levels);
+  // One table per distinct (thread, tilt).
+  std::vector<int> distinct;  // first sample of each distinct table
+  for (int j = 0, t = 0; j < 2; ++j)
+    for (int k = 0; k < bsdf.sample_count(j); ++k, ++t) {
+      int d = 0;
+      while (d < int(distinct.size()) && !(out.tilts[distinct[d]] == out.tilts[t] && (distinct[d] < bsdf.sample_count(0)) == (j == 0)))
+        ++d;
+      if (d == int(distinct.size())) distinct.push_back(t);
+      out.sample_table.push_back(d);
+    }
+  const int tables = static_cast<int>(distinct.size());
+  out.tables.resize(size_t(tables) * levels);
   LowRankOptions lr;
   lr.relative_error = settings.svd_error;
   lr.max_rank = settings.max_rank;
@@ -93,17 +103,17 @@ WeightingTables bake_weighting_tables(const Fabric& fabric, const BakeSettings& 
     const double lambda = out.lambdas[l];
     auto tc = std::chrono::steady_clock::now();
     const SgKernel kernel = sg_kernel(grid.wi, xi, lambda, quadrature_resolution_for(settings, lambda));
-    const std::vector<float> all = convolve_all_weights(grid, kernel);
+    const std::vector<float> all = convolve_all_weights(grid, kernel, distinct);
     time.convolve_s += seconds_since(tc);
     // The samples' SVDs are independent: one per thread of execution (Eigen then runs each
     // single-threaded, which suits these thin products better than splitting each one).
     tc = std::chrono::steady_clock::now();
 #pragma omp parallel for schedule(dynamic, 1)
-    for (int t = 0; t < samples; ++t) {
+    for (int d = 0; d < tables; ++d) {
       LowRankOptions opt = lr;
-      opt.seed = 1u + unsigned(t * levels + l);
-      LowRankFactors f = truncated_svd(all.data() + t * block, kernel.rows, grid.wo_count, opt);
-      CompressedTable& c = out.tables[size_t(t) * levels + l];
+      opt.seed = 1u + unsigned(d * levels + l);
+      LowRankFactors f = truncated_svd(all.data() + d * block, kernel.rows, grid.wo_count, opt);
+      CompressedTable& c = out.tables[size_t(d) * levels + l];
       c.rank = f.rank;
       c.u = std::move(f.u);
       c.v = std::move(f.v);

@@ -35,11 +35,17 @@ struct WeightingTables {
   std::vector<double> tilts;                 // α of each sample t, thread 0's first (radians)
   HemisphereNodeGrid xi_grid, wo_grid;
   std::vector<double> lambdas;               // sharpness levels, increasing, log-spaced
-  std::vector<CompressedTable> tables;       // [t · lambdas.size() + level]
+  // Samples of one thread with the same tilt have the same T (W depends on a sample only
+  // through its frame), so they share one stored table: a straight thread stores one.
+  std::vector<int> sample_table;             // t → index d of its distinct table
+  std::vector<CompressedTable> tables;       // [d · lambdas.size() + level]
 
   int sample_count() const { return static_cast<int>(tilts.size()); }
+  int distinct_count() const { return lambdas.empty() ? 0 : static_cast<int>(tables.size() / lambdas.size()); }
   int level_count() const { return static_cast<int>(lambdas.size()); }
-  const CompressedTable& table(int t, int level) const { return tables[size_t(t) * lambdas.size() + level]; }
+  const CompressedTable& table(int t, int level) const {
+    return tables[size_t(sample_table[t]) * lambdas.size() + level];
+  }
 
   // Value of one compressed table at grid nodes (no interpolation).
   double node_value(int t, int level, int xi_node, int wo_node) const;
@@ -54,7 +60,7 @@ struct WeightingTables {
 
 namespace weft {
 
-// What a bake produced, for reports: ranks and errors over all (t, λ).
+// What a bake produced, for reports: ranks and errors over all distinct (t, λ) tables.
 struct TableSummary {
   int min_rank = 0, max_rank = 0;
   double mean_rank = 0.0;
