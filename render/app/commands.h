@@ -11,5 +11,6 @@ namespace weft {
 using CommandAction = std::function<int()>;
 
 CommandAction add_eval_command(CLI::App& app);
+CommandAction add_fit_command(CLI::App& app);
 
 }  // namespace weft

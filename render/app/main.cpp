@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     actions.emplace_back(app.get_subcommands({})[before], std::move(action));
   };
   add(weft::add_eval_command);
+  add(weft::add_fit_command);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,62 @@
+#include "lighting/preview_png.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include <png.h>
+
+namespace weft {
+
+namespace {
+unsigned char to_srgb8(double linear) {
+  const double c = std::clamp(linear, 0.0, 1.0);
+  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned char>(std::lround(s * 255.0));
+}
+}  // namespace
+
+void write_preview_png(const std::filesystem::path& path, std::span<const EnvMap> maps, int width) {
+  if (maps.empty() || width < 8) throw EnvMapError(path, "nothing to preview");
+  const int height = width / 2, gap = 4;
+  const int total_width = static_cast<int>(maps.size()) * width + (static_cast<int>(maps.size()) - 1) * gap;
+  const glm::dvec3 mean = mean_radiance(maps[0]);
+  const double key = 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+  const double exposure = key > 0.0 ? 0.25 / key : 1.0;
+
+  std::vector<unsigned char> rgb(static_cast<size_t>(total_width) * height * 3, 96);
+  for (size_t m = 0; m < maps.size(); ++m) {
+    const EnvMap small = resample(maps[m], width, height);
+    const int x0 = static_cast<int>(m) * (width + gap);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 3; ++c)
+          rgb[(static_cast<size_t>(y) * total_width + x0 + x) * 3 + c] =
+              to_srgb8(-std::expm1(-exposure * small.at(x, y)[c]));
+  }
+
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!file) throw EnvMapError(path, "cannot open for writing");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info) {
+    png_destroy_write_struct(&png, nullptr);
+    throw EnvMapError(path, "libpng initialisation failed");
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw EnvMapError(path, "libpng failed while writing");
+  }
+  png_init_io(png, file.get());
+  png_set_IHDR(png, info, total_width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  for (int y = 0; y < height; ++y) png_write_row(png, &rgb[static_cast<size_t>(y) * total_width * 3]);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+}
+
+}  // namespace weft

@@ -1,0 +1,267 @@
+#include "lighting/sg_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "lighting/nnls.h"
+
+namespace weft {
+
+namespace {
+using glm::dvec3;
+constexpr double kPi = std::numbers::pi;
+
+// The map on a grid: texel-centre directions, solid angles, radiance.
+struct Samples {
+  std::vector<dvec3> d;
+  std::vector<double> omega;
+  std::vector<dvec3> L;
+  size_t size() const { return d.size(); }
+};
+
+Samples samples_of(const EnvMap& m) {
+  Samples s;
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      s.d.push_back(m.direction(x, y));
+      s.omega.push_back(m.solid_angle(y));
+      s.L.push_back(dvec3(m.at(x, y)));
+    }
+  return s;
+}
+
+double luminance(const dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+double lobe(const SphericalGaussian& g, const dvec3& d) { return std::exp(g.sharpness * (glm::dot(d, g.axis) - 1.0)); }
+
+// ∫ G(ω)² dω over the sphere for a unit-amplitude lobe: π(1 − e^{−4λ})/λ.
+double lobe_norm2(double lambda) { return kPi * -std::expm1(-4.0 * lambda) / lambda; }
+
+// Radiant power of a lobe, for ordering: μ · 2π(1 − e^{−2λ})/λ.
+double lobe_power(const SphericalGaussian& g) {
+  return luminance(g.amplitude) * 2.0 * kPi * -std::expm1(-2.0 * g.sharpness) / g.sharpness;
+}
+
+double cost(const Samples& s, std::span<const SphericalGaussian> sgs) {
+  double sum = 0.0;
+  for (size_t i = 0; i < s.size(); ++i) {
+    const dvec3 r = evaluate(sgs, s.d[i]) - s.L[i];
+    sum += s.omega[i] * glm::dot(r, r);
+  }
+  return sum;
+}
+
+// Best non-negative amplitudes for fixed axes and sharpnesses (per channel NNLS).
+void solve_amplitudes(const Samples& s, SgLighting& sgs) {
+  const Eigen::Index K = static_cast<Eigen::Index>(sgs.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(K, K);
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(K, 3);
+  Eigen::VectorXd g(K);
+  for (size_t i = 0; i < s.size(); ++i) {
+    for (Eigen::Index k = 0; k < K; ++k) g(k) = lobe(sgs[k], s.d[i]);
+    A.selfadjointView<Eigen::Lower>().rankUpdate(g, s.omega[i]);
+    for (int c = 0; c < 3; ++c) b.col(c) += (s.omega[i] * s.L[i][c]) * g;
+  }
+  A = A.selfadjointView<Eigen::Lower>();
+  for (int c = 0; c < 3; ++c) {
+    const Eigen::VectorXd mu = solve_nnls(A, b.col(c));
+    for (Eigen::Index k = 0; k < K; ++k) sgs[k].amplitude[c] = mu(k);
+  }
+}
+
+// Step 1: greedy matching pursuit on a 32×16 grid. Adds lobes to `sgs` until it holds `count`.
+// Scores and amplitudes are computed on the same grid, so at the NNLS optimum no existing lobe
+// scores again (its residual projection is ≤ 0): no duplicates. Candidate axes: the grid's
+// texel centres plus the brightest texel of the residual on the finer fit grid, so that a small
+// bright source is placed to within a fit-grid texel.
+void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_lambda, double max_lambda,
+                SgLighting& sgs) {
+  const Samples coarse = samples_of(resample(map, 32, 16));
+  const size_t n = coarse.size();
+  // Candidate sharpnesses: doubling from min to what the 32×16 grid resolves, (16/π)² ≈ 26;
+  // LM sharpens further on the fit grid.
+  const double seed_max = std::min(max_lambda, std::pow(16.0 / kPi, 2));
+  std::vector<double> lambdas;
+  for (double l = std::max(min_lambda, 0.25); l <= seed_max * 1.0001; l *= 2.0) lambdas.push_back(l);
+  if (lambdas.empty() || lambdas.back() < seed_max) lambdas.push_back(seed_max);
+
+  // exp(λ(d_a·d_i − 1)) for every candidate axis a (texel centres), texel i and λ.
+  std::vector<std::vector<double>> kernel(lambdas.size(), std::vector<double>(n * n));
+  for (size_t l = 0; l < lambdas.size(); ++l)
+    for (size_t a = 0; a < n; ++a)
+      for (size_t i = 0; i < n; ++i)
+        kernel[l][a * n + i] = std::exp(lambdas[l] * (glm::dot(coarse.d[a], coarse.d[i]) - 1.0));
+
+  // Score of a unit lobe against the residual projections p_c = ⟨R_c, G⟩: the error reduction of
+  // adding it with the best non-negative amplitude, Σ_c max(p_c, 0)² / ‖G‖².
+  auto score = [](const dvec3& p, double lambda) {
+    const dvec3 q = glm::max(p, dvec3(0.0));
+    return glm::dot(q, q) / lobe_norm2(lambda);
+  };
+
+  while (static_cast<int>(sgs.size()) < count) {
+    std::vector<dvec3> residual(n);  // Ω_i (L_i − S(d_i)) on the seed grid
+    for (size_t i = 0; i < n; ++i) residual[i] = coarse.omega[i] * (coarse.L[i] - evaluate(sgs, coarse.d[i]));
+    size_t peak = 0;
+    double peak_value = -1e300;
+    for (size_t i = 0; i < fine.size(); ++i) {
+      const double v = luminance(fine.L[i] - evaluate(sgs, fine.d[i]));
+      if (v > peak_value) peak_value = v, peak = i;
+    }
+
+    SphericalGaussian best{dvec3(0, 0, 1), min_lambda, dvec3(0.0)};
+    double best_score = 0.0;
+    for (size_t l = 0; l < lambdas.size(); ++l) {
+      for (size_t a = 0; a < n; ++a) {
+        dvec3 p(0.0);
+        const double* k = &kernel[l][a * n];
+        for (size_t i = 0; i < n; ++i) p += k[i] * residual[i];
+        const double s = score(p, lambdas[l]);
+        if (s > best_score) best_score = s, best = {coarse.d[a], lambdas[l], glm::max(p, dvec3(0.0)) / lobe_norm2(lambdas[l])};
+      }
+      const SphericalGaussian g{fine.d[peak], lambdas[l], dvec3(1.0)};
+      dvec3 p(0.0);
+      for (size_t i = 0; i < n; ++i) p += lobe(g, coarse.d[i]) * residual[i];
+      const double s = score(p, lambdas[l]);
+      if (s > best_score) best_score = s, best = {g.axis, lambdas[l], glm::max(p, dvec3(0.0)) / lobe_norm2(lambdas[l])};
+    }
+    // With nothing left to explain (e.g. a black map) `best` is an idle lobe, so the count holds.
+    sgs.push_back(best);
+    solve_amplitudes(coarse, sgs);
+  }
+}
+
+// Step 2: projected Levenberg–Marquardt. Parameters per lobe: two tangent-plane rotations of ξ,
+// s = log λ, μ_r, μ_g, μ_b. Residuals r_{i,c} = √Ω_i (Σ_k μ_kc g_k(d_i) − L_c(d_i)).
+int refine_lobes(const Samples& s, double min_lambda, double max_lambda, int max_iterations, SgLighting& sgs) {
+  const Eigen::Index K = static_cast<Eigen::Index>(sgs.size());
+  const Eigen::Index P = 6 * K;
+  const Eigen::Index N = static_cast<Eigen::Index>(s.size());
+  Eigen::MatrixXd J(3 * N, P);
+  Eigen::VectorXd r(3 * N);
+  std::vector<dvec3> t1(K), t2(K);
+  double current = cost(s, sgs);
+  double damping = 1e-3;
+  int iteration = 0;
+  for (; iteration < max_iterations; ++iteration) {
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const dvec3& xi = sgs[k].axis;
+      const dvec3 helper = std::abs(xi.z) < 0.9 ? dvec3(0, 0, 1) : dvec3(1, 0, 0);
+      t1[k] = glm::normalize(glm::cross(xi, helper));
+      t2[k] = glm::cross(xi, t1[k]);
+    }
+    J.setZero();
+    for (Eigen::Index i = 0; i < N; ++i) {
+      const double w = std::sqrt(s.omega[i]);
+      const dvec3& d = s.d[i];
+      const dvec3 model = evaluate(sgs, d);
+      for (int c = 0; c < 3; ++c) r(3 * i + c) = w * (model[c] - s.L[i][c]);
+      for (Eigen::Index k = 0; k < K; ++k) {
+        const SphericalGaussian& g = sgs[k];
+        const double cosine = glm::dot(d, g.axis);
+        const double e = w * std::exp(g.sharpness * (cosine - 1.0));
+        const double da = e * g.sharpness * glm::dot(d, t1[k]);
+        const double db = e * g.sharpness * glm::dot(d, t2[k]);
+        const double ds = e * g.sharpness * (cosine - 1.0);  // ∂/∂ log λ
+        for (int c = 0; c < 3; ++c) {
+          const Eigen::Index row = 3 * i + c;
+          J(row, 6 * k + 0) = g.amplitude[c] * da;
+          J(row, 6 * k + 1) = g.amplitude[c] * db;
+          J(row, 6 * k + 2) = g.amplitude[c] * ds;
+          J(row, 6 * k + 3 + c) = e;
+        }
+      }
+    }
+    Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(P, P);
+    JtJ.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+    JtJ = JtJ.selfadjointView<Eigen::Lower>();
+    const Eigen::VectorXd Jtr = J.transpose() * r;
+    const Eigen::VectorXd diag = JtJ.diagonal().cwiseMax(1e-12 * (JtJ.diagonal().maxCoeff() + 1e-300));
+
+    bool improved = false;
+    for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
+      Eigen::MatrixXd H = JtJ;
+      H.diagonal() += damping * diag;
+      const Eigen::VectorXd delta = H.ldlt().solve(-Jtr);
+      SgLighting trial = sgs;
+      for (Eigen::Index k = 0; k < K; ++k) {
+        SphericalGaussian& g = trial[k];
+        // Rotate the axis within its tangent plane, at most ~30° per step.
+        double a = delta(6 * k), b = delta(6 * k + 1);
+        const double len = std::hypot(a, b);
+        if (len > 0.5) a *= 0.5 / len, b *= 0.5 / len;
+        g.axis = glm::normalize(g.axis + a * t1[k] + b * t2[k]);
+        const double log_lambda = std::log(g.sharpness) + std::clamp(delta(6 * k + 2), -2.0, 2.0);
+        g.sharpness = std::clamp(std::exp(log_lambda), min_lambda, max_lambda);
+        for (int c = 0; c < 3; ++c) g.amplitude[c] = std::max(0.0, g.amplitude[c] + delta(6 * k + 3 + c));
+      }
+      const double trial_cost = cost(s, trial);
+      if (std::isfinite(trial_cost) && trial_cost < current) {
+        const double gain = (current - trial_cost) / current;
+        sgs = std::move(trial);
+        current = trial_cost;
+        damping = std::max(damping / 3.0, 1e-9);
+        improved = true;
+        if (gain < 1e-7) return iteration + 1;
+      } else {
+        damping *= 4.0;
+      }
+    }
+    if (!improved) return iteration + 1;
+  }
+  return iteration;
+}
+}  // namespace
+
+SgLighting fit_sgs(const EnvMap& map, const SgFitOptions& options, std::span<const SphericalGaussian> initial,
+                   SgFitStats* stats) {
+  if (options.count < 1 || options.count > 64)
+    throw std::invalid_argument("SG fit: count must be in [1, 64], got " + std::to_string(options.count));
+  if (options.grid_width < 16 || options.grid_width > 1024 || options.grid_width % 2 != 0)
+    throw std::invalid_argument("SG fit: grid width must be even and in [16, 1024], got " +
+                                std::to_string(options.grid_width));
+  if (!(options.min_sharpness > 0.0) || !(options.max_sharpness > options.min_sharpness) ||
+      !std::isfinite(options.max_sharpness))
+    throw std::invalid_argument("SG fit: need 0 < min_sharpness < max_sharpness");
+  if (options.max_iterations < 0) throw std::invalid_argument("SG fit: max_iterations must be >= 0");
+  if (map.width < 2 || map.height < 1) throw std::invalid_argument("SG fit: empty map");
+
+  const int grid_height = options.grid_width / 2;
+  // A lobe narrower than a fit-grid texel (σ = 1/√λ < π/H) cannot be resolved by the objective.
+  const double resolvable = std::pow(grid_height / kPi, 2);
+  const double max_lambda = std::max(options.min_sharpness * 2.0, std::min(options.max_sharpness, resolvable));
+  const double min_lambda = options.min_sharpness;
+  const Samples fine = samples_of(resample(map, options.grid_width, grid_height));
+
+  SgLighting sgs;
+  for (const SphericalGaussian& g0 : initial) {
+    SphericalGaussian g = g0;
+    const double len = glm::length(g.axis);
+    if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(g.sharpness)) continue;  // unusable lobe
+    g.axis /= len;
+    g.sharpness = std::clamp(g.sharpness, min_lambda, max_lambda);
+    for (int c = 0; c < 3; ++c) g.amplitude[c] = std::isfinite(g.amplitude[c]) ? std::max(0.0, g.amplitude[c]) : 0.0;
+    sgs.push_back(g);
+  }
+  if (static_cast<int>(sgs.size()) > options.count) {
+    std::stable_sort(sgs.begin(), sgs.end(), [](auto& a, auto& b) { return lobe_power(a) > lobe_power(b); });
+    sgs.resize(options.count);
+  }
+  if (!sgs.empty()) solve_amplitudes(fine, sgs);
+  seed_lobes(map, fine, options.count, min_lambda, max_lambda, sgs);
+  solve_amplitudes(fine, sgs);
+
+  const double initial_cost = cost(fine, sgs);
+  const int iterations = refine_lobes(fine, min_lambda, max_lambda, options.max_iterations, sgs);
+  solve_amplitudes(fine, sgs);
+  std::stable_sort(sgs.begin(), sgs.end(), [](auto& a, auto& b) { return lobe_power(a) > lobe_power(b); });
+  if (stats) *stats = {iterations, initial_cost, cost(fine, sgs), max_lambda};
+  return sgs;
+}
+
+}  // namespace weft
