@@ -22,7 +22,7 @@ struct FitArgs {
   bool json = false;
   std::string preview;
   std::string out;
-  std::string nonfinite = "fail";
+  std::string nonfinite = "clamp";
   int grid = 128;
   int iterations = 40;
   std::string warm;
@@ -81,7 +81,9 @@ int run_fit(const FitArgs& a) {
   if (a.json) {
     nlohmann::ordered_json out;
     out["sgs"] = sg_set_to_json(sgs)["sgs"];
-    out["error"] = {{"radiance_rmse", error.radiance_rmse}, {"irradiance_rmse", error.irradiance_rmse}};
+    out["error"] = {{"radiance_rmse", error.radiance_rmse},
+                    {"irradiance_rmse", error.irradiance_rmse},
+                    {"radiance_rmse_64x32", error.radiance_rmse_coarse}};
     out["seconds"] = seconds;
     out["map"] = {{"path", a.map}, {"width", map.width}, {"height", map.height}};
     out["repaired"] = {{"nan", repairs.nan}, {"infinite", repairs.infinite}, {"negative", repairs.negative}};
@@ -96,8 +98,8 @@ int run_fit(const FitArgs& a) {
       std::printf("%3zu  %8.4f  %8.4f  %8.4f  %9.3f  %9.4f  %9.4f  %9.4f\n", k + 1, g.axis.x, g.axis.y, g.axis.z,
                   g.sharpness, g.amplitude.r, g.amplitude.g, g.amplitude.b);
     }
-    std::printf("error: radiance %.2f %%, irradiance %.2f %% (relative RMSE)\n", 100.0 * error.radiance_rmse,
-                100.0 * error.irradiance_rmse);
+    std::printf("error (relative RMSE): radiance %.2f %% (%.2f %% at 64×32), irradiance %.2f %%\n",
+                100.0 * error.radiance_rmse, 100.0 * error.radiance_rmse_coarse, 100.0 * error.irradiance_rmse);
     if (!a.preview.empty()) std::printf("preview (left: map, right: fit): %s\n", a.preview.c_str());
     if (!a.out.empty()) std::printf("saved: %s\n", a.out.c_str());
   }

@@ -81,7 +81,8 @@ struct EnvMapWriteOptions {
 void write_env_map(const std::filesystem::path& path, const EnvMap& map, const EnvMapWriteOptions& options = {});
 
 // Area-weighted resampling to width × height: every source texel goes to the target texel that
-// contains its centre, weighted by its solid angle (so radiant power is kept); target texels no
+// contains its centre, weighted by its solid angle (radiant power is kept exactly when the sizes
+// divide, to within the row-boundary misfit otherwise; a constant map stays constant); target texels no
 // source centre falls in (upsampling) take the bilinear lookup at their centre.
 EnvMap resample(const EnvMap& map, int width, int height);
 

@@ -57,8 +57,7 @@ SgFitError measure_fit_error(const EnvMap& map, std::span<const SphericalGaussia
   const EnvMap reference = map.width > 1024 ? resample(map, 1024, 512) : map;
   const EnvMap fitted = render_sgs(sgs, reference.width, reference.height);
 
-  SgFitError out;
-  {
+  auto radiance_rmse = [](const EnvMap& reference, const EnvMap& fitted) {
     std::vector<dvec3> a, b;
     std::vector<double> w;
     for (int y = 0; y < reference.height; ++y)
@@ -67,8 +66,11 @@ SgFitError measure_fit_error(const EnvMap& map, std::span<const SphericalGaussia
         b.emplace_back(fitted.at(x, y));
         w.push_back(reference.solid_angle(y));
       }
-    out.radiance_rmse = relative_rmse(a, b, w);
-  }
+    return relative_rmse(a, b, w);
+  };
+  SgFitError out;
+  out.radiance_rmse = radiance_rmse(reference, fitted);
+  out.radiance_rmse_coarse = radiance_rmse(resample(reference, 64, 32), resample(fitted, 64, 32));
   {
     const int gw = options.irradiance_grid_width, gh = gw / 2;
     const auto normals = fibonacci_sphere(options.normals);

@@ -3,6 +3,9 @@
 //  radiance:   relative RMSE of the radiance over the sphere, solid-angle weighted, all three
 //              channels: sqrt(∫‖L−S‖²dω / 3·4π) / (∫ΣL dω / 3·4π), at the map's resolution
 //              (maps wider than 1024 are first resampled to 1024×512);
+//  radiance_coarse: the same after both maps are area-averaged to 64×32 (5.6° texels): the
+//              scale a few SGs can hold; the full-resolution number is dominated by sources
+//              smaller than any lobe (a sun of 30 000 over a few texels);
 //  irradiance: relative RMSE of the diffuse irradiance E(n) = ∫ L(ω) max(n·ω, 0) dω over a
 //              Fibonacci set of normals: sqrt(mean_n ‖E−E_S‖²/3) / mean_n(ΣE/3).
 // The SGs are rendered into a map of the same size (texel-centre values) and both maps go
@@ -18,6 +21,7 @@ namespace weft {
 
 struct SgFitError {
   double radiance_rmse = 0.0;
+  double radiance_rmse_coarse = 0.0;
   double irradiance_rmse = 0.0;
 };
 

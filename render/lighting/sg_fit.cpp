@@ -47,6 +47,26 @@ double lobe_power(const SphericalGaussian& g) {
   return luminance(g.amplitude) * 2.0 * kPi * -std::expm1(-2.0 * g.sharpness) / g.sharpness;
 }
 
+// Power-keeping change of sharpness: μ ∫G dω stays, ∫G dω = 2π(1 − e^{−2λ})/λ.
+SphericalGaussian with_sharpness(SphericalGaussian g, double lambda) {
+  const double before = -std::expm1(-2.0 * g.sharpness) / g.sharpness;
+  const double after = -std::expm1(-2.0 * lambda) / lambda;
+  g.amplitude *= before / after;
+  g.sharpness = lambda;
+  return g;
+}
+// A lobe convolved with a unit SG kernel of sharpness λ_b is close to a lobe of sharpness
+// λλ_b/(λ + λ_b) with the same power (exact in the narrow-lobe limit); and back.
+SphericalGaussian blurred_lobe(const SphericalGaussian& g, double lambda_b) {
+  return with_sharpness(g, g.sharpness * lambda_b / (g.sharpness + lambda_b));
+}
+SphericalGaussian sharpened_lobe(const SphericalGaussian& g, double lambda_b, double max_lambda) {
+  const double lambda = g.sharpness < lambda_b * max_lambda / (lambda_b + max_lambda)
+                            ? g.sharpness * lambda_b / (lambda_b - g.sharpness)
+                            : max_lambda;
+  return with_sharpness(g, lambda);
+}
+
 double cost(const Samples& s, std::span<const SphericalGaussian> sgs) {
   double sum = 0.0;
   for (size_t i = 0; i < s.size(); ++i) {
@@ -74,6 +94,45 @@ void solve_amplitudes(const Samples& s, SgLighting& sgs) {
   }
 }
 
+// The fit grid seen through the narrowest lobe the fit may use: each texel's power Ω_j L_j is
+// spread over its neighbours with a unit SG kernel of sharpness λ_b, normalised per source texel
+// so that power is kept exactly. Without this, a source smaller than a lobe (a sun, a spot lamp)
+// would be fitted in least squares by a lobe with twice its power (⟨δ,G⟩/⟨G,G⟩·∫G = 2 for
+// a Gaussian G); blurred, it is itself a lobe of sharpness λ_b and is fitted with its power.
+EnvMap blur_to_lobe(const EnvMap& m, double lambda_b) {
+  const double reach = 3.5 / std::sqrt(lambda_b);  // radians; the kernel is e^{-6} there
+  const int dy = static_cast<int>(std::ceil(reach / (kPi / m.height))) + 1;
+  std::vector<dvec3> power(m.texels.size(), dvec3(0.0));
+  std::vector<std::pair<size_t, double>> weights;
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      const dvec3 dj = m.direction(x, y);
+      weights.clear();
+      double z = 0.0;
+      for (int ty = std::max(0, y - dy); ty <= std::min(m.height - 1, y + dy); ++ty) {
+        const double elevation = kPi * (0.5 - (ty + 0.5) / m.height);
+        const double cos_e = std::max(std::cos(elevation), 1e-3);
+        const int dx = static_cast<int>(std::ceil(reach / cos_e / (2.0 * kPi / m.width))) + 1;
+        const int x_lo = 2 * dx + 1 >= m.width ? 0 : x - dx, x_hi = 2 * dx + 1 >= m.width ? m.width - 1 : x + dx;
+        for (int tx = x_lo; tx <= x_hi; ++tx) {
+          const int wx = ((tx % m.width) + m.width) % m.width;
+          const double k = m.solid_angle(ty) * std::exp(lambda_b * (glm::dot(m.direction(wx, ty), dj) - 1.0));
+          weights.emplace_back(static_cast<size_t>(ty) * m.width + wx, k);
+          z += k;
+        }
+      }
+      const dvec3 p = m.solid_angle(y) * dvec3(m.at(x, y)) / z;
+      for (const auto& [t, k] : weights) power[t] += k * p;
+    }
+  EnvMap out(m.width, m.height);
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      const size_t t = static_cast<size_t>(y) * m.width + x;
+      out.texels[t] = glm::vec3(power[t] / m.solid_angle(y));
+    }
+  return out;
+}
+
 // Step 1: greedy matching pursuit on a 32×16 grid. Adds lobes to `sgs` until it holds `count`.
 // Scores and amplitudes are computed on the same grid, so at the NNLS optimum no existing lobe
 // scores again (its residual projection is ≤ 0): no duplicates. Candidate axes: the grid's
@@ -81,6 +140,7 @@ void solve_amplitudes(const Samples& s, SgLighting& sgs) {
 // bright source is placed to within a fit-grid texel.
 void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_lambda, double max_lambda,
                 SgLighting& sgs) {
+  if (static_cast<int>(sgs.size()) >= count) return;  // a full warm start
   const Samples coarse = samples_of(resample(map, 32, 16));
   const size_t n = coarse.size();
   // Candidate sharpnesses: doubling from min to what the 32×16 grid resolves, (16/π)² ≈ 26;
@@ -138,12 +198,16 @@ void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_la
 
 // Step 2: projected Levenberg–Marquardt. Parameters per lobe: two tangent-plane rotations of ξ,
 // s = log λ, μ_r, μ_g, μ_b. Residuals r_{i,c} = √Ω_i (Σ_k μ_kc g_k(d_i) − L_c(d_i)).
+// The channels share the geometry, so JᵀJ is assembled from the N × 4K matrix
+// X_i = √Ω_i [∂g_k/∂(a, b, s) …, g_k …] (one row per texel, not per texel and channel):
+//   (JᵀJ)_{geo k, geo l} = (μ_k·μ_l) (XᵀX)_{kl},  (JᵀJ)_{geo k, μ_lc} = μ_kc (XᵀX)_{k,l},
+//   (JᵀJ)_{μ_kc, μ_lc'} = δ_cc' (XᵀX)_{kl}  — seven times less work than forming J.
 int refine_lobes(const Samples& s, double min_lambda, double max_lambda, int max_iterations, SgLighting& sgs) {
   const Eigen::Index K = static_cast<Eigen::Index>(sgs.size());
   const Eigen::Index P = 6 * K;
   const Eigen::Index N = static_cast<Eigen::Index>(s.size());
-  Eigen::MatrixXd J(3 * N, P);
-  Eigen::VectorXd r(3 * N);
+  Eigen::MatrixXd X(N, 4 * K);
+  Eigen::MatrixXd R(N, 3);
   std::vector<dvec3> t1(K), t2(K);
   double current = cost(s, sgs);
   double damping = 1e-3;
@@ -155,32 +219,48 @@ int refine_lobes(const Samples& s, double min_lambda, double max_lambda, int max
       t1[k] = glm::normalize(glm::cross(xi, helper));
       t2[k] = glm::cross(xi, t1[k]);
     }
-    J.setZero();
     for (Eigen::Index i = 0; i < N; ++i) {
       const double w = std::sqrt(s.omega[i]);
       const dvec3& d = s.d[i];
-      const dvec3 model = evaluate(sgs, d);
-      for (int c = 0; c < 3; ++c) r(3 * i + c) = w * (model[c] - s.L[i][c]);
+      dvec3 model(0.0);
       for (Eigen::Index k = 0; k < K; ++k) {
         const SphericalGaussian& g = sgs[k];
         const double cosine = glm::dot(d, g.axis);
-        const double e = w * std::exp(g.sharpness * (cosine - 1.0));
-        const double da = e * g.sharpness * glm::dot(d, t1[k]);
-        const double db = e * g.sharpness * glm::dot(d, t2[k]);
-        const double ds = e * g.sharpness * (cosine - 1.0);  // ∂/∂ log λ
-        for (int c = 0; c < 3; ++c) {
-          const Eigen::Index row = 3 * i + c;
-          J(row, 6 * k + 0) = g.amplitude[c] * da;
-          J(row, 6 * k + 1) = g.amplitude[c] * db;
-          J(row, 6 * k + 2) = g.amplitude[c] * ds;
-          J(row, 6 * k + 3 + c) = e;
+        const double e = std::exp(g.sharpness * (cosine - 1.0));
+        model += g.amplitude * e;
+        const double we = w * e;
+        X(i, 3 * k + 0) = we * g.sharpness * glm::dot(d, t1[k]);
+        X(i, 3 * k + 1) = we * g.sharpness * glm::dot(d, t2[k]);
+        X(i, 3 * k + 2) = we * g.sharpness * (cosine - 1.0);  // ∂/∂ log λ
+        X(i, 3 * K + k) = we;
+      }
+      for (int c = 0; c < 3; ++c) R(i, c) = w * (model[c] - s.L[i][c]);
+    }
+    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(4 * K, 4 * K);
+    G.selfadjointView<Eigen::Lower>().rankUpdate(X.transpose());
+    G = G.selfadjointView<Eigen::Lower>();
+    const Eigen::MatrixXd XtR = X.transpose() * R;
+
+    Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(P, P);
+    Eigen::VectorXd Jtr = Eigen::VectorXd::Zero(P);
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const dvec3& mk = sgs[k].amplitude;
+      for (int p = 0; p < 3; ++p) {
+        for (int c = 0; c < 3; ++c) Jtr(6 * k + p) += mk[c] * XtR(3 * k + p, c);
+        for (Eigen::Index l = 0; l < K; ++l) {
+          const dvec3& ml = sgs[l].amplitude;
+          for (int q = 0; q < 3; ++q) JtJ(6 * k + p, 6 * l + q) = glm::dot(mk, ml) * G(3 * k + p, 3 * l + q);
+          for (int c = 0; c < 3; ++c) {
+            JtJ(6 * k + p, 6 * l + 3 + c) = mk[c] * G(3 * k + p, 3 * K + l);
+            JtJ(6 * l + 3 + c, 6 * k + p) = JtJ(6 * k + p, 6 * l + 3 + c);
+          }
         }
       }
+      for (int c = 0; c < 3; ++c) {
+        Jtr(6 * k + 3 + c) = XtR(3 * K + k, c);
+        for (Eigen::Index l = 0; l < K; ++l) JtJ(6 * k + 3 + c, 6 * l + 3 + c) = G(3 * K + k, 3 * K + l);
+      }
     }
-    Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(P, P);
-    JtJ.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
-    JtJ = JtJ.selfadjointView<Eigen::Lower>();
-    const Eigen::VectorXd Jtr = J.transpose() * r;
     const Eigen::VectorXd diag = JtJ.diagonal().cwiseMax(1e-12 * (JtJ.diagonal().maxCoeff() + 1e-300));
 
     bool improved = false;
@@ -232,11 +312,12 @@ SgLighting fit_sgs(const EnvMap& map, const SgFitOptions& options, std::span<con
   if (map.width < 2 || map.height < 1) throw std::invalid_argument("SG fit: empty map");
 
   const int grid_height = options.grid_width / 2;
-  // A lobe narrower than a fit-grid texel (σ = 1/√λ < π/H) cannot be resolved by the objective.
-  const double resolvable = std::pow(grid_height / kPi, 2);
-  const double max_lambda = std::max(options.min_sharpness * 2.0, std::min(options.max_sharpness, resolvable));
-  const double min_lambda = options.min_sharpness;
-  const Samples fine = samples_of(resample(map, options.grid_width, grid_height));
+  // The narrowest lobe the fit grid resolves (σ = 1/√λ one texel, π/H) is also the blur of the
+  // fit grid; fitted lobes are then sharpened back (below) up to max_sharpness.
+  const double lambda_b = std::pow(grid_height / kPi, 2);
+  const double max_lambda = lambda_b;
+  const double min_lambda = std::min(options.min_sharpness, lambda_b / 4.0);
+  const Samples fine = samples_of(blur_to_lobe(resample(map, options.grid_width, grid_height), lambda_b));
 
   SgLighting sgs;
   for (const SphericalGaussian& g0 : initial) {
@@ -244,6 +325,7 @@ SgLighting fit_sgs(const EnvMap& map, const SgFitOptions& options, std::span<con
     const double len = glm::length(g.axis);
     if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(g.sharpness)) continue;  // unusable lobe
     g.axis /= len;
+    g = blurred_lobe(g, lambda_b);
     g.sharpness = std::clamp(g.sharpness, min_lambda, max_lambda);
     for (int c = 0; c < 3; ++c) g.amplitude[c] = std::isfinite(g.amplitude[c]) ? std::max(0.0, g.amplitude[c]) : 0.0;
     sgs.push_back(g);
@@ -259,8 +341,10 @@ SgLighting fit_sgs(const EnvMap& map, const SgFitOptions& options, std::span<con
   const double initial_cost = cost(fine, sgs);
   const int iterations = refine_lobes(fine, min_lambda, max_lambda, options.max_iterations, sgs);
   solve_amplitudes(fine, sgs);
+  const double final_cost = cost(fine, sgs);
+  for (auto& g : sgs) g = sharpened_lobe(g, lambda_b, options.max_sharpness);
   std::stable_sort(sgs.begin(), sgs.end(), [](auto& a, auto& b) { return lobe_power(a) > lobe_power(b); });
-  if (stats) *stats = {iterations, initial_cost, cost(fine, sgs), max_lambda};
+  if (stats) *stats = {iterations, initial_cost, final_cost, options.max_sharpness};
   return sgs;
 }
 

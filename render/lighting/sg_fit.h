@@ -12,6 +12,9 @@
 //  2. Levenberg–Marquardt on all parameters (axis by tangent-plane steps, log λ, μ), with
 //     bounds by projection;
 //  3. a final NNLS of the amplitudes for the refined lobes.
+// The fit grid is first blurred with the narrowest lobe it resolves (λ_b = (H/π)², σ = one
+// texel), power-preserving, so that sources smaller than a lobe keep their power; fitted lobes
+// are then sharpened back (λ → λλ_b/(λ_b − λ), power kept), up to max_sharpness.
 // A warm start (previous frame's SGs) skips most of step 1 and needs few LM iterations.
 #include <span>
 
@@ -24,7 +27,7 @@ struct SgFitOptions {
   int count = 10;                // K
   int grid_width = 128;          // fit grid width (height = width / 2)
   double min_sharpness = 0.1;    // λ bounds; an SG with λ = 0.1 is nearly a constant
-  double max_sharpness = 400.0;  // σ ≈ 1/√λ ≈ 2.9°; also capped at what the fit grid resolves
+  double max_sharpness = 1000.0; // σ ≈ 1/√λ ≈ 1.8°: where sources smaller than that end up
   int max_iterations = 40;       // LM iterations (a warm start needs fewer)
 };
 
@@ -32,7 +35,7 @@ struct SgFitStats {
   int iterations = 0;       // LM iterations taken
   double initial_cost = 0;  // objective after seeding (or of the warm start)
   double final_cost = 0;    // objective at the end
-  double max_sharpness = 0; // the bound actually used
+  double max_sharpness = 0; // the output bound used
 };
 
 // Fits options.count SGs to `map`. `initial`, when given, is the starting set (e.g. the last
