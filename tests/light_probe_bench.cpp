@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   for (const char* name : {"studio", "city", "courtyard", "interior"}) {
     const EnvMap truth = load_env_map(std::string(WEFT_SOURCE_ASSETS) + "/envmaps/" + name + ".exr", NonFinitePolicy::clamp);
     MockCameraOptions mock;
-    mock.calibration.radiance_scale = 100.0;
+    mock.calibration.radiance_scale = 10.0;
     MockProbeSource source(truth, mock);
     LightProbeConfig config;
     config.ball = mock.ball;

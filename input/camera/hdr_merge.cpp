@@ -18,11 +18,9 @@ glm::vec3 HdrImage::sample(double x, double y) const {
 
 namespace {
 
-// Hat weight: trust mid-range codes most, none at the ends where noise or clipping dominate.
-float hat(uint8_t z) {
-  if (z <= 2 || z >= 253) return 0.0f;
-  return static_cast<float>(std::min<int>(z, 255 - z));
-}
+// A code this high may be clipped (the ISP's curve and noise blur the top): such samples are
+// left out and the shorter frames measure the pixel.
+constexpr uint8_t kClipped = 250;
 
 }  // namespace
 
@@ -61,13 +59,16 @@ HdrImage merge_bracket(std::span<const ProbeFrame> bracket, const CameraCalibrat
   const double r2 = ball.radius * ball.radius;
   for (int y = y0; y < std::min(y1, h); ++y)
     for (int x = x0; x < std::min(x1, w); ++x) {
+      // Σ sensor values / Σ exposures over the unclipped frames: each frame weighted by its
+      // exposure, which is what shot noise makes optimal. Dark codes are kept (even 0): leaving
+      // out the samples that noise pushed low would bias dim pixels up.
       glm::vec3 sum(0), weight(0);
       for (size_t i = 0; i < bracket.size(); ++i) {
         const uint8_t* p = bracket[i].pixel(x, y);
         for (int c = 0; c < 3; ++c) {
-          const float wgt = hat(p[c]);
-          sum[c] += wgt * static_cast<float>(calibration.response.decode(p[c]) * scale[i]);
-          weight[c] += wgt;
+          if (p[c] >= kClipped) continue;
+          sum[c] += static_cast<float>(calibration.response.decode(p[c]));
+          weight[c] += static_cast<float>(1.0 / scale[i]);
         }
       }
       const uint8_t* ps = bracket[shortest].pixel(x, y);
@@ -75,7 +76,7 @@ HdrImage merge_bracket(std::span<const ProbeFrame> bracket, const CameraCalibrat
       glm::vec3 L;
       for (int c = 0; c < 3; ++c) {
         if (weight[c] > 0) L[c] = sum[c] / weight[c];
-        else if (ps[c] >= 253) L[c] = static_cast<float>(calibration.response.decode(ps[c]) * scale[shortest]);  // a lower bound
+        else if (ps[c] >= kClipped) L[c] = static_cast<float>(calibration.response.decode(ps[c]) * scale[shortest]);  // a lower bound
         else L[c] = static_cast<float>(calibration.response.decode(pl[c]) * scale[longest]);
       }
       image.radiance[static_cast<size_t>(y) * w + x] = L;
@@ -83,16 +84,14 @@ HdrImage merge_bracket(std::span<const ProbeFrame> bracket, const CameraCalibrat
       if (dx * dx + dy * dy > r2) continue;
       ++on_ball;
       if (pl[0] <= 2 && pl[1] <= 2 && pl[2] <= 2) ++black;
-      if (ps[0] >= 253 || ps[1] >= 253 || ps[2] >= 253) ++saturated;
+      if (ps[0] >= kClipped || ps[1] >= kClipped || ps[2] >= kClipped) ++saturated;
       peaks.push_back(static_cast<float>(calibration.response.decode(std::max({ps[0], ps[1], ps[2]}))));
     }
   BracketStats s;
   if (on_ball > 0) {
     s.black_fraction = static_cast<double>(black) / on_ball;
     s.saturated_fraction = static_cast<double>(saturated) / on_ball;
-    auto nth = peaks.begin() + static_cast<long>(0.999 * (peaks.size() - 1));
-    std::nth_element(peaks.begin(), nth, peaks.end());
-    s.peak_sensor = *nth;
+    s.peak_sensor = *std::max_element(peaks.begin(), peaks.end());
   }
   if (stats) *stats = s;
   if (s.black_fraction > 0.98)

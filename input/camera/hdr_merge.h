@@ -1,8 +1,9 @@
 #pragma once
 // Bracketed 8-bit frames -> one linear HDR radiance image (the scene radiance the ball
 // reflects, in the units of the SG amplitudes), with the camera's calibration
-// (camera_response.h): L = f⁻¹(z) / (ρ·k·t·g), averaged over the bracket with a hat weight
-// that ignores codes near 0 (noise) and near 255 (clipping).
+// (camera_response.h): L = Σ_i f⁻¹(z_i) / (ρ·k·Σ_i t_i·g_i) over the frames where the pixel is
+// not clipped (z < 250): the exposure-weighted mean, optimal under shot noise and unbiased for
+// dim pixels (no low-code cut-off).
 #include <span>
 #include <vector>
 
@@ -27,8 +28,8 @@ struct HdrImage {
 // What the merge saw on the ball, to reject unusable brackets and to steer the exposure.
 struct BracketStats {
   double black_fraction = 0;      // ball pixels dark (code ≤ 2 in every channel) in the longest frame
-  double saturated_fraction = 0;  // ball pixels clipped (code ≥ 253 in any channel) in the shortest
-  double peak_sensor = 0;         // 99.9th percentile of the linear sensor value in the shortest frame
+  double saturated_fraction = 0;  // ball pixels clipped (code ≥ 250 in any channel) in the shortest
+  double peak_sensor = 0;         // brightest linear sensor value on the ball in the shortest frame
 };
 
 // Merges a bracket (any order, at least one frame, all the same size). Only the ball's

@@ -2,6 +2,7 @@
 
 #include <sys/mman.h>
 
+#include <cstdlib>
 #include <atomic>
 #include <cerrno>
 #include <cmath>
@@ -24,10 +25,13 @@ namespace lc = libcamera;
 
 namespace {
 
-// libcamera's own INFO chatter would drown the kiosk's log; keep its warnings and errors.
+// libcamera's own INFO/WARN chatter (e.g. "No IPA found") would drown the kiosk's log; keep its errors.
 void quiet_libcamera() {
   static std::once_flag once;
-  std::call_once(once, [] { lc::logSetLevel("*", "WARN"); });
+  std::call_once(once, [] {
+    setenv("LIBCAMERA_LOG_LEVELS", "*:ERROR", 0);  // an operator's own setting wins
+    lc::logSetLevel("*", "ERROR");
+  });
 }
 
 // Byte offsets of R, G, B within one pixel, and bytes per pixel, for the formats we accept

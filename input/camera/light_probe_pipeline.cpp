@@ -68,8 +68,9 @@ void LightProbeUpdater::fail(const ProbeError& error) {
   open_ = false;
   backoff_s_ = failing_ ? std::min(backoff_s_ * 2.0, config_.retry_max_s) : config_.retry_initial_s;
   retry_at_ = now_() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(backoff_s_));
-  // One line when the probe enters a failure or the failure changes; silence while it persists.
-  if (!failing_ || error.failure() != failure_kind_) {
+  // One line when the probe enters a failure; silence while it persists (an unplugged camera
+  // then reads as absent on every retry: still the same outage).
+  if (!failing_) {
     std::ostringstream line;
     line << to_string(error.failure()) << ": " << error.what() << "; keeping the "
          << (fitted_ ? "last good camera lighting" : "stored lighting") << ", retrying with backoff (first in "
@@ -110,9 +111,10 @@ ProbeStepResult LightProbeUpdater::step() {
     }
     t.merge_ms = ms_since(t1);
     if (config_.auto_exposure) {
-      // Put the 99.9th-percentile ball pixel of the shortest frame at 80 % of full scale; a clipped
-      // one is only a lower bound, so step down a whole spacing then.
-      if (stats.saturated_fraction > 0.001) adjust_exposure(std::exp2(-config_.stop_spacing));
+      // Put the brightest ball pixel of the shortest frame at 80 % of full scale (a small bright
+      // lamp or the sun carries much of the irradiance: it must not clip); a clipped one is only
+      // a lower bound, so step down a whole spacing then.
+      if (stats.saturated_fraction > 0) adjust_exposure(std::exp2(-config_.stop_spacing));
       else if (stats.peak_sensor > 0) adjust_exposure(std::clamp(0.8 / stats.peak_sensor, 0.125, 8.0));
     }
 

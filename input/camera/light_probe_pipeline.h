@@ -38,7 +38,7 @@ namespace weft {
 struct LightProbeConfig {
   MirrorBall ball{200.0, 200.0, 190.0};
   CameraCalibration calibration;
-  int stops = 3;               // frames per bracket
+  int stops = 4;               // frames per bracket (4 × 3 stops: a sun and a dim room in one bracket)
   double stop_spacing = 3.0;   // stops (factors of 2 in exposure) between them
   ProbeExposure shortest{1.0 / 1000.0, 1.0};  // start of the bracket; auto exposure moves it
   bool auto_exposure = true;   // keep the brightest ball pixel just below clipping

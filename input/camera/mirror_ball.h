@@ -23,7 +23,7 @@ struct MirrorBall {
   double centre_x = 0.0;  // pixels, in image coordinates (pixel (i, j) spans [i, i+1) × [j, j+1))
   double centre_y = 0.0;
   double radius = 0.0;    // pixels
-  double max_normal_angle_deg = 80.0;  // mask: normals beyond this from V (reflections > 2× that)
+  double max_normal_angle_deg = 85.0;  // mask: normals beyond this from V (reflections > 2× that)
 
   static constexpr glm::dvec3 view{0.0, -1.0, 0.0};  // V: ball -> camera
 

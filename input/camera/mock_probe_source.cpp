@@ -10,20 +10,46 @@ MockProbeSource::MockProbeSource(const EnvMap& scene, MockCameraOptions options)
   render_ball(scene);
 }
 
-void MockProbeSource::render_ball(const EnvMap& scene) {
-  const int w = options_.width, h = options_.height, n = options_.supersample;
+void MockProbeSource::render_ball(const EnvMap& scene_in) {
+  // A camera pixel integrates the light over its footprint, so the ball is rendered by
+  // splatting every texel's power (radiance × solid angle) into the pixels around where the
+  // ball reflects it, divided by the solid angle a pixel sees there: in the orthographic view a
+  // pixel of area 1/r² (ball radii) sees normals over 1/(r²·N·V) sr, and as the reflection
+  // doubles the angle from V, dΩ_R = 4·(N·V)·dΩ_N: every pixel sees 4/r² sr.
+  // Power is kept exactly, however small the sources (a sun of a few texels).
+  // At 2048×1024 a pixel at the ball's centre gathers about a dozen texels, so the splat is even.
+  const EnvMap scene = scene_in.width >= 2048 ? scene_in : resample(scene_in, 2048, 1024);
+  const int w = options_.width, h = options_.height;
+  const MirrorBall& ball = options_.ball;
+  const double rho = options_.calibration.ball_reflectance;
+  std::vector<glm::dvec3> power(static_cast<size_t>(w) * h, glm::dvec3(0));
+  for (int ty = 0; ty < scene.height; ++ty) {
+    const double omega = scene.solid_angle(ty);
+    for (int tx = 0; tx < scene.width; ++tx) {
+      const glm::dvec3 h_vec = scene.direction(tx, ty) + MirrorBall::view;
+      const double len = glm::length(h_vec);
+      if (len < 1e-9) continue;
+      const glm::dvec3 n = h_vec / len;
+      const double fx = ball.centre_x + ball.radius * n.x - 0.5, fy = ball.centre_y - ball.radius * n.z - 0.5;
+      const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+      const double ax = fx - x0, ay = fy - y0;
+      const glm::dvec3 p = rho * omega * glm::dvec3(scene.at(tx, ty));
+      const double wts[4] = {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay};
+      for (int k = 0; k < 4; ++k) {
+        const int x = std::clamp(x0 + (k & 1), 0, w - 1), y = std::clamp(y0 + (k >> 1), 0, h - 1);
+        power[static_cast<size_t>(y) * w + x] += wts[k] * p;
+      }
+    }
+  }
   std::vector<glm::vec3> radiance(static_cast<size_t>(w) * h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      glm::dvec3 sum(0);
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const auto r = options_.ball.reflected_direction(x + (i + 0.5) / n, y + (j + 0.5) / n);
-          // The ball's surface reflects ρ of the scene; off the ball the camera sees the room
-          // behind, taken as a dim uniform background.
-          sum += r ? options_.calibration.ball_reflectance * scene.lookup(*r) : glm::dvec3(options_.background_radiance);
-        }
-      radiance[static_cast<size_t>(y) * w + x] = glm::vec3(sum / static_cast<double>(n * n));
+      const double a = (x + 0.5 - ball.centre_x) / ball.radius, b = (y + 0.5 - ball.centre_y) / ball.radius;
+      const double c2 = 1.0 - a * a - b * b;
+      const size_t i = static_cast<size_t>(y) * w + x;
+      // Off the ball the camera sees the room behind, taken as a dim uniform background.
+      if (c2 <= 0.0) radiance[i] = glm::vec3(static_cast<float>(options_.background_radiance));
+      else radiance[i] = glm::vec3(power[i] / (4.0 / (ball.radius * ball.radius)));
     }
   std::lock_guard lock(mutex_);
   radiance_ = std::move(radiance);

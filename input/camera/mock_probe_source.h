@@ -25,7 +25,6 @@ struct MockCameraOptions {
   double full_well_electrons = 6000;  // shot noise: σ = √(electrons)
   double read_noise_electrons = 3;
   double background_radiance = 0.05;  // what the camera sees around the ball
-  int supersample = 2;                // per pixel side, for the ball's image
   uint64_t seed = 1;
   std::string name = "mock";
 };
