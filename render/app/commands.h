@@ -13,4 +13,6 @@ using CommandAction = std::function<int()>;
 CommandAction add_eval_command(CLI::App& app);
 CommandAction add_fit_command(CLI::App& app);
 
+CommandAction add_probe_command(CLI::App& app);
+
 }  // namespace weft

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   };
   add(weft::add_eval_command);
   add(weft::add_fit_command);
+  add(weft::add_probe_command);
 
   try {
     app.parse(argc, argv);
