@@ -8,6 +8,8 @@
 #include <random>
 #include <thread>
 
+#include <sys/wait.h>
+
 #include "camera/hdr_merge.h"
 #include "camera/libcamera_probe_source.h"
 #include "camera/light_probe_pipeline.h"
@@ -396,4 +398,33 @@ TEST(LibcameraProbe, NoCameraIsReportedAsAbsent) {
   }
   EXPECT_THROW(source.capture({}), ProbeError);
   source.close();
+}
+
+// `weft probe`: the mock prints SGs and the error; the real camera on this machine says it is
+// absent and fails with exit code 1 (the kiosk would keep its stored lighting).
+namespace {
+int run_weft(const std::string& args, std::string* out) {
+  const std::string cmd = std::string(WEFT_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out->append(buf, n);
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+}  // namespace
+
+TEST(ProbeCommand, MockAndAbsentCamera) {
+  std::string out;
+  EXPECT_EQ(run_weft("probe --mock " + std::string(WEFT_SOURCE_ASSETS) + "/envmaps/courtyard.exr --frames 2", &out), 0) << out;
+  EXPECT_NE(out.find("irr_err%"), std::string::npos) << out;
+  EXPECT_NE(out.find("sharpness"), std::string::npos) << out;
+  out.clear();
+  EXPECT_EQ(run_weft("probe --mock /nonexistent.exr", &out), 2) << out;
+  if (LibcameraProbeSource::list_cameras().empty()) {
+    out.clear();
+    EXPECT_EQ(run_weft("probe --frames 1", &out), 1) << out;
+    EXPECT_NE(out.find("camera absent"), std::string::npos) << out;
+    EXPECT_NE(out.find("stored lighting"), std::string::npos) << out;
+  }
 }
