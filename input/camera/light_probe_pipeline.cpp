@@ -1,5 +1,7 @@
 #include "camera/light_probe_pipeline.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +28,12 @@ const char* to_string(ProbeFailure failure) {
 void log_probe_line(const std::string& line) { std::cerr << "weft probe: " << line << std::endl; }
 
 namespace {
+
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
@@ -141,9 +149,11 @@ ProbeStepResult LightProbeUpdater::step() {
     t.smooth_ms = ms_since(t1);
 
     t1 = Clock::now();
+    const double cpu0 = thread_cpu_ms();
     SgLighting fitted = fit_sgs(smoothed_, config_.fit, fitted_ ? std::span<const SphericalGaussian>(sgs_)
                                                                  : std::span<const SphericalGaussian>(), &fit_stats_);
     t.fit_ms = ms_since(t1);
+    t.fit_cpu_ms = thread_cpu_ms() - cpu0;
     sgs_ = std::move(fitted);
   } catch (const ProbeError& error) {
     fail(error);

@@ -52,7 +52,8 @@ struct LightProbeConfig {
 };
 
 struct ProbeTimings {
-  double capture_ms = 0, merge_ms = 0, unwrap_ms = 0, smooth_ms = 0, fit_ms = 0, total_ms = 0;
+  double capture_ms = 0, merge_ms = 0, unwrap_ms = 0, smooth_ms = 0, fit_ms = 0, total_ms = 0;  // wall clock
+  double fit_cpu_ms = 0;  // the fit's CPU time on the worker thread (what a busy machine does not inflate)
 };
 
 enum class ProbeStepResult { updated, failed, waiting };  // waiting: in backoff, nothing tried
