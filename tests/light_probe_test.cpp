@@ -81,7 +81,9 @@ TEST(MirrorBall, ReflectionRoundTripAndOrientation) {
     const auto p = ball.image_position(r);
     const bool in_cap = glm::dot(r, glm::dvec3(0, 1, 0)) > std::cos(glm::radians(180.0 - 2 * ball.max_normal_angle_deg));
     ASSERT_EQ(!p, in_cap);
-    if (p) EXPECT_NEAR(glm::distance(*ball.reflected_direction(p->x, p->y), r), 0.0, 1e-9);
+    if (p) {
+      EXPECT_NEAR(glm::distance(*ball.reflected_direction(p->x, p->y), r), 0.0, 1e-9);
+    }
   }
 }
 
