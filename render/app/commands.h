@@ -16,4 +16,6 @@ CommandAction add_fit_command(CLI::App& app);
 CommandAction add_panel_command(CLI::App& app);
 CommandAction add_bake_tables_command(CLI::App& app);
 
+CommandAction add_probe_command(CLI::App& app);
+
 }  // namespace weft

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add(weft::add_fit_command);
   add(weft::add_panel_command);
   add(weft::add_bake_tables_command);
+  add(weft::add_probe_command);
 
   try {
     app.parse(argc, argv);
