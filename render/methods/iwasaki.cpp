@@ -1,0 +1,101 @@
+#include "methods/iwasaki.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/circular_gaussian.h"
+#include "core/fresnel.h"
+
+namespace weft {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13).
+double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, const ThreadFrame& f,
+                     const IwasakiVisibility* vis) {
+  if (!vis || !vis->sdf) return circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
+  double d = 0, dt = 0, dp = 0;
+  vis->sdf(f, theta_l, phi_k, d, dt, dp);
+  return visible_pair_integral(theta_l, sigma_l, phi_k, sigma_p, d, dt, dp);
+}
+
+}  // namespace
+
+IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                              const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                              const IwasakiVisibility* visibility) {
+  if (tables.tangent_samples[0] != bsdf.sample_count(0) || tables.tangent_samples[1] != bsdf.sample_count(1))
+    throw std::invalid_argument("iwasaki: tables were baked for other tangent sample counts");
+  IwasakiTerms out;
+  if (glm::dot(wo, frame.n) <= 0.0) return out;
+  auto local = [&](const dvec3& w) { return dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n)); };
+  const dvec3 wo_local = local(wo);
+
+  for (const SphericalGaussian& g : sgs) {
+    const dvec3 xi_local = local(g.axis);
+    int s = 0;
+    for (int j = 0; j < 2; ++j) {
+      const ThreadParams& p = bsdf.fabric().threads[j];
+      const int n = bsdf.sample_count(j);
+      const double gs = seed_bandwidth_from_std_dev(p.gamma_s), gv = seed_bandwidth_from_std_dev(p.gamma_v);
+      dvec3 surf(0.0), vol(0.0);
+      for (int k = 0; k < n; ++k, ++s) {
+        const ThreadFrame tf = thread_frame(frame, j, bsdf.tilt(j, k));
+        const double T = tables.value(s, g.sharpness, xi_local, wo_local);  // Eq. 10
+        if (T <= 0.0) continue;
+        const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
+        const FiberAngles o = fiber_angles(tf, wo);
+        const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
+
+        // The smooth factors at a lobe's peak θ_i = θ_l, φ_i = φ_k. dω = cos θ dθ dφ gives the
+        // second cos θ_l beside the model's own.
+        auto smooth = [&](double theta_l, double& fresnel_r, double& geometry) {
+          const double theta_d = 0.5 * (theta_l - o.theta);
+          const double phi_d = wrap_angle(sg.phi_k - o.phi);
+          const double cos_d = std::cos(theta_d);
+          fresnel_r = fresnel_dielectric(p.eta, cos_d * std::cos(0.5 * phi_d));
+          geometry = std::cos(theta_l) * std::cos(theta_l) / std::max(cos_d * cos_d, kModelDenominatorFloor);
+          return std::cos(0.5 * phi_d);
+        };
+        // Surface lobe: g^u(θ_h; γ_s) ≈ g^c(θ_i; −θ_o, 2γ_s)/(√π γ_s), merged with the SG's.
+        {
+          const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gs));
+          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          double fr = 0, geo = 0;
+          const double cos_half = smooth(l.mu, fr, geo);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, tf, visibility);
+          surf += dvec3(T * l.alpha * fr * cos_half * geo * I);
+        }
+        // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
+        {
+          const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gv));
+          double fr = 0, geo = 0;
+          smooth(l.mu, fr, geo);
+          const double t = 1.0 - fr;
+          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, tf, visibility);
+          const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
+                              std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
+
+          smooth(sg.theta_k, fr, geo);
+          const double td = 1.0 - fr;
+          const double spk = sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
+          const double Ik = pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk, tf, visibility);
+          const double iso = p.kd * td * td * geo /
+                             std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;
+          vol += T * (lobe + iso) * p.albedo;
+        }
+      }
+      out.surface += g.amplitude * surf / double(n);
+      out.volume += g.amplitude * vol / double(n);
+    }
+  }
+  out.radiance = out.surface + out.volume;
+  return out;
+}
+
+}  // namespace weft

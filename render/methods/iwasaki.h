@@ -1,0 +1,36 @@
+#pragma once
+// Seed 000's approximation (Iwasaki et al. 2014, §3) of L_o at one cloth point under SGs:
+//   L_o = Σ_k μ_k Σ_j (1/N_j) Σ_{t∈C_j} T_{t,λ_k}(ξ_k, ω_o) · ∫ G_k V f_s cos θ_i dω_i      (Eq. 8–10)
+// with the second factor from circular Gaussians (Eq. 11–13): the SG split into g^c(θ)·g^c(φ),
+// each longitudinal lobe g^u(θ_h; γ) replaced by a circular Gaussian in θ_i and merged with
+// the SG's, the smooth factors taken at the product's peak (θ_l, φ_k), and the visibility as
+// the ratio H of the linearised-visibility integral (here: none, or a caller's H).
+#include <functional>
+#include <span>
+
+#include "bake/weighting_tables.h"
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+
+namespace weft {
+
+// H(σ_l, σ'_l, d, ∂d/∂θ, ∂d/∂φ) at (θ_l, φ_k) of a tangent sample, or empty for unoccluded.
+struct IwasakiVisibility {
+  // Linearised visibility at direction (θ, φ) of the sample frame: d and its gradient.
+  std::function<void(const ThreadFrame&, double theta, double phi, double& d, double& d_dtheta, double& d_dphi)>
+      sdf;
+};
+
+struct IwasakiTerms {
+  dvec3 radiance{0.0};
+  dvec3 surface{0.0};  // Σ over the f_rs part
+  dvec3 volume{0.0};   // Σ over the f_rv part
+};
+
+// `bsdf` supplies the thread parameters (A, γ_s, γ_v, η, k_d: the knobs) and the tangent
+// samples, which must be those the tables were baked for.
+IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                              const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                              const IwasakiVisibility* visibility = nullptr);
+
+}  // namespace weft
