@@ -68,7 +68,9 @@ struct CommandResult {
   std::string out, err;
 };
 CommandResult run_weft(const std::string& args) {
-  const std::string out = testing::TempDir() + "weft_out.txt", err = testing::TempDir() + "weft_err.txt";
+  // Per-test names: ctest runs each test of this file as its own process, in parallel.
+  const std::string tag = testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string out = testing::TempDir() + "weft_out_" + tag + ".txt", err = testing::TempDir() + "weft_err_" + tag + ".txt";
   const int status = std::system((std::string(WEFT_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
   auto slurp = [](const std::string& p) {
     std::ifstream in(p);
