@@ -17,5 +17,7 @@ CommandAction add_panel_command(CLI::App& app);
 CommandAction add_bake_tables_command(CLI::App& app);
 
 CommandAction add_probe_command(CLI::App& app);
+CommandAction add_bake_command(CLI::App& app);
+CommandAction add_run_command(CLI::App& app);
 
 }  // namespace weft

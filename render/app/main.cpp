@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   add(weft::add_panel_command);
   add(weft::add_bake_tables_command);
   add(weft::add_probe_command);
+  add(weft::add_bake_command);
+  add(weft::add_run_command);
 
   try {
     app.parse(argc, argv);

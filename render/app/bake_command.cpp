@@ -1,0 +1,121 @@
+// `weft bake`: writes the scene part of a kiosk bundle (BUNDLE_FORMAT.md, "Scene bundle
+// sections"): meshes, materials, fabric parameters, camera and default SGs.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "app/asset_paths.h"
+#include "app/cli_parse.h"
+#include "app/commands.h"
+#include "bake/scene_bundle.h"
+#include "bundle/bundle_writer.h"
+#include "lighting/env_map.h"
+#include "lighting/sg_fit.h"
+#include "lighting/sg_set_io.h"
+
+namespace weft {
+namespace {
+
+struct BakeArgs {
+  std::string scene, fabric, sgs_file, out;
+  int fit_sgs = 0;
+  bool only_scene_fabrics = false;
+};
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot open '" + path.string() + "'");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void progress(int step, int steps, const std::string& what) {
+  std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str());
+}
+
+int run_bake(const BakeArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  constexpr int kSteps = 4;
+  SceneBundleInput in;
+  progress(1, kSteps, "scene '" + a.scene + "'");
+  try {
+    in.scene = load_scene_preset(a.scene, assets_dir() / "scenes");
+  } catch (const std::exception& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  if (!a.fabric.empty())
+    for (auto& o : in.scene.objects)
+      if (o.material == Material::cloth) o.fabric = a.fabric;
+  progress(2, kSteps, "fabrics");
+  for (const auto& o : in.scene.objects) {
+    if (o.material != Material::cloth || in.fabrics.count(o.fabric)) continue;
+    const auto dir = assets_dir() / "fabrics";
+    try {
+      load_fabric_preset(o.fabric, dir);  // validates; throws naming the known presets
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--fabric: ") + e.what());
+    }
+    in.fabrics.emplace(o.fabric, read_text(dir / (o.fabric + ".json")));
+  }
+  // Every preset goes in (a few hundred bytes each): the fabric knob selects among them.
+  if (!a.only_scene_fabrics)
+    for (const auto& name : list_fabric_presets(assets_dir() / "fabrics"))
+      if (!in.fabrics.count(name)) in.fabrics.emplace(name, read_text(assets_dir() / "fabrics" / (name + ".json")));
+  std::string lighting;
+  if (!a.sgs_file.empty()) {
+    progress(3, kSteps, "SGs from " + a.sgs_file);
+    try {
+      in.sgs = load_sg_set(a.sgs_file);
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--sgs: ") + e.what());
+    }
+    lighting = a.sgs_file;
+  } else {
+    const auto map_file = assets_dir() / "envmaps" / (in.scene.environment + ".exr");
+    progress(3, kSteps, "fitting " + std::to_string(a.fit_sgs > 0 ? a.fit_sgs : 10) + " SGs to " + map_file.string());
+    SgFitOptions opt;
+    opt.count = a.fit_sgs > 0 ? a.fit_sgs : 10;  // the product card's 10 SGs by default
+    in.sgs = fit_sgs(load_env_map(map_file, NonFinitePolicy::clamp), opt);  // as `weft fit` does by default
+    lighting = "fitted to " + in.scene.environment;
+  }
+  if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
+  progress(4, kSteps, "writing " + a.out);
+  bundle::BundleWriter writer;
+  add_scene_sections(writer, in);
+  const auto bytes = writer.to_bytes();
+  try {
+    writer.write_file(a.out);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  size_t triangles = 0;
+  for (const auto& o : in.scene.objects) triangles += o.mesh.triangles.size();
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fprintf(stderr,
+               "baked %s: scene '%s', %zu objects, %zu triangles, %zu fabrics, %zu SGs (%s); %zu sections, %zu bytes, "
+               "%.2f s\n",
+               a.out.c_str(), in.scene.name.c_str(), in.scene.objects.size(), triangles, in.fabrics.size(),
+               in.sgs.size(), lighting.c_str(), writer.section_count(), bytes.size(), s);
+  return 0;
+}
+
+}  // namespace
+
+CommandAction add_bake_command(CLI::App& app) {
+  auto a = std::make_shared<BakeArgs>();
+  CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs)");
+  sub->add_option("--scene", a->scene, "Scene preset (assets/scenes/NAME.json)")->required();
+  sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: each object's own)");
+  sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
+  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")
+      ->check(CLI::Range(1, 64));
+  sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
+  sub->add_option("--out", a->out, "Bundle file to write")->required();
+  return [a] { return run_bake(*a); };
+}
+
+}  // namespace weft

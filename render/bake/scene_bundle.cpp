@@ -1,0 +1,202 @@
+#include "bake/scene_bundle.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "lighting/sg_set_io.h"
+
+namespace weft {
+
+namespace scene_section {
+std::string mesh(size_t object, const char* attribute) {
+  return "mesh/" + std::to_string(object) + "/" + attribute;
+}
+}  // namespace scene_section
+
+namespace {
+
+using nlohmann::json;
+
+json vec3(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+template <class V>
+std::vector<float> flatten(const std::vector<V>& values, int n) {
+  std::vector<float> out;
+  out.reserve(values.size() * n);
+  for (const auto& v : values)
+    for (int k = 0; k < n; ++k) out.push_back(static_cast<float>(v[k]));
+  return out;
+}
+
+bundle::BundleError bad(const bundle::BundleReader& r, const std::string& section, const std::string& detail) {
+  return bundle::BundleError(r.origin(), "section '" + section + "'", section, detail);
+}
+
+json parse_json(const bundle::BundleReader& r, const std::string& section) {
+  try {
+    return json::parse(r.json(section));
+  } catch (const json::exception& e) {
+    throw bad(r, section, std::string("not valid JSON: ") + e.what());
+  }
+}
+
+glm::dvec3 read_vec3(const bundle::BundleReader& r, const std::string& section, const json& j) {
+  if (!j.is_array() || j.size() != 3) throw bad(r, section, "expected a 3-vector, got " + j.dump());
+  glm::dvec3 v;
+  for (int k = 0; k < 3; ++k) {
+    if (!j[k].is_number() || !std::isfinite(j[k].get<double>())) throw bad(r, section, "non-finite vector " + j.dump());
+    v[k] = j[k].get<double>();
+  }
+  return v;
+}
+
+// An [n, width] f32 section as n vectors; n must equal `expected_rows` unless that is 0 (any).
+template <class V>
+std::vector<V> read_rows(const bundle::BundleReader& r, const std::string& name, int width, size_t expected_rows) {
+  const auto& info = r.section(name);
+  const auto values = r.array<float>(name);
+  if (info.shape.size() != 2 || info.shape[1] != static_cast<uint64_t>(width) ||
+      (expected_rows && info.shape[0] != expected_rows))
+    throw bad(r, name, "expected shape [" + (expected_rows ? std::to_string(expected_rows) : std::string("n")) +
+                           ", " + std::to_string(width) + "]");
+  std::vector<V> out(info.shape[0]);
+  for (size_t i = 0; i < out.size(); ++i)
+    for (int k = 0; k < width; ++k) {
+      const float x = values[i * width + k];
+      if (!std::isfinite(x)) throw bad(r, name, "non-finite value in row " + std::to_string(i));
+      out[i][k] = x;
+    }
+  return out;
+}
+
+}  // namespace
+
+void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in) {
+  const Scene& s = in.scene;
+  json scene;
+  scene["format"] = "weft-scene-bundle";
+  scene["version"] = 1;
+  scene["name"] = s.name;
+  scene["description"] = s.description;
+  scene["environment"] = s.environment;
+  scene["camera"] = {{"position", vec3(s.camera.position)}, {"target", vec3(s.camera.target)},
+                     {"up", vec3(s.camera.up)}, {"fov_deg", s.camera.fov_deg}};
+  json objects = json::array();
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    const SceneObject& o = s.objects[i];
+    json jo{{"name", o.name}};
+    if (o.material == Material::cloth) {
+      if (!in.fabrics.count(o.fabric))
+        throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
+      jo["material"] = "cloth";
+      jo["fabric"] = o.fabric;
+    } else {
+      jo["material"] = "lambertian";
+      jo["albedo"] = vec3(o.albedo);
+    }
+    objects.push_back(jo);
+    const TriangleMesh& m = o.mesh;
+    const uint64_t n = m.positions.size();
+    writer.add_array<float>(scene_section::mesh(i, "positions"), flatten(m.positions, 3), {n, 3});
+    writer.add_array<float>(scene_section::mesh(i, "normals"), flatten(m.normals, 3), {n, 3});
+    if (!m.uvs.empty()) writer.add_array<float>(scene_section::mesh(i, "uvs"), flatten(m.uvs, 2), {n, 2});
+    if (!m.warps.empty()) writer.add_array<float>(scene_section::mesh(i, "warps"), flatten(m.warps, 3), {n, 3});
+    std::vector<uint32_t> idx;
+    idx.reserve(m.triangles.size() * 3);
+    for (const auto& t : m.triangles) idx.insert(idx.end(), t.begin(), t.end());
+    writer.add_array<uint32_t>(scene_section::mesh(i, "indices"), idx, {m.triangles.size(), 3});
+  }
+  scene["objects"] = objects;
+  writer.add_json(scene_section::kScene, scene.dump(2));
+  json fabrics = json::object();
+  for (const auto& [name, text] : in.fabrics) fabrics[name] = json::parse(text);
+  writer.add_json(scene_section::kFabrics, fabrics.dump(2));
+  writer.add_json(scene_section::kSgs, sg_set_to_json(in.sgs).dump(2));
+}
+
+SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
+  SceneBundle out;
+  const std::string F = scene_section::kFabrics;
+  const json fabrics = parse_json(r, F);
+  if (!fabrics.is_object() || fabrics.empty()) throw bad(r, F, "expected an object of fabric presets");
+  for (const auto& [name, fj] : fabrics.items()) {
+    const std::string text = fj.dump();
+    try {
+      out.fabrics.emplace(name, parse_fabric(text, r.origin() + ":" + F + "." + name));
+    } catch (const std::exception& e) {
+      throw bad(r, F, e.what());
+    }
+    out.fabric_json.emplace(name, text);
+  }
+  const std::string S = scene_section::kScene;
+  const json j = parse_json(r, S);
+  try {
+    if (j.value("format", "") != "weft-scene-bundle" || j.value("version", 0) != 1)
+      throw bad(r, S, "not a weft-scene-bundle version 1 description");
+    Scene& s = out.scene;
+    s.name = j.at("name").get<std::string>();
+    s.description = j.value("description", "");
+    s.environment = j.value("environment", "");
+    const json& c = j.at("camera");
+    s.camera.position = read_vec3(r, S, c.at("position"));
+    s.camera.target = read_vec3(r, S, c.at("target"));
+    s.camera.up = read_vec3(r, S, c.at("up"));
+    s.camera.fov_deg = c.at("fov_deg").get<double>();
+    if (!(s.camera.fov_deg > 0 && s.camera.fov_deg < 180)) throw bad(r, S, "camera fov_deg out of (0, 180)");
+    const json& objects = j.at("objects");
+    if (!objects.is_array() || objects.empty()) throw bad(r, S, "no objects");
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const json& jo = objects[i];
+      SceneObject o;
+      o.name = jo.at("name").get<std::string>();
+      const std::string material = jo.at("material").get<std::string>();
+      if (material == "cloth") {
+        o.material = Material::cloth;
+        o.fabric = jo.at("fabric").get<std::string>();
+        if (!out.fabrics.count(o.fabric)) throw bad(r, F, "no fabric '" + o.fabric + "' for object '" + o.name + "'");
+      } else if (material == "lambertian") {
+        o.albedo = read_vec3(r, S, jo.at("albedo"));
+      } else {
+        throw bad(r, S, "object '" + o.name + "': unknown material '" + material + "'");
+      }
+      TriangleMesh& m = o.mesh;
+      m.positions = read_rows<glm::dvec3>(r, scene_section::mesh(i, "positions"), 3, 0);
+      const size_t n = m.positions.size();
+      m.normals = read_rows<glm::dvec3>(r, scene_section::mesh(i, "normals"), 3, n);
+      if (r.has(scene_section::mesh(i, "uvs"))) m.uvs = read_rows<glm::dvec2>(r, scene_section::mesh(i, "uvs"), 2, n);
+      if (r.has(scene_section::mesh(i, "warps")))
+        m.warps = read_rows<glm::dvec3>(r, scene_section::mesh(i, "warps"), 3, n);
+      if (o.material == Material::cloth && m.warps.empty())
+        throw bad(r, scene_section::mesh(i, "warps"), "cloth object '" + o.name + "' has no warp directions");
+      const std::string is = scene_section::mesh(i, "indices");
+      const auto& info = r.section(is);
+      const auto idx = r.array<uint32_t>(is);
+      if (info.shape.size() != 2 || info.shape[1] != 3 || info.shape[0] == 0) throw bad(r, is, "expected shape [t, 3], t > 0");
+      m.triangles.resize(info.shape[0]);
+      for (size_t t = 0; t < m.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t v = idx[t * 3 + k];
+          if (v >= n) throw bad(r, is, "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) +
+                                           " of " + std::to_string(n));
+          m.triangles[t][k] = v;
+        }
+      s.objects.push_back(std::move(o));
+    }
+  } catch (const json::exception& e) {
+    throw bad(r, S, std::string("bad field: ") + e.what());
+  }
+  const json sg = parse_json(r, scene_section::kSgs);
+  try {
+    out.sgs = sg_set_from_json(sg, r.origin() + ":" + scene_section::kSgs);
+  } catch (const std::exception& e) {
+    throw bad(r, scene_section::kSgs, e.what());
+  }
+  return out;
+}
+
+SceneBundle load_scene_bundle(const std::filesystem::path& file) {
+  return read_scene_bundle(bundle::BundleReader::open(file));
+}
+
+}  // namespace weft

@@ -1,0 +1,245 @@
+// `weft bake` + `weft run` headless (issue 9's faults): a bundle that is corrupt, truncated or
+// from another format version at boot → the last good bundle, and the log says why; systemd's
+// notify protocol with a listener standing in for systemd: READY=1 after the first frame,
+// WATCHDOG=1 pings while the loop runs, none once the loop hangs (WEFT_FAULT_HANG_AFTER_TICKS).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Spawned {
+  pid_t pid = -1;
+  fs::path log;
+};
+
+// Starts weft with `args`, `env` added, stdout and stderr to a log file.
+Spawned spawn(const std::vector<std::string>& args, const std::vector<std::string>& env, const fs::path& log) {
+  Spawned s;
+  s.log = log;
+  s.pid = fork();
+  if (s.pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    for (const auto& e : env) putenv(strdup(e.c_str()));
+    std::vector<char*> argv{const_cast<char*>(WEFT_BINARY)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(WEFT_BINARY, argv.data());
+    _exit(127);
+  }
+  return s;
+}
+
+int wait_exit(const Spawned& s) {
+  int status = 0;
+  waitpid(s.pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace
+
+class KioskRun : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("weft_kiosk_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const Spawned b = spawn({"bake", "--scene", "pillow", "--fabric", "linen_plain", "--out", (dir_ / "good.weft").string()},
+                            {}, dir_ / "bake.log");
+    ASSERT_EQ(wait_exit(b), 0) << read_all(dir_ / "bake.log");
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  // weft run headless, 2 ticks, still camera, no panel; returns exit code, log in `log`.
+  int run(const fs::path& bundle, const fs::path& state, const fs::path& png, std::string& log,
+          const std::string& panel = "none", const std::string& frames = "2") {
+    std::vector<std::string> args{"run", "--bundle", bundle.string(), "--state-dir", state.string(), "--display",
+                                  "headless", "--frames", frames, "--turntable", "0", "--panel", panel, "--size", "96",
+                                  "72", "--screenshot", png.string()};
+    const Spawned s = spawn(args, {}, dir_ / "run.log");
+    const int rc = wait_exit(s);
+    log = read_all(dir_ / "run.log");
+    return rc;
+  }
+  static fs::path dir_;
+};
+fs::path KioskRun::dir_;
+
+TEST_F(KioskRun, BakeWritesTheDocumentedSections) {
+  const std::string log = read_all(dir_ / "bake.log");
+  EXPECT_NE(log.find("baked"), std::string::npos) << log;
+  const std::string bytes = read_all(dir_ / "good.weft");
+  for (const char* name : {"scene", "lighting/sgs", "fabrics", "mesh/0/positions", "mesh/0/warps", "mesh/0/indices"})
+    EXPECT_NE(bytes.find(std::string(name) + std::string(1, '\0')), std::string::npos) << name;
+}
+
+TEST_F(KioskRun, BadBundlesAtBootFallBackToTheLastGoodOne) {
+  const fs::path state = dir_ / "state";
+  std::string log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "good.png", log), 0) << log;
+  EXPECT_NE(log.find("first frame"), std::string::npos) << log;
+  EXPECT_EQ(log.find("LAST GOOD"), std::string::npos) << log;
+  ASSERT_TRUE(fs::exists(state / "last-good.weftbundle"));
+  const std::string good_png = read_all(dir_ / "good.png");
+  ASSERT_GT(good_png.size(), 100u);
+
+  const std::string good = read_all(dir_ / "good.weft");
+  struct Fault {
+    const char* name;
+    std::string bytes;
+    const char* why;  // what the log must say
+  };
+  std::string flipped = good;
+  flipped[good.size() - 100] ^= 0x10;  // in the last section's payload
+  std::string wrong_version = good;
+  wrong_version[8] = 2;
+  const std::vector<Fault> faults{{"corrupt", flipped, "checksum mismatch"},
+                                  {"truncated", good.substr(0, good.size() / 2), "truncated"},
+                                  {"wrong-version", wrong_version, "format version 2"}};
+  for (const auto& f : faults) {
+    const fs::path bad = dir_ / (std::string(f.name) + ".weft");
+    std::ofstream(bad, std::ios::binary) << f.bytes;
+    const fs::path png = dir_ / (std::string(f.name) + ".png");
+    ASSERT_EQ(run(bad, state, png, log), 0) << f.name << "\n" << log;
+    EXPECT_NE(log.find("LAST GOOD"), std::string::npos) << f.name << "\n" << log;
+    EXPECT_NE(log.find(f.why), std::string::npos) << f.name << "\n" << log;
+    EXPECT_NE(log.find("first frame"), std::string::npos) << f.name << "\n" << log;
+    // The same picture as from the good bundle.
+    EXPECT_EQ(read_all(png), good_png) << f.name;
+  }
+  // No last good copy and a bad bundle: a clear failure, no crash.
+  ASSERT_EQ(run(dir_ / "corrupt.weft", dir_ / "empty_state", dir_ / "none.png", log), 1) << log;
+  EXPECT_NE(log.find("no usable bundle"), std::string::npos) << log;
+}
+
+TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {
+  const fs::path state = dir_ / "knob_state";
+  fs::create_directories(state);
+  std::string log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "plain.png", log), 0) << log;
+  // A saved knob state with the hue turned: the picture changes, and the log says restored.
+  const std::string plain = read_all(dir_ / "plain.png");
+  ASSERT_TRUE(fs::exists(state / "knobs.json") || log.find("knob") != std::string::npos) << log;
+  std::ofstream(dir_ / "turn.knobs") << "turn 0 12 every 5\nwait 50\n";
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "turned.png", log,
+                "sim:" + (dir_ / "turn.knobs").string(), "60"),
+            0)
+      << log;
+  EXPECT_NE(read_all(dir_ / "turned.png"), plain) << log;
+  ASSERT_TRUE(fs::exists(state / "knobs.json")) << log;
+  // Next boot without the panel: the turned state comes back from the state dir.
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "restored.png", log), 0) << log;
+  EXPECT_EQ(read_all(dir_ / "restored.png"), read_all(dir_ / "turned.png")) << log;
+}
+
+// A unix datagram socket standing in for systemd's NOTIFY_SOCKET.
+struct NotifyListener {
+  int fd = -1;
+  fs::path path;
+  explicit NotifyListener(const fs::path& p) : path(p) {
+    fd = socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    sockaddr_un a{};
+    a.sun_family = AF_UNIX;
+    std::strncpy(a.sun_path, p.c_str(), sizeof a.sun_path - 1);
+    fs::remove(p);
+    bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a);
+  }
+  ~NotifyListener() {
+    close(fd);
+    fs::remove(path);
+  }
+  // Next message within `timeout`, or "" .
+  std::string next(std::chrono::milliseconds timeout) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, int(timeout.count())) <= 0) return "";
+    char buf[4096];
+    const ssize_t n = recv(fd, buf, sizeof buf, 0);
+    return n > 0 ? std::string(buf, size_t(n)) : "";
+  }
+};
+
+TEST_F(KioskRun, NotifiesReadyAfterTheFirstFrameAndPingsTheWatchdogUntilTheLoopHangs) {
+  NotifyListener sd(dir_ / "notify.sock");
+  ASSERT_GE(sd.fd, 0);
+  constexpr int kWatchdogMs = 600;
+  // The loop hangs after 90 ticks (~1.5 s at 60 Hz); runs otherwise forever.
+  const Spawned s = spawn({"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / "wd_state").string(),
+                           "--display", "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--size",
+                           "96", "72"},
+                          {"NOTIFY_SOCKET=" + sd.path.string(), "WATCHDOG_USEC=" + std::to_string(kWatchdogMs * 1000),
+                           "WEFT_FAULT_HANG_AFTER_TICKS=90"},
+                          dir_ / "wd.log");
+  // READY=1 comes first (before any ping), after the log's "first frame" line.
+  std::string m;
+  const auto start = Clock::now();
+  while ((m = sd.next(std::chrono::seconds(60))).find("READY=1") == std::string::npos) {
+    ASSERT_FALSE(m.empty()) << "no READY=1\n" << read_all(s.log);
+    ASSERT_EQ(m.find("WATCHDOG=1"), std::string::npos) << "ping before READY";
+  }
+  EXPECT_NE(read_all(s.log).find("first frame"), std::string::npos) << read_all(s.log);
+  EXPECT_NE(m.find("STATUS=showing 'pillow'"), std::string::npos) << m;
+  (void)start;
+  // Pings while the loop runs: each within the watchdog interval of the last (the service
+  // would be killed otherwise). Then the hang: no ping for 3 intervals.
+  int pings = 0;
+  auto last = Clock::now();
+  bool stopped = false;
+  while (!stopped) {
+    m = sd.next(std::chrono::milliseconds(3 * kWatchdogMs));
+    if (m.empty()) {
+      stopped = true;
+      break;
+    }
+    if (m.find("WATCHDOG=1") == std::string::npos) continue;
+    const auto now = Clock::now();
+    EXPECT_LT(now - last, std::chrono::milliseconds(kWatchdogMs)) << "ping " << pings;
+    last = now;
+    ++pings;
+    ASSERT_LT(pings, 1000) << "the loop never hung";
+  }
+  // About 1.5 s of loop at one ping per 300 ms (~5).
+  EXPECT_GE(pings, 3);
+  EXPECT_LE(pings, 20);  // generous: a loaded CI machine stretches the 90 ticks
+  // The process is still there, hung: systemd would now kill it (SIGABRT); we use SIGKILL.
+  EXPECT_EQ(waitpid(s.pid, nullptr, WNOHANG), 0) << read_all(s.log);
+  EXPECT_NE(read_all(s.log).find("FAULT INJECTION"), std::string::npos);
+  kill(s.pid, SIGKILL);
+  wait_exit(s);
+}
+
+TEST_F(KioskRun, SigtermStopsCleanly) {
+  NotifyListener sd(dir_ / "notify2.sock");
+  const Spawned s = spawn({"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / "term_state").string(),
+                           "--display", "headless", "--frames", "0", "--panel", "none", "--size", "96", "72"},
+                          {"NOTIFY_SOCKET=" + sd.path.string()}, dir_ / "term.log");
+  std::string m;
+  while ((m = sd.next(std::chrono::seconds(60))).find("READY=1") == std::string::npos)
+    ASSERT_FALSE(m.empty()) << read_all(s.log);
+  kill(s.pid, SIGTERM);
+  EXPECT_EQ(wait_exit(s), 0) << read_all(s.log);
+  EXPECT_NE(read_all(s.log).find("stopping after"), std::string::npos) << read_all(s.log);
+}

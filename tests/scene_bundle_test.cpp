@@ -1,0 +1,124 @@
+// The scene part of a bundle: what `weft bake` writes reads back as the same scene, and a bundle
+// whose scene sections are wrong is refused naming the section.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "bake/scene_bundle.h"
+#include "bundle/bundle_error.h"
+
+using namespace weft;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+SceneBundleInput pillow_input() {
+  SceneBundleInput in;
+  in.scene = load_scene_preset("pillow", fs::path(WEFT_SOURCE_ASSETS) / "scenes");
+  for (const auto& o : in.scene.objects)
+    if (o.material == Material::cloth)
+      in.fabrics[o.fabric] = read_all(fs::path(WEFT_SOURCE_ASSETS) / "fabrics" / (o.fabric + ".json"));
+  in.fabrics["silk_crepe_de_chine"] = read_all(fs::path(WEFT_SOURCE_ASSETS) / "fabrics" / "silk_crepe_de_chine.json");
+  in.sgs = {SphericalGaussian{glm::normalize(glm::dvec3(0.3, -0.2, 1)), 12.0, glm::dvec3(2, 1.5, 1)},
+            SphericalGaussian{glm::dvec3(0, 0, 1), 0.5, glm::dvec3(0.2, 0.25, 0.3)}};
+  return in;
+}
+
+}  // namespace
+
+TEST(SceneBundle, RoundTripsTheScene) {
+  const SceneBundleInput in = pillow_input();
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const SceneBundle out = read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+
+  EXPECT_EQ(out.scene.name, in.scene.name);
+  EXPECT_EQ(out.scene.environment, in.scene.environment);
+  EXPECT_EQ(out.scene.camera.position, in.scene.camera.position);
+  EXPECT_EQ(out.scene.camera.fov_deg, in.scene.camera.fov_deg);
+  ASSERT_EQ(out.scene.objects.size(), in.scene.objects.size());
+  for (size_t i = 0; i < in.scene.objects.size(); ++i) {
+    const auto& a = in.scene.objects[i];
+    const auto& b = out.scene.objects[i];
+    EXPECT_EQ(b.name, a.name);
+    EXPECT_EQ(b.material, a.material);
+    EXPECT_EQ(b.fabric, a.fabric);
+    ASSERT_EQ(b.mesh.positions.size(), a.mesh.positions.size());
+    ASSERT_EQ(b.mesh.triangles, a.mesh.triangles);
+    for (size_t v = 0; v < a.mesh.positions.size(); ++v) {
+      // Stored as f32: equal to float rounding.
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(b.mesh.positions[v][k], double(float(a.mesh.positions[v][k])));
+        EXPECT_EQ(b.mesh.normals[v][k], double(float(a.mesh.normals[v][k])));
+      }
+      if (a.material == Material::cloth)
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(b.mesh.warps[v][k], double(float(a.mesh.warps[v][k])));
+    }
+  }
+  // Every stored fabric parses to what the preset loader gives.
+  ASSERT_EQ(out.fabrics.size(), 2u);
+  for (const auto& [name, f] : out.fabrics) {
+    const Fabric expected = load_fabric_preset(name, fs::path(WEFT_SOURCE_ASSETS) / "fabrics");
+    EXPECT_EQ(f.name, expected.name);
+    for (int t = 0; t < 2; ++t) {
+      EXPECT_EQ(f.threads[t].albedo, expected.threads[t].albedo);
+      EXPECT_EQ(f.threads[t].gamma_s, expected.threads[t].gamma_s);
+    }
+  }
+  ASSERT_EQ(out.sgs.size(), 2u);
+  EXPECT_NEAR(out.sgs[0].sharpness, 12.0, 1e-12);
+  EXPECT_NEAR(glm::length(out.sgs[0].axis - in.sgs[0].axis), 0.0, 1e-12);
+  EXPECT_EQ(out.sgs[1].amplitude, in.sgs[1].amplitude);
+}
+
+TEST(SceneBundle, RefusesBadSceneSectionsNamingThem) {
+  SceneBundleInput in = pillow_input();
+  auto expect_refused = [](const SceneBundleInput& input, const std::string& section, const std::string& words,
+                           bool replace_fabric_text = false) {
+    bundle::BundleWriter w;
+    SceneBundleInput copy = input;
+    if (replace_fabric_text) copy.fabrics.begin()->second = "{\"name\": 3}";
+    add_scene_sections(w, copy);
+    const auto bytes = w.to_bytes();
+    try {
+      read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+      FAIL() << "accepted a bundle with a bad " << section;
+    } catch (const bundle::BundleError& e) {
+      EXPECT_EQ(e.section(), section) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  // A triangle pointing past the vertices.
+  SceneBundleInput bad_index = in;
+  bad_index.scene.objects[0].mesh.triangles[0][1] = uint32_t(bad_index.scene.objects[0].mesh.positions.size());
+  expect_refused(bad_index, "mesh/0/indices", "refers to vertex");
+  // A fabric that does not parse.
+  expect_refused(in, "fabrics", "", true);
+  // Non-finite vertex data.
+  SceneBundleInput nan = in;
+  nan.scene.objects[0].mesh.normals[3].y = std::nan("");
+  expect_refused(nan, "mesh/0/normals", "non-finite");
+}
+
+TEST(SceneBundle, MissingSectionsAreNamed) {
+  bundle::BundleWriter w;
+  w.add_json("fabrics", "{\"linen_plain\": " + read_all(fs::path(WEFT_SOURCE_ASSETS) / "fabrics" / "linen_plain.json") + "}");
+  w.add_json("scene", R"({"format":"weft-scene-bundle","version":1,"name":"x","camera":{"position":[0,-3,1],
+      "target":[0,0,0],"up":[0,0,1],"fov_deg":40},"objects":[{"name":"floor","material":"lambertian","albedo":[0.5,0.5,0.5]}]})");
+  const auto bytes = w.to_bytes();
+  try {
+    read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+    FAIL() << "accepted a bundle without meshes";
+  } catch (const bundle::BundleError& e) {
+    EXPECT_EQ(e.section(), "mesh/0/positions") << e.what();
+  }
+}
