@@ -72,7 +72,7 @@ EnvMap load_env_map(const std::filesystem::path& path, NonFinitePolicy policy = 
                     EnvMapRepairs* repairs = nullptr);
 
 enum class ExrPixel { half, full_float };
-enum class ExrCompression { none, rle, zip, piz };
+enum class ExrCompression { none, rle, zip, piz, dwab };
 struct EnvMapWriteOptions {
   ExrPixel pixel = ExrPixel::full_float;
   ExrCompression compression = ExrCompression::zip;
