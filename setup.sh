@@ -37,8 +37,21 @@ build() {
 }
 
 run_default() {
-  # The ground-truth render of the default scene (a few minutes on 2 cores): pillow.exr + pillow.png.
-  "$BUILD_DIR/render/app/weft" render --scene pillow --method reference --out "$BUILD_DIR/pillow.exr"
+  # The default showroom: the pillow in linen, baked once into a bundle, then shown fullscreen on
+  # the first connected display (DRM/KMS), or rendered headless to an image when there is none.
+  local weft="$BUILD_DIR/render/app/weft" bundle="$BUILD_DIR/showroom.weft" state="$BUILD_DIR/kiosk-state"
+  # Re-baked after every rebuild of weft, so the bundle always matches the binary.
+  [ "$bundle" -nt "$weft" ] || "$weft" bake --scene pillow --fabric linen_plain --out "$bundle"
+  mkdir -p "$state"
+  local panel=none
+  [ -t 0 ] && panel=keyboard  # turn the knobs from this terminal (weft run --help; input/panel/KNOBS.md)
+  if "$weft" run --bundle "$bundle" --state-dir "$state" --display kms --panel "$panel"; then
+    return 0
+  fi
+  echo "setup: no display to take over; rendering the showroom headless instead"
+  "$weft" run --bundle "$bundle" --state-dir "$state" --display headless --panel none --frames 1 \
+    --screenshot "$BUILD_DIR/showroom.png"
+  echo "setup: wrote $BUILD_DIR/showroom.png"
 }
 
 test_all() {
