@@ -24,14 +24,6 @@ struct BakeArgs {
   bool only_scene_fabrics = false;
 };
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("cannot open '" + path.string() + "'");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void progress(int step, int steps, const std::string& what) {
   std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str());
 }
@@ -58,12 +50,13 @@ int run_bake(const BakeArgs& a) {
     } catch (const std::exception& e) {
       throw UsageError(std::string("--fabric: ") + e.what());
     }
-    in.fabrics.emplace(o.fabric, read_text(dir / (o.fabric + ".json")));
+    in.fabrics.emplace(o.fabric, read_argument_file((dir / (o.fabric + ".json")).string(), "fabric"));
   }
   // Every preset goes in (a few hundred bytes each): the fabric knob selects among them.
   if (!a.only_scene_fabrics)
     for (const auto& name : list_fabric_presets(assets_dir() / "fabrics"))
-      if (!in.fabrics.count(name)) in.fabrics.emplace(name, read_text(assets_dir() / "fabrics" / (name + ".json")));
+      if (!in.fabrics.count(name))
+        in.fabrics.emplace(name, read_argument_file((assets_dir() / "fabrics" / (name + ".json")).string(), "fabric"));
   std::string lighting;
   if (!a.sgs_file.empty()) {
     progress(3, kSteps, "SGs from " + a.sgs_file);

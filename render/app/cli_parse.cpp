@@ -1,6 +1,7 @@
 #include "app/cli_parse.h"
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace weft {
@@ -49,6 +50,14 @@ SphericalGaussian parse_sg(const std::string& text, const std::string& arg) {
   g.sharpness = v[3];
   g.amplitude = glm::dvec3(v[4], v[5], v[6]);
   return g;
+}
+
+std::string read_argument_file(const std::string& path, const std::string& arg) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(arg + ": cannot open '" + path + "'");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 }  // namespace weft

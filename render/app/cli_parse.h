@@ -1,5 +1,5 @@
 #pragma once
-// Parsing of the small value lists the command line takes (`0.5,0.2,0.8`, SG descriptions).
+// Parsing of what the command line takes: small value lists (`0.5,0.2,0.8`, SG descriptions).
 // Errors are UsageError with a message that names the argument.
 #include <stdexcept>
 #include <string>
@@ -20,5 +20,7 @@ std::vector<double> parse_numbers(const std::string& text, size_t count, const s
 glm::dvec3 parse_direction(const std::string& text, const std::string& arg);
 // `axis_x,axis_y,axis_z,λ,μ_r,μ_g,μ_b`: axis normalised, λ > 0, μ ≥ 0.
 SphericalGaussian parse_sg(const std::string& text, const std::string& arg);
+// The whole of a file a command-line argument names; UsageError "<arg>: cannot open '<path>'".
+std::string read_argument_file(const std::string& path, const std::string& arg);
 
 }  // namespace weft

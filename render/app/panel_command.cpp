@@ -41,14 +41,6 @@ struct PanelArgs {
   double duration = -1;
 };
 
-std::string read_text(const std::string& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(std::string(what) + ": cannot open '" + path + "'");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Six significant digits: the knobs' floats, printed without float→double noise.
 double tidy(double x) {
   char s[32];
@@ -75,7 +67,7 @@ int run_panel(const PanelArgs& a) {
   input::PanelConfig config;
   if (!a.config.empty()) {
     try {
-      config = input::parse_panel_config(read_text(a.config, "--config"), a.config);
+      config = input::parse_panel_config(read_argument_file(a.config, "--config"), a.config);
     } catch (const input::PanelConfigError& e) {
       throw UsageError(e.what());
     }
@@ -108,7 +100,7 @@ int run_panel(const PanelArgs& a) {
   if (!a.simulate.empty()) {
     input::SimulatedPanel panel;
     try {
-      panel = input::make_simulated_panel(read_text(a.simulate, "--simulate"), a.speed);
+      panel = input::make_simulated_panel(read_argument_file(a.simulate, "--simulate"), a.speed);
     } catch (const input::PanelScriptError& e) {
       throw UsageError(std::string("--simulate: ") + e.what());
     }

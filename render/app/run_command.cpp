@@ -63,14 +63,6 @@ void log_line(const std::string& s) {
   std::fflush(stderr);
 }
 
-std::string read_text(const std::string& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(std::string(what) + ": cannot open '" + path + "'");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Wraps the HID byte source to note when the last report arrived: the start of report→photon.
 class TimedTransport : public input::HidTransport {
 public:
@@ -216,7 +208,7 @@ int run_kiosk(const RunArgs& a) {
   input::PanelConfig config;
   if (!a.panel_config.empty()) {
     try {
-      config = input::parse_panel_config(read_text(a.panel_config, "--panel-config"), a.panel_config);
+      config = input::parse_panel_config(read_argument_file(a.panel_config, "--panel-config"), a.panel_config);
     } catch (const input::PanelConfigError& e) {
       throw UsageError(e.what());
     }
@@ -233,7 +225,7 @@ int run_kiosk(const RunArgs& a) {
     if (!(a.sim_speed > 0 && a.sim_speed <= 1000)) throw UsageError("--sim-speed: must be in (0, 1000]");
     input::SimulatedPanel panel;
     try {
-      panel = input::make_simulated_panel(read_text(a.panel.substr(4), "--panel sim:"), a.sim_speed);
+      panel = input::make_simulated_panel(read_argument_file(a.panel.substr(4), "--panel sim:"), a.sim_speed);
     } catch (const input::PanelScriptError& e) {
       throw UsageError(std::string("--panel sim: ") + e.what());
     }
