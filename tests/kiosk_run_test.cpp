@@ -76,10 +76,10 @@ protected:
 
   // weft run headless, 2 ticks, still camera, no panel; returns exit code, log in `log`.
   int run(const fs::path& bundle, const fs::path& state, const fs::path& png, std::string& log,
-          const std::string& panel = "none", const std::string& frames = "2") {
+          const std::string& panel = "none", const std::string& frames = "2", const std::string& probe = "none") {
     std::vector<std::string> args{"run", "--bundle", bundle.string(), "--state-dir", state.string(), "--display",
                                   "headless", "--frames", frames, "--turntable", "0", "--panel", panel, "--size", "96",
-                                  "72", "--screenshot", png.string()};
+                                  "72", "--screenshot", png.string(), "--probe", probe};
     const Spawned s = spawn(args, {}, dir_ / "run.log");
     const int rc = wait_exit(s);
     log = read_all(dir_ / "run.log");
@@ -154,6 +154,26 @@ TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {
   // Next boot without the panel: the turned state comes back from the state dir.
   ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "restored.png", log), 0) << log;
   EXPECT_EQ(read_all(dir_ / "restored.png"), read_all(dir_ / "turned.png")) << log;
+}
+
+TEST_F(KioskRun, TheLightProbeRelightsTheRoomAndAnAbsentCameraKeepsTheStoredLight) {
+  // The bundle is lit by SGs fitted to the studio map. A mocked probe camera in the interior map
+  // hands the frame loop new SGs: the picture changes. A real camera that is not there (this
+  // machine has none) leaves the stored lighting: the picture is the plain one, and the log says why.
+  const fs::path state = dir_ / "probe_state";
+  fs::create_directories(state);
+  std::string log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "probe_plain.png", log, "none", "30"), 0) << log;
+  const std::string plain = read_all(dir_ / "probe_plain.png");
+  const std::string interior = std::string(WEFT_SOURCE_ASSETS) + "/envmaps/interior.exr";
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "probe_mock.png", log, "none", "150", "mock:" + interior), 0) << log;
+  EXPECT_NE(read_all(dir_ / "probe_mock.png"), plain) << log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "probe_absent.png", log, "none", "30", "camera:no-such-camera"), 0)
+      << log;
+  EXPECT_EQ(read_all(dir_ / "probe_absent.png"), plain) << log;
+  EXPECT_NE(log.find("light probe: "), std::string::npos) << log;
+  // A probe that cannot be set up at all is a usage error, before anything is shown.
+  EXPECT_EQ(run(dir_ / "good.weft", state, dir_ / "probe_bad.png", log, "none", "2", "mock:/no/such/map.exr"), 2) << log;
 }
 
 // A unix datagram socket standing in for systemd's NOTIFY_SOCKET.

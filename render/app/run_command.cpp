@@ -35,6 +35,7 @@
 #include "panel/knob_controller.h"
 #include "panel/panel_config.h"
 #include "panel/simulated_panel.h"
+#include "app/kiosk_light_probe.h"
 
 namespace weft {
 namespace {
@@ -56,6 +57,8 @@ struct RunArgs {
   std::string method = "sgpoint";
   double exposure = 1.0;
   double stats_every = 300;  // seconds between stats lines in the log
+  std::string probe = "none";
+  double probe_switch_s = 0;  // mock probe with several maps: seconds between switches
 };
 
 void log_line(const std::string& s) {
@@ -252,6 +255,14 @@ int run_kiosk(const RunArgs& a) {
   std::optional<gpu::ToneMapper> tonemap;
   if (kms) tonemap.emplace();
 
+  // The light: the bundle's SGs, or the probe's latest fit; the environment knob turns either.
+  SgLighting room_light = sb.sgs;
+  std::unique_ptr<KioskLightProbe> probe;
+  if (a.probe != "none") {
+    probe = std::make_unique<KioskLightProbe>(a.probe, a.probe_switch_s, sb.sgs,
+                                              [](const std::string& s) { log_line("light probe: " + s); });
+    log_line("light probe " + a.probe + " started; the bundle's SGs stay until its first fit");
+  }
   input::AppearanceState knobs;
   uint64_t knob_version = ~0ull;
   float light_rotation = -1;
@@ -259,9 +270,15 @@ int run_kiosk(const RunArgs& a) {
     const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
     for (size_t c = 0; c < cloth_fabrics.size(); ++c) renderer.set_fabric(c, f);
     if (s.env_rotation_deg != light_rotation) {
-      renderer.set_lighting(rotated_about_z(sb.sgs, s.env_rotation_deg));
+      renderer.set_lighting(rotated_about_z(room_light, s.env_rotation_deg));
       light_rotation = s.env_rotation_deg;
     }
+  };
+  auto poll_light = [&]() -> bool {
+    if (!probe || !probe->acquire()) return false;
+    room_light = probe->lighting();
+    renderer.set_lighting(rotated_about_z(room_light, std::max(light_rotation, 0.0f)));
+    return true;
   };
   auto poll_knobs = [&]() -> bool {
     if (controller.channel().version() == knob_version) return false;
@@ -328,8 +345,9 @@ int run_kiosk(const RunArgs& a) {
     const double turn = a.turntable * std::chrono::duration<double>(tick_start - loop_start).count();
     const int64_t report_ns = last_report_ns.load();
     const bool knobs_changed = poll_knobs();
+    const bool light_changed = poll_light();
     const bool view_changed = std::abs(turn - shown_turn) > 1e-4;
-    if (knobs_changed || view_changed) {
+    if (knobs_changed || light_changed || view_changed) {
       draw(turn);
       shown_turn = turn;
       ++drawn;
@@ -338,16 +356,20 @@ int run_kiosk(const RunArgs& a) {
     }
     notifier.tick();
     if (a.stats_every > 0 && tick_start - last_stats >= std::chrono::duration<double>(a.stats_every)) {
-      std::snprintf(line, sizeof line, "stats: %ld ticks, %ld frames drawn, median %.2f ms/frame over the last %zu, RSS %ld KiB",
-                    ticks, drawn, median(since_stats), since_stats.size(), rss_kib());
+      std::snprintf(line, sizeof line,
+                    "stats: %ld ticks, %ld frames drawn, median %.2f ms/frame over the last %zu, RSS %ld KiB, "
+                    "%llu light-probe updates",
+                    ticks, drawn, median(since_stats), since_stats.size(), rss_kib(),
+                    static_cast<unsigned long long>(probe ? probe->updates() : 0));
       log_line(line);
       last_stats = tick_start;
       since_stats.clear();
     }
-    if (!kms || !(knobs_changed || view_changed)) std::this_thread::sleep_until(tick_start + tick_period);
+    if (!kms || !(knobs_changed || light_changed || view_changed)) std::this_thread::sleep_until(tick_start + tick_period);
   }
 
   for (auto& s : sources) s->stop();
+  probe.reset();
   controller.flush();
   if (!a.screenshot.empty()) {
     target.bind();
@@ -390,6 +412,9 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "Tone-mapping exposure")->capture_default_str();
+  sub->add_option("--probe", a->probe, "Light probe: none, camera[:ID] (libcamera) or mock:MAP.exr[,MAP.exr...]")
+      ->capture_default_str();
+  sub->add_option("--probe-switch", a->probe_switch_s, "Mock probe with several maps: seconds between switching them");
   return [a] { return run_kiosk(*a); };
 }
 
