@@ -16,7 +16,7 @@ sim=$(readlink -f "$2")
 uhid_test=$(readlink -f "$3")
 mkdir -p "$4" || exit 2
 work=$(readlink -f "$4")
-frames=/usr/bin/python3
+python=/usr/bin/python3  # Debian's, not whatever is first on PATH (frames.py needs only the stdlib)
 frames_py="$here/kiosk_vm/frames.py"
 SKIP=77
 # Small mode: llvmpipe under TCG is slow and bochs can only scan out what fits its VRAM.
@@ -27,7 +27,13 @@ VM_TIMEOUT=${KIOSK_VM_TIMEOUT:-420}
 t0=$(date +%s.%N)
 elapsed() { echo "$(date +%s.%N) $t0" | awk '{printf "%.1f", $1 - $2}'; }
 say() { echo "kiosk-vm [$(elapsed) s]: $*"; }
-fail() { say "FAIL: $*"; exit 1; }
+fail() {
+  say "FAIL: $*"
+  for f in "$work/out/guest.log" "$work/out/kiosk.log" "$work/console.log"; do
+    [ -s "$f" ] && { echo "--- tail of $f"; tail -15 "$f"; }
+  done
+  exit 1
+}
 skip() { say "SKIPPED: $*"; exit $SKIP; }
 
 # 1. Tools: qemu, busybox (the initramfs shell), kmod (module order), cpio. Installed the way
@@ -74,21 +80,14 @@ for m in virtio_pci 9pnet_virtio 9p bochs uhid hid_generic; do
     echo "$name" >>"$ird/modules/order"
   done < <(grep '^insmod ' "$work/deps.txt")
 done
-out="$work/out"
-rm -rf "$out" && mkdir -p "$out"
-guest_steps=${KIOSK_VM_GUEST_STEPS:-$here/kiosk_vm/guest_steps.sh}
-printf 'OUT=%s\nGUEST_STEPS=%s\n' "$out" "$guest_steps" >"$ird/vm.env"
-(cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$work/initramfs.cpio.gz" || fail "cannot pack the initramfs"
-say "kernel $kver, initramfs with $(wc -l <"$ird/modules/order") modules"
+say "kernel $kver, $(wc -l <"$ird/modules/order") modules for the initramfs"
 
 # 4. On the host: the bundle, the knob scripts, and the headless reference renders the VM's
 #    screen is checked against (same bundle, same knob turns, same size, no VM).
 shots="$work/shots"
 rm -rf "$shots" "$work/ref" && mkdir -p "$shots" "$work/ref"
 bundle="$work/showroom.weft"
-if [ ! -s "$bundle" ]; then
-  "$weft" bake --scene pillow --fabric linen_plain --out "$bundle" >"$work/bake.log" 2>&1 || fail "weft bake failed: $(tail -3 "$work/bake.log")"
-fi
+"$weft" bake --scene pillow --fabric linen_plain --out "$bundle" >"$work/bake.log" 2>&1 || fail "weft bake failed: $(tail -3 "$work/bake.log")"
 cat >"$work/panel.json" <<JSON
 {"sources": ["hid"], "hid": {"vendor_id": "0x1209", "product_id": "0x57ef"}}
 JSON
@@ -138,6 +137,7 @@ qemu-system-x86_64 -nodefaults -no-reboot -display none \
   -serial "file:$work/console.log" &
 qemu_pid=$!
 trap 'kill $qemu_pid 2>/dev/null' EXIT
+trap 'exit 1' TERM INT  # so a ctest timeout or ^C still takes the VM down
 since_boot() { echo "$(date +%s.%N) $boot_start" | awk '{printf "%.1f", $1 - $2}'; }
 
 guest_reached() {  # STEP: wait until the guest touches at-STEP (or fails, or the VM is gone)
@@ -152,8 +152,8 @@ guest_reached() {  # STEP: wait until the guest touches at-STEP (or fails, or th
 }
 screendump() {  # NAME
   local t=$(date +%s.%N)
-  "$frames" "$frames_py" shot "$mon" "$shots/$1.ppm" || fail "screendump $1 failed"
-  "$frames" "$frames_py" png "$shots/$1.ppm" "$shots/$1.png" || fail "cannot convert $1"
+  "$python" "$frames_py" shot "$mon" "$shots/$1.ppm" || fail "screendump $1 failed"
+  "$python" "$frames_py" png "$shots/$1.ppm" "$shots/$1.png" || fail "cannot convert $1"
   say "screendump $1 took $(echo "$(date +%s.%N) $t" | awk '{printf "%.2f", $1 - $2}') s -> $shots/$1.png"
 }
 
@@ -169,7 +169,7 @@ screendump vm_replug
 touch "$out/go-replug-shot"
 guest_reached done
 wait $qemu_pid
-trap - EXIT
+trap - EXIT TERM INT
 say "VM powered off $(since_boot) s after qemu started"
 
 # 6. Verdict: the kiosk's own account, then the pictures.
@@ -183,8 +183,8 @@ grep -q "display card0 " "$out/kiosk.log" || { say "FAIL: the kiosk did not run 
   { say "FAIL: the kiosk did not connect to the panel twice (plug, replug)"; status=1; }
 cmp -s "$out/state/knobs.json" "$work/ref/replug/knobs.json" ||
   { say "FAIL: the VM kiosk's knob state differs from the reference's:"; diff "$out/state/knobs.json" "$work/ref/replug/knobs.json"; status=1; }
-"$frames" "$frames_py" check "$work/ref/before.png" "$work/ref/after.png" "$shots/vm_before.ppm" "$shots/vm_after.ppm" "knob turn" || status=1
-"$frames" "$frames_py" check "$work/ref/after.png" "$work/ref/replug.png" "$shots/vm_after.ppm" "$shots/vm_replug.ppm" "after replug" || status=1
+"$python" "$frames_py" check "$work/ref/before.png" "$work/ref/after.png" "$shots/vm_before.ppm" "$shots/vm_after.ppm" "knob turn" || status=1
+"$python" "$frames_py" check "$work/ref/after.png" "$work/ref/replug.png" "$shots/vm_after.ppm" "$shots/vm_replug.ppm" "after replug" || status=1
 
 echo "--- timings (TCG, 2 vCPUs) ---"
 awk '{printf "guest uptime %7.2f s: %s\n", $1, $2}' "$out/marks"
