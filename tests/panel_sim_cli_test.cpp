@@ -75,6 +75,23 @@ TEST(PanelSimCli, BadInputExitsTwoWithTheLine) {
   std::filesystem::remove(script);
 }
 
+// --uhid without a usable uhid device is a runtime failure (1) naming the device; a bad panel
+// config is bad input (2) naming the file and field. (The uhid path itself: uhid_panel_test.)
+TEST(PanelSimCli, UhidErrorsAreClear) {
+  const auto script = write_script("uhid", "turn 0 +1\n");
+  const auto missing = run("--uhid --uhid-path /nonexistent/uhid " + script);
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.out.find("cannot open /nonexistent/uhid"), std::string::npos) << missing.out;
+  const auto config = write_script("badconfig", "{\"hid\": {\"vendor_id\": \"0x12345\"}}");
+  const auto bad = run("--uhid --uhid-path /nonexistent/uhid --panel-config " + config + " " + script);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("hid.vendor_id must be a 16-bit USB id"), std::string::npos) << bad.out;
+  EXPECT_EQ(run("--uhid --panel-config /nonexistent/panel.json " + script).status, 2);
+  EXPECT_EQ(run("--uhid --hold-ms -5 " + script).status, 2);
+  std::filesystem::remove(script);
+  std::filesystem::remove(config);
+}
+
 // `weft panel --simulate`: the script through the simulated USB panel, the real HID backend,
 // the mapper and the channel, printed as the fabric the renderer would draw.
 TEST(WeftPanelCommand, SimulatedPanelChangesTheFabric) {

@@ -1,12 +1,16 @@
 // weft-panel-sim: turns a script of knob motions into the exact HID reports the panel sends.
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 
+#include "panel/panel_config.h"
 #include "sim/panel_simulator.h"
+#include "sim/uhid_panel.h"
 
 namespace {
 
@@ -24,6 +28,15 @@ const char* kUsage =
     "  --scan-us N                firmware line scan period (default 1000)\n"
     "  --poll-ms N                USB interrupt polling interval (default 8)\n"
     "  --debounce-ms N            button debounce time (default 5)\n"
+    "  --uhid                     instead of printing: create the panel as a real HID device\n"
+    "                             through the kernel's uhid (root; modprobe uhid), wait until a\n"
+    "                             host opens it (hidraw), send the reports at their times, keep\n"
+    "                             it plugged for --hold-ms, then unplug it (destroy)\n"
+    "  --uhid-path PATH           the uhid device (default /dev/uhid)\n"
+    "  --panel-config FILE        the kiosk's panel config: take the USB VID/PID from its \"hid\"\n"
+    "                             section (default 1209:57ef, the panel's own)\n"
+    "  --open-timeout-ms N        how long --uhid waits for a host to open it (default 30000)\n"
+    "  --hold-ms N                how long --uhid stays plugged after the last report (default 1000)\n"
     "  -h, --help                 this text\n"
     "\n"
     "script (one command per line, times in ms, # comments):\n"
@@ -34,7 +47,8 @@ const char* kUsage =
     "  glitch <dial> <a|b> [<width_ms>]             a lone spike on one line\n"
     "example:\n"
     "  printf 'turn 0 +3\\nbounce 2 0.4\\nclick 4\\n' | weft-panel-sim --format timed\n"
-    "exit status: 0 ok, 2 bad usage or bad script\n";
+    "exit status: 0 ok, 1 uhid failure (no /dev/uhid, nobody opened the panel), 2 bad usage or\n"
+    "bad script\n";
 
 bool parse_uint(const char* s, unsigned long& out) {
   char* end = nullptr;
@@ -42,11 +56,44 @@ bool parse_uint(const char* s, unsigned long& out) {
   return end && *end == 0 && *s != 0 && *s != '-';
 }
 
+// Plays the reports in real time on a uhid panel: the script's clock starts once a host has the
+// device open, so no report is sent into a device nobody reads.
+int play_on_uhid(const weft::sim::SimResult& result, const std::string& uhid_path, const weft::sim::UhidIdentity& id,
+                 unsigned long open_timeout_ms, unsigned long hold_ms) {
+  using Clock = std::chrono::steady_clock;
+  try {
+    const auto t0 = Clock::now();
+    auto panel = weft::sim::UhidPanel::open(uhid_path, id);
+    std::fprintf(stderr, "weft-panel-sim: created %04x:%04x on %s\n", id.vendor_id, id.product_id, uhid_path.c_str());
+    if (!panel.wait_until_opened(static_cast<int>(open_timeout_ms))) {
+      std::fprintf(stderr, "weft-panel-sim: nobody opened the panel within %lu ms\n", open_timeout_ms);
+      return 1;
+    }
+    const auto start = Clock::now();
+    std::fprintf(stderr, "weft-panel-sim: opened by a host after %.0f ms\n",
+                 std::chrono::duration<double, std::milli>(start - t0).count());
+    for (const auto& r : result.reports) {
+      std::this_thread::sleep_until(start + std::chrono::microseconds(r.time_us));
+      panel.send_report(r.bytes.data(), r.bytes.size());
+    }
+    std::fprintf(stderr, "weft-panel-sim: sent %zu reports\n", result.reports.size());
+    std::this_thread::sleep_for(std::chrono::milliseconds(hold_ms));
+    panel.destroy();
+    std::fprintf(stderr, "weft-panel-sim: unplugged\n");
+  } catch (const weft::sim::UhidError& e) {
+    std::fprintf(stderr, "weft-panel-sim: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string format = "hex", path = "-";
-  bool edges_only = false;
+  bool edges_only = false, uhid = false;
+  std::string uhid_path = "/dev/uhid", panel_config;
+  unsigned long open_timeout_ms = 30000, hold_ms = 1000;
   weft::sim::SimOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -77,6 +124,16 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--edges") {
       edges_only = true;
+    } else if (arg == "--uhid") {
+      uhid = true;
+    } else if (arg == "--uhid-path") {
+      uhid_path = value("--uhid-path");
+    } else if (arg == "--panel-config") {
+      panel_config = value("--panel-config");
+    } else if (arg == "--open-timeout-ms") {
+      open_timeout_ms = number("--open-timeout-ms", 0, 3600000);
+    } else if (arg == "--hold-ms") {
+      hold_ms = number("--hold-ms", 0, 3600000);
     } else if (arg == "--scan-us") {
       options.scan_us = static_cast<uint32_t>(number("--scan-us", 1000, 100000));
       if (options.scan_us % 1000 != 0) {
@@ -92,6 +149,26 @@ int main(int argc, char** argv) {
       return 2;
     } else {
       path = arg;
+    }
+  }
+  weft::sim::UhidIdentity id;
+  id.vendor_id = weft::firmware::kPanelVendorId;
+  id.product_id = weft::firmware::kPanelProductId;
+  if (!panel_config.empty()) {
+    std::ifstream f(panel_config);
+    if (!f) {
+      std::fprintf(stderr, "weft-panel-sim: cannot open panel config '%s'\n", panel_config.c_str());
+      return 2;
+    }
+    std::stringstream json;
+    json << f.rdbuf();
+    try {
+      const auto config = weft::input::parse_panel_config(json.str(), panel_config);
+      id.vendor_id = config.hid.vendor_id;
+      id.product_id = config.hid.product_id;
+    } catch (const weft::input::PanelConfigError& e) {
+      std::fprintf(stderr, "weft-panel-sim: %s\n", e.what());
+      return 2;
     }
   }
   std::stringstream text;
@@ -113,6 +190,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const auto result = weft::sim::simulate_panel(edges, options);
+    if (uhid) return play_on_uhid(result, uhid_path, id, open_timeout_ms, hold_ms);
     for (const auto& r : result.reports) {
       if (format == "binary") {
         std::fwrite(r.bytes.data(), 1, r.bytes.size(), stdout);
