@@ -87,6 +87,29 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+  return s;
+}
+
+// The command that regenerates this run, every setting spelled out.
+std::string command_line(const BenchArgs& a, bool quick) {
+  std::ostringstream c;
+  c << "weft bench";
+  if (quick) c << " --quick";
+  else
+    c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --envs " << joined(a.envs)
+      << " --speed-width " << a.speed_width << " --speed-height " << a.speed_height << " --width " << a.width
+      << " --height " << a.height << " --sg-grid " << a.sg_grid << " --tangent-samples " << a.tangent_samples
+      << " --stress-points " << a.stress_points;
+  c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
+  if (!a.methods.empty()) c << " --methods " << joined(a.methods);
+  if (a.no_stability) c << " --no-stability";
+  c << " --out " << a.out;
+  return c.str();
+}
+
 void write_image_png(const Image& img, const std::filesystem::path& file, double exposure) { write_png(img, file, exposure); }
 
 int run_bench(BenchArgs a) {
@@ -287,7 +310,7 @@ int run_bench(BenchArgs a) {
   // Report
   std::ofstream md(out / "report.md");
   md << "# Weft bench: speed against accuracy\n\n";
-  md << "Regenerate: `weft bench" << (a.quick ? " --quick" : "") << " --out " << a.out << "` (" << fmt(total, 4)
+  md << "Regenerate: `" << command_line(a, a.quick) << "` (" << fmt(total, 4)
      << " s this run; " << references_rendered << " reference renders, " << fmt(reference_seconds, 4) << " s, "
      << references_cached << " from the cache).\n\n";
   md << "GL renderer: `" << renderer << "`. Speed: median of " << a.speed_frames << " frames after one warm-up frame, "
