@@ -90,7 +90,7 @@ TEST_P(MethodParity, GlslMatchesCpp) {
     parts = {"sg_lighting.glsl", "mdfrot.glsl"};
     call = "vec4(mdfrot_radiance(n, u, wo), 1.0)";
   } else {
-    parts = {"microcylinder.glsl", "sg_lighting.glsl", "thin.glsl"};
+    parts = {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl"};
     call = "thin_radiance(n, u, wo)";
   }
   std::string fs = shader_preamble();

@@ -25,7 +25,7 @@ const std::vector<MethodInfo>& method_table() {
       {Method::sgpoint, "sgpoint", {"microcylinder.glsl", "sgpoint.frag"}, false},
       {Method::sheen, "sheen", {"sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
       {Method::mdfrot, "mdfrot", {"sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
-      {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin.glsl", "thin.frag"}, true},
+      {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
   };
   return table;
 }

@@ -66,9 +66,14 @@ ThinShade thin_radiance(const ClothBsdf& bsdf, const ThinParams& p, SurfaceFrame
     frame.n = -frame.n;
     frame.v = glm::cross(frame.n, frame.u);
   }
+  return thin_compose(p, frame.n, wo, sgs, sgpoint_radiance(bsdf, frame, wo, sgs));
+}
+
+ThinShade thin_compose(const ThinParams& p, const dvec3& n, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                       const dvec3& reflection) {
   ThinShade s;
-  s.alpha = thin_alpha(p, glm::dot(frame.n, wo));
-  s.source = (1.0 - s.alpha) * sgpoint_radiance(bsdf, frame, wo, sgs) + thin_scatter(p, frame.n, wo, sgs);
+  s.alpha = thin_alpha(p, glm::dot(n, wo));
+  s.source = (1.0 - s.alpha) * reflection + thin_scatter(p, n, wo, sgs);
   return s;
 }
 

@@ -44,6 +44,11 @@ struct ThinShade {
   dvec3 source{0.0};  // premultiplied: added to α·L_behind
   double alpha = 1.0;
 };
+// The layer over any reflection method: `reflection` is that method's radiance at the frame
+// (n facing ω_o). thin_radiance below is this with sgpoint.
+ThinShade thin_compose(const ThinParams& p, const dvec3& n, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                       const dvec3& reflection);
+
 // The whole `thin` method over sgpoint reflection; `frame.n` is turned to face ω_o.
 ThinShade thin_radiance(const ClothBsdf& bsdf, const ThinParams& p, SurfaceFrame frame, const dvec3& wo,
                         std::span<const SphericalGaussian> sgs);

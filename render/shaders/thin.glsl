@@ -1,7 +1,10 @@
 // Method `thin` (seed 004): optically thin layer — alpha e^{−τ/μ}, single-scatter diffuse
-// reflection/transmission from the SG irradiance on both sides, composed over the
-// microcylinder reflection (sgpoint). Mirrors methods/thin.cpp; needs microcylinder.glsl and
-// sg_lighting.glsl.
+// reflection/transmission from the SG irradiance on both sides, composed over a reflection
+// method: the program links one definition of thin_reflection() (thin_over_sgpoint.glsl now;
+// an iwasaki one plugs in the same way). Mirrors methods/thin.cpp; needs sg_lighting.glsl.
+// Radiance reflected by the cloth's own reflection method, n facing the viewer.
+vec3 thin_reflection(vec3 n, vec3 u, vec3 wo);
+
 uniform float u_thin_tau;
 uniform vec3 u_thin_albedo;
 
@@ -36,8 +39,6 @@ vec3 thin_scatter(vec3 n, vec3 wo) {
 // Premultiplied source and alpha; n is turned to face the viewer here.
 vec4 thin_radiance(vec3 n, vec3 u, vec3 wo) {
   if (dot(n, wo) < 0.0) n = -n;
-  vec3 refl = vec3(0.0);
-  for (int k = 0; k < u_sg_count; ++k) refl += sg_power(k) * cloth_integrand(n, u, u_sg_axis[k], wo);
   float a = thin_alpha(dot(n, wo));
-  return vec4((1.0 - a) * refl + thin_scatter(n, wo), a);
+  return vec4((1.0 - a) * thin_reflection(n, u, wo) + thin_scatter(n, wo), a);
 }
