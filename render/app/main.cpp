@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   add(weft::add_probe_command);
   add(weft::add_bake_command);
   add(weft::add_run_command);
+  add(weft::add_bench_command);
 
   try {
     app.parse(argc, argv);

@@ -11,6 +11,7 @@
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/gpu_render.h"
+#include "gpu/scene_renderer.h"
 #include "app/commands.h"
 #include "core/fabric.h"
 #include "image/image.h"
@@ -73,8 +74,12 @@ std::filesystem::path png_beside(const std::filesystem::path& exr) {
 }
 
 int run_render(const RenderArgs& a) {
-  if (a.method != "reference" && a.method != "sgpoint")
-    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference, sgpoint)");
+  {
+    std::string all = "reference";
+    bool known = a.method == "reference";
+    for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
+    if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
+  }
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -234,7 +239,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or sgpoint (GPU)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, sheen, mdfrot, thin")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
   sub->add_option("--sgs", a->sgs_file,

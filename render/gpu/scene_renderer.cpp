@@ -2,17 +2,40 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "gpu/egl_context.h"
 #include "gpu/fabric_uniforms.h"
+#include "gpu/method_uniforms.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
 
 namespace {
-constexpr int kMaxSgs = 40;  // MAX_SGS in sgpoint.frag
+// The method table: fragment shader parts in order, and whether the cloth shows what lies
+// behind it (drawn last, blended dst·α + src, over the SG environment).
+struct MethodInfo {
+  Method method;
+  const char* name;
+  std::vector<std::string_view> fragment;
+  bool see_through;
+};
+const std::vector<MethodInfo>& method_table() {
+  static const std::vector<MethodInfo> table = {
+      {Method::sgpoint, "sgpoint", {"microcylinder.glsl", "sgpoint.frag"}, false},
+      {Method::sheen, "sheen", {"sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
+      {Method::mdfrot, "mdfrot", {"sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
+      {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
+  };
+  return table;
+}
+const MethodInfo& info(Method m) {
+  for (const auto& i : method_table())
+    if (i.method == m) return i;
+  throw std::logic_error("method missing from the method table");
+}
 
-std::string program_source(std::initializer_list<std::string_view> parts) {
+std::string program_source(const std::vector<std::string_view>& parts) {
   std::string s = shader_preamble();
   for (auto p : parts) s += shaders::source(p);
   return s;
@@ -26,27 +49,50 @@ void main() {
 }  // namespace
 
 Method parse_method(const std::string& name) {
-  if (name == "sgpoint") return Method::sgpoint;
-  throw std::invalid_argument("unknown GPU method '" + name + "' (available: sgpoint)");
+  std::string all;
+  for (const auto& i : method_table()) {
+    if (name == i.name) return i.method;
+    all += (all.empty() ? "" : ", ") + std::string(i.name);
+  }
+  throw std::invalid_argument("unknown GPU method '" + name + "' (available: " + all + ")");
+}
+
+std::string method_name(Method method) { return info(method).name; }
+
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (const auto& i : method_table()) names.push_back(i.name);
+  return names;
 }
 
 struct SceneRenderer::Object {
   const SceneObject* source;
   GpuMesh mesh;
   std::unique_ptr<ClothBsdf> bsdf;  // cloth only
+  SheenParams sheen;
+  MdfrotParams mdfrot;
+  ThinParams thin;
+  void set(const Fabric& f, int tangent_samples) {
+    bsdf = std::make_unique<ClothBsdf>(f, tangent_samples);
+    sheen = sheen_params(f);
+    mdfrot = mdfrot_params(f);
+    thin = thin_params(f);
+  }
 };
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples)
-    : tangent_samples_(tangent_samples) {
-  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}),
-                                               program_source({"microcylinder.glsl", "sgpoint.frag"}));
+    : method_(method), tangent_samples_(tangent_samples) {
+  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source(info(method).fragment));
+  if (info(method).see_through)
+    background_program_ =
+        std::make_unique<GlProgram>(kFullscreenVs, program_source({"sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
   for (const auto& o : scene.objects) {
-    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr});
+    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}});
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
-      obj->bsdf = std::make_unique<ClothBsdf>(fabrics[cloth++], tangent_samples_);
+      obj->set(fabrics[cloth++], tangent_samples_);
     }
     objects_.push_back(std::move(obj));
   }
@@ -58,14 +104,14 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->bsdf && cloth++ == cloth_index) {
-      o->bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
+      o->set(fabric, tangent_samples_);
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
 }
 
 void SceneRenderer::set_lighting(const SgLighting& sgs) {
-  if (sgs.size() > kMaxSgs) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
+  if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
   sgs_ = sgs;
   // Lambertian surfaces: SG irradiance per vertex, once per lighting change.
   for (auto& o : objects_) {
@@ -85,10 +131,21 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
   const glm::mat4 proj = glm::perspective(float(glm::radians(camera.fov_deg)), float(width) / height, 0.05f, 100.0f);
   const glm::mat4 view = glm::lookAt(glm::vec3(camera.position), glm::vec3(camera.target), glm::vec3(camera.up));
   const glm::mat4 vp = proj * view;
+  const bool see_through = info(method_).see_through;
   glViewport(0, 0, width, height);
-  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (see_through) {  // the environment behind the cloth
+    background_program_->use();
+    upload_sg_lighting(*background_program_, sgs_);
+    const glm::mat4 inv = glm::inverse(vp);
+    glUniformMatrix4fv(background_program_->uniform("u_inverse_view_projection"), 1, GL_FALSE, glm::value_ptr(inv));
+    glUniform2f(background_program_->uniform("u_viewport"), float(width), float(height));
+    glDisable(GL_DEPTH_TEST);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glEnable(GL_DEPTH_TEST);
 
   std::vector<float> axes, powers;
   for (const auto& g : sgs_) {
@@ -96,23 +153,54 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     powers.insert(powers.end(), {float(p.r), float(p.g), float(p.b)});
   }
-  for (auto& o : objects_) {
-    const GlProgram& prog = o->bsdf ? *cloth_program_ : *lambert_program_;
-    prog.use();
-    glUniformMatrix4fv(prog.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-    if (o->bsdf) {
-      upload_fabric(prog, *o->bsdf);
-      glUniform3f(prog.uniform("u_eye"), float(camera.position.x), float(camera.position.y), float(camera.position.z));
-      glUniform1i(prog.uniform("u_sg_count"), int(sgs_.size()));
-      if (!sgs_.empty()) {
-        glUniform3fv(prog.uniform("u_sg_axis"), GLsizei(sgs_.size()), axes.data());
-        glUniform3fv(prog.uniform("u_sg_power"), GLsizei(sgs_.size()), powers.data());
+  // Opaque surfaces first; see-through cloth last, blended over them without writing depth.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (auto& o : objects_) {
+      const bool blended = o->bsdf && see_through;
+      if (blended != (pass == 1)) continue;
+      const GlProgram& prog = o->bsdf ? *cloth_program_ : *lambert_program_;
+      prog.use();
+      glUniformMatrix4fv(prog.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+      if (o->bsdf) {
+        glUniform3f(prog.uniform("u_eye"), float(camera.position.x), float(camera.position.y), float(camera.position.z));
+        switch (method_) {
+          case Method::sgpoint:
+            upload_fabric(prog, *o->bsdf);
+            glUniform1i(prog.uniform("u_sg_count"), int(sgs_.size()));
+            if (!sgs_.empty()) {
+              glUniform3fv(prog.uniform("u_sg_axis"), GLsizei(sgs_.size()), axes.data());
+              glUniform3fv(prog.uniform("u_sg_power"), GLsizei(sgs_.size()), powers.data());
+            }
+            break;
+          case Method::sheen:
+            upload_sg_lighting(prog, sgs_);
+            upload_sheen(prog, o->sheen);
+            break;
+          case Method::mdfrot:
+            upload_sg_lighting(prog, sgs_);
+            upload_mdfrot(prog, o->mdfrot);
+            break;
+          case Method::thin:
+            upload_fabric(prog, *o->bsdf);
+            upload_sg_lighting(prog, sgs_);
+            upload_thin(prog, o->thin);
+            break;
+        }
+      } else {
+        const glm::dvec3 a = o->source->albedo;
+        glUniform3f(prog.uniform("u_albedo"), float(a.r), float(a.g), float(a.b));
       }
-    } else {
-      const glm::dvec3 a = o->source->albedo;
-      glUniform3f(prog.uniform("u_albedo"), float(a.r), float(a.g), float(a.b));
+      if (blended) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+      }
+      o->mesh.draw();
+      if (blended) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+      }
     }
-    o->mesh.draw();
   }
 }
 

@@ -8,6 +8,9 @@
 
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
+#include "methods/mdfrot.h"
+#include "methods/sheen.h"
+#include "methods/thin.h"
 #include "gpu/gl_program.h"
 #include "gpu/gpu_mesh.h"
 #include "image/image.h"
@@ -15,8 +18,12 @@
 
 namespace weft::gpu {
 
-enum class Method { sgpoint };
+// The GPU methods (DESIGN.md §4). A new one is a value here and a row in scene_renderer.cpp's
+// method table (name, fragment shader parts, whether the cloth is see-through).
+enum class Method { sgpoint, sheen, mdfrot, thin };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
+std::string method_name(Method method);
+std::vector<std::string> method_names();
 
 class SceneRenderer {
 public:
@@ -33,7 +40,8 @@ public:
 private:
   struct Object;
   std::vector<std::unique_ptr<Object>> objects_;
-  std::unique_ptr<GlProgram> cloth_program_, lambert_program_;
+  std::unique_ptr<GlProgram> cloth_program_, lambert_program_, background_program_;
+  Method method_;
   SgLighting sgs_;
   int tangent_samples_;
 };

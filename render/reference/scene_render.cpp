@@ -9,7 +9,9 @@
 
 #include <omp.h>
 
+#include "methods/thin.h"
 #include "reference/sg_quadrature.h"
+#include "reference/thin_quadrature.h"
 
 namespace weft {
 
@@ -99,9 +101,35 @@ dvec3 ReferenceRenderer::pixel(int x, int y, int level, PixelKind* kind) const {
     if (kind) *kind = PixelKind::background;
     return lighting_.background ? lighting_.background(dir) : dvec3(0.0);
   }
-  if (kind)
-    *kind = scene_.objects[hit->object].material == Material::cloth ? PixelKind::cloth : PixelKind::lambertian;
+  const bool cloth = scene_.objects[hit->object].material == Material::cloth;
+  if (kind) *kind = cloth ? PixelKind::cloth : PixelKind::lambertian;
+  if (cloth && options_.thin_cloth) return shade_thin(*hit, dir, level, 0);
   return shade(*hit, -dir, level);
+}
+
+dvec3 ReferenceRenderer::shade_thin(const RayHit& hit, const dvec3& dir, int level, int depth) const {
+  if (lighting_.sgs.empty()) throw std::invalid_argument("reference: thin cloth needs SG lighting");
+  const dvec3 wo = -dir;
+  SurfacePoint s = rays_.surface(hit);
+  if (glm::dot(s.normal, wo) < 0.0) s.normal = -s.normal;  // the side facing the viewer, as the GPU does
+  const dvec3 ng = glm::dot(s.geometric_normal, wo) < 0.0 ? -s.geometric_normal : s.geometric_normal;
+  const double eps = rays_.ray_epsilon();
+  const ThinParams p = thin_params(bsdfs_[level][hit.object]->fabric());
+  const double alpha = thin_alpha(p, glm::dot(s.normal, wo));
+  ThinQuadratureOptions opt;
+  opt.fixed_polar = options_.sg_grid << level;
+  // Light reaches the layer from either side; the layer itself does not block it.
+  opt.visible = [&](const dvec3& wi) {
+    return rays_.unoccluded(s.position + (glm::dot(wi, ng) > 0.0 ? eps : -eps) * ng, wi);
+  };
+  const dvec3 scatter = integrate_thin_scatter(p, s.normal, wo, lighting_.sgs, opt).radiance;
+  dvec3 behind(0.0);
+  const auto next = rays_.intersect(s.position - ng * eps, dir);
+  if (!next) behind = lighting_.background ? lighting_.background(dir) : dvec3(0.0);
+  else if (scene_.objects[next->object].material == Material::cloth)
+    behind = depth < 4 ? shade_thin(*next, dir, level, depth + 1) : dvec3(0.0);
+  else behind = shade(*next, wo, level);
+  return (1.0 - alpha) * shade(hit, wo, level) + scatter + alpha * behind;
 }
 
 ReferenceRenderResult ReferenceRenderer::render(int level) const {

@@ -48,6 +48,11 @@ struct ReferenceRenderOptions {
   // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
   int check_stride = 4;
   bool check_convergence = true;
+  // Cloth as seed 004's optically thin layer (methods/thin.h, parameters thin_params(fabric)):
+  // L = (1 − α)·reflection + single scattering (reference/thin_quadrature.h on the SG grid,
+  // with visibility from either side) + α·(what the ray continues to), α = e^{−τ/|n·ω_o|}.
+  // SG lighting only. Shadow rays still treat cloth as opaque.
+  bool thin_cloth = false;
   // Called with the fraction done, from one thread, at most a few hundred times.
   std::function<void(double)> progress;
 };
@@ -85,6 +90,8 @@ public:
 
   // Shading of a surface point seen from direction wo (unit, toward the viewer) at a level.
   glm::dvec3 shade(const RayHit& hit, const glm::dvec3& wo, int level) const;
+  // A thin cloth hit seen along `dir` (options.thin_cloth), `depth` layers deep.
+  glm::dvec3 shade_thin(const RayHit& hit, const glm::dvec3& dir, int level, int depth) const;
 
 private:
   const Scene& scene_;

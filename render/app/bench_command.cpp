@@ -1,0 +1,405 @@
+// `weft bench`: the speed/accuracy ladder (issue 6). Every GPU method × scene × fabric ×
+// environment: speed at 640×480 (median over ≥ 20 frames after a warm-up, glFinish
+// included) and accuracy at 320×240 as relative RMSE over the cloth pixels against a cached
+// `reference` render under the same SGs; then the stability table (render/bench/stability.h).
+// Writes results.csv, chart.png, report.md and the images the report shows into --out.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "app/asset_paths.h"
+#include "app/cli_parse.h"
+#include "app/commands.h"
+#include "app/gpu_render.h"
+#include "bench/chart.h"
+#include "bench/image_metrics.h"
+#include "bench/reference_cache.h"
+#include "bench/stability.h"
+#include "core/fabric.h"
+#include "gpu/scene_renderer.h"
+#include "lighting/env_map.h"
+#include "lighting/sg_fit.h"
+#include "reference/scene_render.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+namespace {
+
+// The ladder of DESIGN.md §4, data-driven: a method is benchmarked when the GPU runtime has
+// it (gpu::method_names()); the rest are reported as missing. `scenes` limits a method to the
+// scenes it is for; `thin_reference`: measured against the reference with cloth as seed 004's
+// thin layer (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.
+struct LadderEntry {
+  std::string name;
+  std::set<std::string> scenes;  // empty: every scene
+  bool thin_reference = false;
+};
+const std::vector<LadderEntry>& ladder() {
+  static const std::vector<LadderEntry> l = {
+      {"iwasaki", {}, false},
+      {"mizutani", {}, false},
+      {"sgpoint", {}, false},
+      {"mdfrot", {}, false},
+      {"sheen", {}, false},
+      {"thin", {"curtain"}, true},
+  };
+  return l;
+}
+
+struct BenchArgs {
+  bool quick = false;
+  std::string out = "bench-out";
+  std::string cache;  // default: <out>/reference-cache
+  std::vector<std::string> scenes{"swatch", "pillow", "drape", "curtain"};
+  std::vector<std::string> fabrics{"scene"};
+  std::vector<std::string> envs{"scene"};
+  std::vector<std::string> methods;  // empty: all available
+  int speed_width = 640, speed_height = 480, speed_frames = 20;
+  int width = 320, height = 240;
+  int sg_grid = 8, tangent_samples = 16, sg_count = 10;
+  int stress_points = 24;
+  bool no_stability = false;
+};
+
+struct Row {
+  std::string scene, fabric, env, method;
+  double ms = 0.0;
+  int frames = 0;
+  double rmse = -1.0;  // < 0: not measured
+  size_t cloth_pixels = 0;
+  std::string note, image, error_image, reference_image;
+};
+
+std::string fmt(double x, int digits = 3) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, x);
+  return b;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+  return s;
+}
+
+// The command that regenerates this run, every setting spelled out.
+std::string command_line(const BenchArgs& a, bool quick) {
+  std::ostringstream c;
+  c << "weft bench";
+  if (quick) c << " --quick";
+  else
+    c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --envs " << joined(a.envs)
+      << " --speed-width " << a.speed_width << " --speed-height " << a.speed_height << " --width " << a.width
+      << " --height " << a.height << " --sg-grid " << a.sg_grid << " --tangent-samples " << a.tangent_samples
+      << " --stress-points " << a.stress_points;
+  c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
+  if (!a.methods.empty()) c << " --methods " << joined(a.methods);
+  if (a.no_stability) c << " --no-stability";
+  c << " --out " << a.out;
+  return c.str();
+}
+
+void write_image_png(const Image& img, const std::filesystem::path& file, double exposure) { write_png(img, file, exposure); }
+
+int run_bench(BenchArgs a) {
+  if (a.quick) {
+    a.scenes = {"swatch"};
+    a.fabrics = {"linen_plain"};
+    a.envs = {"scene"};
+    a.speed_width = 64, a.speed_height = 48;  // --speed-frames stays (20 by default)
+    a.width = 64, a.height = 48;
+    a.sg_grid = 4, a.tangent_samples = 8;
+    a.stress_points = 2;
+  }
+  if (a.speed_frames < 1 || a.speed_frames > 1000) throw UsageError("--speed-frames: must be within 1..1000");
+  if (a.width < 8 || a.height < 8 || a.width > 4096 || a.height > 4096 || a.speed_width < 8 || a.speed_height < 8 ||
+      a.speed_width > 4096 || a.speed_height > 4096)
+    throw UsageError("--width/--height/--speed-width/--speed-height: must be within 8..4096");
+  if (a.sg_grid < 1 || a.sg_grid > 256) throw UsageError("--sg-grid: must be within 1..256");
+  if (a.tangent_samples < 1 || a.tangent_samples > 64) throw UsageError("--tangent-samples: must be within 1..64");
+  if (a.sg_count < 1 || a.sg_count > 40) throw UsageError("--sg-count: must be within 1..40");
+  if (a.stress_points < 0 || a.stress_points > 1000) throw UsageError("--stress-points: must be within 0..1000");
+  const auto available = gpu::method_names();
+  std::vector<LadderEntry> run;
+  std::vector<std::string> missing;
+  for (const auto& m : a.methods) {
+    bool ok = false;
+    for (const auto& n : available) ok = ok || n == m;
+    if (!ok) throw UsageError("--methods: '" + m + "' is not a GPU method here");
+  }
+  for (const auto& e : ladder()) {
+    const bool has = std::find(available.begin(), available.end(), e.name) != available.end();
+    if (!has) {
+      missing.push_back(e.name);
+      continue;
+    }
+    if (a.methods.empty() || std::find(a.methods.begin(), a.methods.end(), e.name) != a.methods.end()) run.push_back(e);
+  }
+  for (const auto& n : available) {  // a GPU method the ladder does not list still runs
+    bool listed = false;
+    for (const auto& e : ladder()) listed = listed || e.name == n;
+    if (!listed && (a.methods.empty() || std::find(a.methods.begin(), a.methods.end(), n) != a.methods.end()))
+      run.push_back({n, {}, false});
+  }
+
+  const std::filesystem::path out(a.out);
+  const std::filesystem::path cache = a.cache.empty() ? out / "reference-cache" : std::filesystem::path(a.cache);
+  std::filesystem::create_directories(out / "images");
+  const auto t_start = std::chrono::steady_clock::now();
+  const auto assets = assets_dir();
+  std::vector<Row> rows;
+  std::set<std::string> written;  // reference PNGs written this run
+  std::string renderer;
+  double reference_seconds = 0.0;
+  int references_rendered = 0, references_cached = 0;
+
+  for (const auto& scene_name : a.scenes) {
+    Scene scene;
+    try {
+      scene = load_scene_preset(scene_name, assets / "scenes");
+    } catch (const SceneError& e) {
+      throw UsageError(e.what());
+    }
+    const auto scene_file = assets / "scenes" / (scene_name + ".json");
+    for (const auto& fabric_arg : a.fabrics) {
+      for (const auto& env_arg : a.envs) {
+        Scene s = scene;
+        std::map<std::string, Fabric> fabrics;
+        for (auto& o : s.objects)
+          if (o.material == Material::cloth) {
+            if (fabric_arg != "scene") o.fabric = fabric_arg;
+            if (!fabrics.count(o.fabric)) fabrics.emplace(o.fabric, load_fabric_preset(o.fabric, assets / "fabrics"));
+          }
+        const std::string fabric_label = fabric_arg == "scene" ? fabrics.begin()->first : fabric_arg;
+        const std::string env = env_arg == "scene" ? s.environment : env_arg;
+        const auto env_file = assets / "envmaps" / (env + ".exr");
+        if (!std::filesystem::exists(env_file)) throw UsageError("--envs: no environment map " + env_file.string());
+        const EnvMap map = load_env_map(env_file, NonFinitePolicy::clamp, nullptr);
+        SgFitOptions fit;
+        fit.count = a.sg_count;
+        const SgLighting sgs = fit_sgs(map, fit);
+        const std::string tag = scene_name + "_" + fabric_label + "_" + env;
+
+        // The references (opaque cloth, and thin cloth for see-through methods), from the
+        // cache when every input is the same.
+        std::map<bool, bench::CachedReference> refs;
+        auto reference = [&](bool thin) -> const bench::CachedReference& {
+          if (refs.count(thin)) return refs.at(thin);
+          bench::InputHash h;
+          h.add(bench::kReferenceCodeVersion).add_file(scene_file);
+          for (const auto& entry : std::filesystem::directory_iterator(assets / "scenes"))
+            if (entry.path().extension() == ".bpt") h.add_file(entry.path());  // mesh data scenes read
+          for (const auto& [name, f] : fabrics) h.add(name).add_file(assets / "fabrics" / (name + ".json"));
+          h.add(env).add(thin ? "thin" : "opaque");
+          for (const auto& g : sgs) {
+            h.add_number(g.axis.x).add_number(g.axis.y).add_number(g.axis.z).add_number(g.sharpness);
+            h.add_number(g.amplitude.r).add_number(g.amplitude.g).add_number(g.amplitude.b);
+          }
+          h.add_number(a.width).add_number(a.height).add_number(a.sg_grid).add_number(a.tangent_samples);
+          const std::string name = tag + (thin ? "_thin" : "");
+          const auto cache_file = cache / (name + "_" + h.hex() + ".ref");
+          auto ref = bench::load_reference(cache_file);
+          if (ref) {
+            ++references_cached;
+          } else {
+            std::cerr << "weft bench: reference " << name << " at " << a.width << "x" << a.height << " ..." << std::flush;
+            ReferenceLighting lighting;
+            lighting.sgs = sgs;
+            lighting.background = [sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+            ReferenceRenderOptions opt;
+            opt.width = a.width, opt.height = a.height, opt.sg_grid = a.sg_grid, opt.tangent_samples = a.tangent_samples;
+            opt.check_convergence = false;
+            opt.thin_cloth = thin;
+            const auto t = std::chrono::steady_clock::now();
+            const ReferenceRenderer rr(s, fabrics, lighting, opt);
+            const ReferenceRenderResult res = rr.render(0);
+            const double secs = seconds_since(t);
+            reference_seconds += secs;
+            ++references_rendered;
+            std::cerr << " " << fmt(secs) << " s\n";
+            ref = bench::CachedReference{res.image, res.kinds};
+            bench::store_reference(cache_file, *ref);
+          }
+          return refs.emplace(thin, std::move(*ref)).first->second;
+        };
+        for (const auto& m : run) {
+          if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
+          const bench::CachedReference* ref = &reference(m.thin_reference);
+          std::vector<bool> surface(ref->kinds.size());
+          for (size_t i = 0; i < surface.size(); ++i) surface[i] = ref->kinds[i] != PixelKind::background;
+          const double exposure = auto_exposure(ref->image, surface);
+          const std::string ref_png = "images/" + tag + (m.thin_reference ? "_thin" : "") + "_reference.png";
+          if (!written.count(ref_png)) {
+            write_image_png(ref->image, out / ref_png, exposure);
+            written.insert(ref_png);
+          }
+          Row r;
+          r.scene = scene_name, r.fabric = fabric_label, r.env = env, r.method = m.name;
+          const GpuFrame speed = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, a.speed_frames);
+          renderer = speed.renderer;
+          r.ms = speed.median_ms, r.frames = speed.frames;
+          const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0);
+          r.image = "images/" + tag + "_" + m.name + ".png";
+          write_image_png(acc.image, out / r.image, exposure);
+          r.reference_image = ref_png;
+          {
+            const bench::ClothError e = bench::cloth_error(acc.image, ref->image, ref->kinds);
+            r.rmse = e.relative_rmse, r.cloth_pixels = e.cloth_pixels;
+            const Image em = bench::error_map(acc.image, ref->image, ref->kinds);
+            std::vector<unsigned char> rgb(em.pixels.size() * 3);
+            for (size_t i = 0; i < em.pixels.size(); ++i)
+              for (int c = 0; c < 3; ++c) rgb[3 * i + c] = static_cast<unsigned char>(std::lround(255.0 * em.pixels[i][c]));
+            r.error_image = "images/" + tag + "_" + m.name + "_error.png";
+            bench::write_rgb8_png(out / r.error_image, em.width, em.height, rgb);
+          }
+          if (m.thin_reference) r.note = "against the thin-layer reference";
+          std::cerr << "weft bench: " << tag << " " << m.name << ": " << fmt(r.ms) << " ms/frame at " << a.speed_width
+                    << "x" << a.speed_height << ", relative RMSE " << (r.rmse >= 0 ? fmt(r.rmse) : "n/a") << "\n";
+          rows.push_back(r);
+        }
+      }
+    }
+  }
+
+  // Stability table: every CPU method × stress case, against the reference.
+  struct StabilityCell {
+    std::string method, stress, notes;
+    bench::StressResult r;
+  };
+  std::vector<StabilityCell> stability;
+  if (!a.no_stability && a.stress_points > 0) {
+    const auto cases = bench::stress_cases(assets / "fabrics", a.stress_points);
+    std::vector<std::vector<glm::dvec3>> refs;
+    for (const auto& c : cases) refs.push_back(bench::stress_reference(c));
+    for (const auto& m : bench::cpu_methods())
+      for (size_t i = 0; i < cases.size(); ++i)
+        stability.push_back({m.name, cases[i].name, cases[i].notes, bench::run_stress(m, cases[i], &refs[i])});
+  }
+  const double total = seconds_since(t_start);
+
+  // CSV
+  {
+    std::ofstream csv(out / "results.csv");
+    csv << "scene,fabric,env,method,speed_width,speed_height,ms_per_frame,frames,width,height,relative_rmse,cloth_pixels,"
+           "renderer,note\n";
+    for (const auto& r : rows)
+      csv << r.scene << "," << r.fabric << "," << r.env << "," << r.method << "," << a.speed_width << "," << a.speed_height
+          << "," << fmt(r.ms, 6) << "," << r.frames << "," << a.width << "," << a.height << ","
+          << (r.rmse >= 0 ? fmt(r.rmse, 6) : "") << "," << r.cloth_pixels << ",\"" << renderer << "\",\"" << r.note
+          << "\"\n";
+    if (!csv) throw std::runtime_error("cannot write " + (out / "results.csv").string());
+  }
+  std::vector<bench::ChartPoint> points;
+  for (const auto& r : rows)
+    if (r.rmse > 0) points.push_back({r.method, r.ms, r.rmse});
+  bench::write_chart_png(out / "chart.png", points, "WEFT BENCH " + std::to_string(a.speed_width) + "X" +
+                                                          std::to_string(a.speed_height) + " (" + renderer + ")");
+  const auto markers = bench::chart_markers(points);
+
+  // Report
+  std::ofstream md(out / "report.md");
+  md << "# Weft bench: speed against accuracy\n\n";
+  md << "Regenerate: `" << command_line(a, a.quick) << "` (" << fmt(total, 4)
+     << " s this run; " << references_rendered << " reference renders, " << fmt(reference_seconds, 4) << " s, "
+     << references_cached << " from the cache).\n\n";
+  md << "GL renderer: `" << renderer << "`. Speed: median of " << a.speed_frames << " frames after one warm-up frame, "
+     << "glFinish included, at " << a.speed_width << "x" << a.speed_height << ". Accuracy: relative RMSE "
+     << "`sqrt(mean((x-r)^2))/mean(r)` over the cloth pixels at " << a.width << "x" << a.height << " against `reference` "
+     << "under the same " << a.sg_count << " fitted SGs (SG grid " << a.sg_grid << "x" << 2 * a.sg_grid << ", "
+     << a.tangent_samples << " tangent samples per thread). Times on llvmpipe: compare ratios within one run.\n\n";
+  md << "![chart](chart.png)\n\n";
+  md << "| method | ms/frame (geo. mean) | relative RMSE (geo. mean) | Pareto front |\n|---|---|---|---|\n";
+  for (const auto& k : markers)
+    md << "| " << k.method << " | " << fmt(k.ms) << " | " << fmt(k.relative_rmse) << " | " << (k.pareto ? "yes" : "")
+       << " |\n";
+  md << "\n## Every case (results.csv)\n\n| scene | fabric | env | method | ms/frame | relative RMSE | note |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    md << "| " << r.scene << " | " << r.fabric << " | " << r.env << " | " << r.method << " | " << fmt(r.ms) << " | "
+       << (r.rmse >= 0 ? fmt(r.rmse) : "n/a") << " | " << r.note << " |\n";
+  md << "\n## Images (method | reference | error: black 0, red 0.5, yellow ≥ 1 of the mean cloth radiance)\n\n";
+  md << "| case | method | reference | error |\n|---|---|---|---|\n";
+  for (const auto& r : rows)
+    md << "| " << r.scene << " / " << r.fabric << " / " << r.env << " / " << r.method << " | ![](" << r.image
+       << ") | ![](" << r.reference_image << ") | " << (r.error_image.empty() ? "n/a" : "![](" + r.error_image + ")")
+       << " |\n";
+  md << "\n## Stability: method × stress case → error\n\n";
+  if (stability.empty()) {
+    md << "Not run (--no-stability).\n";
+  } else {
+    md << "C++ evaluation of each method at " << a.stress_points << " points per case (render/bench/stability.h), "
+       << "relative RMSE against the canonical model by quadrature (1 % tolerance) (for `thin`: (1-α)·canonical + the thin layer "
+       << "integrated exactly). NaN/Inf/negative counts must be 0 (tests/method_stability_test.cpp asserts it at "
+       << "150 points per case).\n\n| method |";
+    std::vector<std::string> case_names;
+    for (const auto& c : stability)
+      if (std::find(case_names.begin(), case_names.end(), c.stress) == case_names.end()) case_names.push_back(c.stress);
+    for (const auto& c : case_names) md << " " << c << " |";
+    md << "\n|---|";
+    for (size_t i = 0; i < case_names.size(); ++i) md << "---|";
+    std::string current;
+    for (const auto& c : stability) {
+      if (c.method != current) md << "\n| " << c.method << " |", current = c.method;
+      std::string cell;
+      if (c.r.non_finite || c.r.negative)
+        cell = "**" + std::to_string(c.r.non_finite) + " NaN/Inf, " + std::to_string(c.r.negative) + " negative** ";
+      if (c.r.measured && c.r.reference_mean > 0) cell += fmt(c.r.relative_rmse, 2);
+      else if (c.r.measured) cell += c.r.max_abs == 0.0 ? "exact 0" : "nonzero in the dark: " + fmt(c.r.max_abs, 2);
+      md << " " << cell << " |";
+    }
+    md << "\n\nCases: ";
+    for (size_t i = 0; i < stability.size(); ++i)
+      if (stability[i].method == stability[0].method) md << "`" << stability[i].stress << "`: " << stability[i].notes << ". ";
+    md << "\n";
+  }
+  md << "\n## Missing\n\n";
+  for (const auto& m : missing) md << "- `" << m << "`: not in the GPU runtime of this build (`weft render --method` lists what is).\n";
+  md << "- Cost-knob sweeps (SG count, tangent samples, SVD rank, SDF resolution) and the `weft bake --target-error` "
+        "point: not in this bench yet.\n";
+  if (!md) throw std::runtime_error("cannot write " + (out / "report.md").string());
+
+  std::cout << "{\"out\":\"" << a.out << "\",\"rows\":" << rows.size() << ",\"seconds\":" << fmt(total, 4)
+            << ",\"csv\":\"" << (out / "results.csv").string() << "\",\"chart\":\"" << (out / "chart.png").string()
+            << "\",\"report\":\"" << (out / "report.md").string() << "\"}\n";
+  return 0;
+}
+
+}  // namespace
+
+CommandAction add_bench_command(CLI::App& app) {
+  auto a = std::make_shared<BenchArgs>();
+  CLI::App* sub = app.add_subcommand("bench", "Speed against accuracy for every GPU method: CSV, chart, report");
+  sub->add_flag("--quick", a->quick,
+                "Smoke run: swatch/linen_plain at 64x48, reference SG grid 4, 8 tangent samples, "
+                "2 stress points per case");
+  sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
+  sub->add_option("--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
+  sub->add_option("--scenes", a->scenes, "Scenes")->delimiter(',')->capture_default_str();
+  sub->add_option("--fabrics", a->fabrics, "Fabric presets ('scene': each scene's own)")->delimiter(',')->capture_default_str();
+  sub->add_option("--envs", a->envs, "Environment maps ('scene': each scene's own)")->delimiter(',')->capture_default_str();
+  sub->add_option("--methods", a->methods, "GPU methods (default: all available)")->delimiter(',');
+  sub->add_option("--speed-width", a->speed_width, "Speed: frame width")->capture_default_str();
+  sub->add_option("--speed-height", a->speed_height, "Speed: frame height")->capture_default_str();
+  sub->add_option("--speed-frames", a->speed_frames, "Speed: frames timed after the warm-up")->capture_default_str();
+  sub->add_option("--width", a->width, "Accuracy: frame width")->capture_default_str();
+  sub->add_option("--height", a->height, "Accuracy: frame height")->capture_default_str();
+  sub->add_option("--sg-grid", a->sg_grid, "Reference: SG grid N (N x 2N cells per SG)")->capture_default_str();
+  sub->add_option("--tangent-samples", a->tangent_samples, "Reference: tangent samples per thread")->capture_default_str();
+  sub->add_option("--sg-count", a->sg_count, "SGs fitted to each map")->capture_default_str();
+  sub->add_option("--stress-points", a->stress_points, "Stability table: points per stress case")->capture_default_str();
+  sub->add_flag("--no-stability", a->no_stability, "Skip the stability table");
+  return [a] { return run_bench(*a); };
+}
+
+}  // namespace weft

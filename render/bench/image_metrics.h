@@ -1,0 +1,22 @@
+#pragma once
+// DESIGN.md §6's accuracy measure over the cloth pixels, and an error map to look at.
+#include <vector>
+
+#include "image/image.h"
+#include "reference/scene_render.h"
+
+namespace weft::bench {
+
+struct ClothError {
+  double relative_rmse = 0.0;  // sqrt(mean over cloth pixels and channels of (x−r)²) / mean(r)
+  size_t cloth_pixels = 0;
+};
+
+// Images of equal size; `kinds` from the reference. Throws std::invalid_argument on a size mismatch.
+ClothError cloth_error(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds);
+
+// |x−r| / mean(r) per cloth pixel as a colour ramp (black 0 → red 0.5 → yellow ≥ 1), grey
+// for other pixels: an sRGB-ready image (values in [0, 1]) for write_rgb8_png.
+Image error_map(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds);
+
+}  // namespace weft::bench

@@ -1,0 +1,78 @@
+#include "bench/reference_cache.h"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace weft::bench {
+
+void InputHash::mix(const void* p, size_t n) {
+  const auto* b = static_cast<const unsigned char*>(p);
+  for (size_t i = 0; i < n; ++i) {
+    h_ ^= b[i];
+    h_ *= 1099511628211ull;
+  }
+}
+
+InputHash& InputHash::add(std::string_view bytes) {
+  const uint64_t n = bytes.size();
+  mix(&n, sizeof n);
+  mix(bytes.data(), bytes.size());
+  return *this;
+}
+
+InputHash& InputHash::add_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return add(s.str());
+}
+
+InputHash& InputHash::add_number(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return add(buf);
+}
+
+std::string InputHash::hex() const {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
+  return buf;
+}
+
+std::optional<CachedReference> load_reference(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  char magic[8];
+  int32_t w = 0, h = 0;
+  in.read(magic, 8);
+  in.read(reinterpret_cast<char*>(&w), 4);
+  in.read(reinterpret_cast<char*>(&h), 4);
+  if (!in || std::memcmp(magic, "WEFTREF1", 8) != 0 || w < 1 || h < 1 || w > 16384 || h > 16384) return std::nullopt;
+  CachedReference r{Image(w, h), std::vector<PixelKind>(size_t(w) * h)};
+  in.read(reinterpret_cast<char*>(r.image.pixels.data()), std::streamsize(r.image.pixels.size() * sizeof(glm::dvec3)));
+  in.read(reinterpret_cast<char*>(r.kinds.data()), std::streamsize(r.kinds.size()));
+  if (!in) return std::nullopt;  // truncated: render again
+  return r;
+}
+
+void store_reference(const std::filesystem::path& file, const CachedReference& r) {
+  std::filesystem::create_directories(file.parent_path());
+  const auto tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    const int32_t w = r.image.width, h = r.image.height;
+    out.write("WEFTREF1", 8);
+    out.write(reinterpret_cast<const char*>(&w), 4);
+    out.write(reinterpret_cast<const char*>(&h), 4);
+    out.write(reinterpret_cast<const char*>(r.image.pixels.data()), std::streamsize(r.image.pixels.size() * sizeof(glm::dvec3)));
+    out.write(reinterpret_cast<const char*>(r.kinds.data()), std::streamsize(r.kinds.size()));
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace weft::bench
