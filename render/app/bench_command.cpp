@@ -25,6 +25,7 @@
 #include "gpu/scene_renderer.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
+#include "reference/environment_samples.h"
 #include "reference/scene_render.h"
 #include "scene/scene.h"
 
@@ -66,6 +67,15 @@ struct BenchArgs {
   int sg_grid = 8, tangent_samples = 16, sg_count = 10;
   int stress_points = 24;
   bool no_stability = false;
+  // Cost-knob sweep: SG counts fitted to the first scene's own map, accuracy against the
+  // reference lit by the map itself (so the fit's error counts), speed over 5 frames.
+  std::vector<int> sweep_sg_counts;
+};
+
+struct SweepRow {
+  std::string method;
+  int sg_count = 0;
+  double ms = 0.0, rmse = 0.0;
 };
 
 struct Row {
@@ -106,6 +116,10 @@ std::string command_line(const BenchArgs& a, bool quick) {
   c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
   if (!a.methods.empty()) c << " --methods " << joined(a.methods);
   if (a.no_stability) c << " --no-stability";
+  if (!a.sweep_sg_counts.empty()) {
+    c << " --sweep-sg-counts ";
+    for (size_t i = 0; i < a.sweep_sg_counts.size(); ++i) c << (i ? "," : "") << a.sweep_sg_counts[i];
+  }
   c << " --out " << a.out;
   return c.str();
 }
@@ -130,6 +144,8 @@ int run_bench(BenchArgs a) {
   if (a.tangent_samples < 1 || a.tangent_samples > 64) throw UsageError("--tangent-samples: must be within 1..64");
   if (a.sg_count < 1 || a.sg_count > 40) throw UsageError("--sg-count: must be within 1..40");
   if (a.stress_points < 0 || a.stress_points > 1000) throw UsageError("--stress-points: must be within 0..1000");
+  for (int k : a.sweep_sg_counts)
+    if (k < 1 || k > 40) throw UsageError("--sweep-sg-counts: each must be within 1..40");
   const auto available = gpu::method_names();
   std::vector<LadderEntry> run;
   std::vector<std::string> missing;
@@ -272,6 +288,65 @@ int run_bench(BenchArgs a) {
     }
   }
 
+  // SG-count sweep on the first scene, against the map-lit reference.
+  std::vector<SweepRow> sweep;
+  std::string sweep_case;
+  if (!a.sweep_sg_counts.empty()) {
+    const Scene s = load_scene_preset(a.scenes.front(), assets / "scenes");
+    std::map<std::string, Fabric> fabrics;
+    for (const auto& o : s.objects)
+      if (o.material == Material::cloth && !fabrics.count(o.fabric))
+        fabrics.emplace(o.fabric, load_fabric_preset(o.fabric, assets / "fabrics"));
+    const auto env_file = assets / "envmaps" / (s.environment + ".exr");
+    auto map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, nullptr));
+    sweep_case = s.name + " / " + fabrics.begin()->first + " / " + s.environment + " (map-lit reference, 128x64 cells)";
+    bench::InputHash h;
+    h.add(bench::kReferenceCodeVersion).add_file(assets / "scenes" / (s.name + ".json")).add_file(env_file).add("map128");
+    for (const auto& entry : std::filesystem::directory_iterator(assets / "scenes"))
+      if (entry.path().extension() == ".bpt") h.add_file(entry.path());
+    for (const auto& [name, f] : fabrics) h.add(name).add_file(assets / "fabrics" / (name + ".json"));
+    h.add_number(a.width).add_number(a.height).add_number(a.tangent_samples);
+    const auto cache_file = cache / (s.name + "_map_" + h.hex() + ".ref");
+    auto ref = bench::load_reference(cache_file);
+    if (ref) {
+      ++references_cached;
+    } else {
+      std::cerr << "weft bench: map-lit reference " << s.name << " ..." << std::flush;
+      ReferenceLighting lighting;
+      lighting.samples = [map](int level) { return environment_samples(*map, 128 << level); };
+      lighting.background = [map](const glm::dvec3& d) { return map->lookup(d); };
+      ReferenceRenderOptions opt;
+      opt.width = a.width, opt.height = a.height, opt.tangent_samples = a.tangent_samples;
+      opt.check_convergence = false;
+      const auto t = std::chrono::steady_clock::now();
+      const ReferenceRenderResult res = ReferenceRenderer(s, fabrics, lighting, opt).render(0);
+      reference_seconds += seconds_since(t);
+      ++references_rendered;
+      std::cerr << " " << fmt(seconds_since(t)) << " s\n";
+      ref = bench::CachedReference{res.image, res.kinds};
+      bench::store_reference(cache_file, *ref);
+    }
+    for (int k : a.sweep_sg_counts) {
+      SgFitOptions fit;
+      fit.count = k;
+      const SgLighting sgs = fit_sgs(*map, fit);
+      for (const auto& m : run) {
+        if (!m.scenes.empty() && !m.scenes.count(s.name)) continue;
+        if (m.thin_reference) continue;  // the map-lit reference has opaque cloth
+        SweepRow r{m.name, k, 0.0, 0.0};
+        r.ms = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, 5).median_ms;
+        const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0);
+        r.rmse = bench::cloth_error(acc.image, ref->image, ref->kinds).relative_rmse;
+        std::cerr << "weft bench: sweep " << m.name << " K=" << k << ": " << fmt(r.ms) << " ms, relative RMSE "
+                  << fmt(r.rmse) << "\n";
+        sweep.push_back(r);
+      }
+    }
+    std::ofstream csv(out / "sweep_sg_count.csv");
+    csv << "method,sg_count,ms_per_frame,relative_rmse_vs_map\n";
+    for (const auto& r : sweep) csv << r.method << "," << r.sg_count << "," << fmt(r.ms, 6) << "," << fmt(r.rmse, 6) << "\n";
+  }
+
   // Stability table: every CPU method × stress case, against the reference.
   struct StabilityCell {
     std::string method, stress, notes;
@@ -334,6 +409,14 @@ int run_bench(BenchArgs a) {
     md << "| " << r.scene << " / " << r.fabric << " / " << r.env << " / " << r.method << " | ![](" << r.image
        << ") | ![](" << r.reference_image << ") | " << (r.error_image.empty() ? "n/a" : "![](" + r.error_image + ")")
        << " |\n";
+  if (!sweep.empty()) {
+    md << "\n## Cost knob: SG count (sweep_sg_count.csv)\n\n" << sweep_case << ": K SGs fitted to the map, "
+       << "relative RMSE against the reference lit by the map itself (the fit's error included), ms/frame at "
+       << a.speed_width << "x" << a.speed_height << " (median of 5 frames).\n\n| method | K | ms/frame | relative RMSE |\n"
+       << "|---|---|---|---|\n";
+    for (const auto& r : sweep)
+      md << "| " << r.method << " | " << r.sg_count << " | " << fmt(r.ms) << " | " << fmt(r.rmse) << " |\n";
+  }
   md << "\n## Stability: method × stress case → error\n\n";
   if (stability.empty()) {
     md << "Not run (--no-stability).\n";
@@ -365,8 +448,8 @@ int run_bench(BenchArgs a) {
   }
   md << "\n## Missing\n\n";
   for (const auto& m : missing) md << "- `" << m << "`: not in the GPU runtime of this build (`weft render --method` lists what is).\n";
-  md << "- Cost-knob sweeps (SG count, tangent samples, SVD rank, SDF resolution) and the `weft bake --target-error` "
-        "point: not in this bench yet.\n";
+  md << "- Cost-knob sweeps other than SG count (`--sweep-sg-counts`): tangent samples, SVD rank, SDF resolution, and "
+        "the `weft bake --target-error` point: not in this bench yet.\n";
   if (!md) throw std::runtime_error("cannot write " + (out / "report.md").string());
 
   std::cout << "{\"out\":\"" << a.out << "\",\"rows\":" << rows.size() << ",\"seconds\":" << fmt(total, 4)
@@ -399,6 +482,9 @@ CommandAction add_bench_command(CLI::App& app) {
   sub->add_option("--sg-count", a->sg_count, "SGs fitted to each map")->capture_default_str();
   sub->add_option("--stress-points", a->stress_points, "Stability table: points per stress case")->capture_default_str();
   sub->add_flag("--no-stability", a->no_stability, "Skip the stability table");
+  sub->add_option("--sweep-sg-counts", a->sweep_sg_counts,
+                  "SG counts to sweep on the first scene (e.g. 1,2,5,10,20,40), against its map-lit reference")
+      ->delimiter(',');
   return [a] { return run_bench(*a); };
 }
 
