@@ -73,8 +73,8 @@ std::filesystem::path png_beside(const std::filesystem::path& exr) {
 }
 
 int run_render(const RenderArgs& a) {
-  if (a.method != "reference" && a.method != "sgpoint")
-    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference, sgpoint)");
+  if (a.method != "reference" && a.method != "sgpoint" && a.method != "mizutani")
+    throw UsageError("--method: '" + a.method + "' is not available yet (available: reference, sgpoint, mizutani)");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -234,7 +234,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or sgpoint (GPU)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU), sgpoint or mizutani (GPU; mizutani bakes its tables first)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
   sub->add_option("--sgs", a->sgs_file,

@@ -4,7 +4,10 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/egl_context.h"
+#include "bake/bake_selection.h"
+#include "bake/weighting_bake.h"
 #include "gpu/fabric_uniforms.h"
+#include "gpu/mizutani_textures.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -27,19 +30,36 @@ void main() {
 
 Method parse_method(const std::string& name) {
   if (name == "sgpoint") return Method::sgpoint;
-  throw std::invalid_argument("unknown GPU method '" + name + "' (available: sgpoint)");
+  if (name == "mizutani") return Method::mizutani;
+  throw std::invalid_argument("unknown GPU method '" + name + "' (available: sgpoint, mizutani)");
 }
 
 struct SceneRenderer::Object {
   const SceneObject* source;
   GpuMesh mesh;
   std::unique_ptr<ClothBsdf> bsdf;  // cloth only
+  std::unique_ptr<MizutaniTextures> mizutani;  // cloth under Method::mizutani
 };
 
+// Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
+// baked for; knob edits keep them (the tables depend on the curves, not on A or γ).
+std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) const {
+  return std::make_unique<ClothBsdf>(fabric, paper_tangent_samples(fabric.name));
+}
+
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples)
-    : tangent_samples_(tangent_samples) {
-  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}),
-                                               program_source({"microcylinder.glsl", "sgpoint.frag"}));
+    : tangent_samples_(tangent_samples), method_(method) {
+  if (method == Method::mizutani) {
+    cloth_program_ = std::make_unique<GlProgram>(
+        program_source({"scene.vert"}),
+        shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
+            std::string(shaders::source("microcylinder.glsl")) + std::string(shaders::source("mizutani.glsl")) +
+            std::string(shaders::source("mizutani.frag")));
+    azimuthal_ = std::make_unique<AzimuthalTable>(bake_azimuthal_table());
+  } else {
+    cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}),
+                                                 program_source({"microcylinder.glsl", "sgpoint.frag"}));
+  }
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
   for (const auto& o : scene.objects) {
@@ -47,6 +67,12 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->bsdf = std::make_unique<ClothBsdf>(fabrics[cloth++], tangent_samples_);
+      if (method == Method::mizutani) {
+        obj->bsdf = mizutani_cloth(obj->bsdf->fabric());
+        BakeSettings settings;
+        settings.tangent_samples = paper_tangent_samples(obj->bsdf->fabric().name);
+        obj->mizutani = std::make_unique<MizutaniTextures>(bake_weighting_tables(obj->bsdf->fabric(), settings), *azimuthal_);
+      }
     }
     objects_.push_back(std::move(obj));
   }
@@ -58,7 +84,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->bsdf && cloth++ == cloth_index) {
-      o->bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
+      o->bsdf = method_ == Method::mizutani ? mizutani_cloth(fabric) : std::make_unique<ClothBsdf>(fabric, tangent_samples_);
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
@@ -100,7 +126,12 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     const GlProgram& prog = o->bsdf ? *cloth_program_ : *lambert_program_;
     prog.use();
     glUniformMatrix4fv(prog.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-    if (o->bsdf) {
+    if (o->bsdf && o->mizutani) {
+      upload_fabric(prog, *o->bsdf);
+      o->mizutani->bind(prog);
+      upload_mizutani_lights(prog, sgs_);
+      glUniform3f(prog.uniform("u_eye"), float(camera.position.x), float(camera.position.y), float(camera.position.z));
+    } else if (o->bsdf) {
       upload_fabric(prog, *o->bsdf);
       glUniform3f(prog.uniform("u_eye"), float(camera.position.x), float(camera.position.y), float(camera.position.z));
       glUniform1i(prog.uniform("u_sg_count"), int(sgs_.size()));

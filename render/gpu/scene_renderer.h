@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/azimuthal_table.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 #include "gpu/gl_program.h"
@@ -15,7 +16,10 @@
 
 namespace weft::gpu {
 
-enum class Method { sgpoint };
+enum class Method {
+  sgpoint,
+  mizutani,  // seed 001: bakes each cloth's weighting tables (paper's tangent samples) at construction
+};
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 
 class SceneRenderer {
@@ -36,6 +40,10 @@ private:
   std::unique_ptr<GlProgram> cloth_program_, lambert_program_;
   SgLighting sgs_;
   int tangent_samples_;
+  Method method_;
+  // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).
+  std::unique_ptr<AzimuthalTable> azimuthal_;
+  std::unique_ptr<ClothBsdf> mizutani_cloth(const Fabric& fabric) const;
 };
 
 // The frame as linear radiance (row 0 at the top) from a float target of the given size.
