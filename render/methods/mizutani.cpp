@@ -64,9 +64,10 @@ MizutaniShading mizutani_shading(const ThreadParams& p, const ThreadFrame& tf, c
   const FiberAngles o = fiber_angles(tf, wo);
   const double cos_k = std::cos(sg.theta_k);
 
-  // h at the segment ends (Eq. 16): φ_i integrals from the table at σ'_k(θ_i).
+  // h at the segment ends (Eq. 16): φ_i integrals from the table at σ'_k(θ_i). At θ_i = ±π/2
+  // h carries cos²θ_i = 0: those two ends stay 0 and cost no lookups.
   std::array<double, kNodes> h_surf{}, h_vol{};
-  for (int i = 0; i < kNodes; ++i) {
+  for (int i = 1; i + 1 < kNodes; ++i) {
     const double theta = -0.5 * kPi + i * kPi / kMizutaniThetaSegments;
     const double cos_t = std::max(std::cos(theta), 0.0);
     const double lambda_prime = g.sharpness * cos_t * cos_k;

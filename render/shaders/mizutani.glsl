@@ -204,7 +204,8 @@ vec3 mizutani_radiance(vec3 n, vec3 u, vec3 wo) {
         FiberAngles kf = fiber_angles(along, axis, n, alpha, xi);
         float cos_k = cos(kf.theta);
         float h_surf[THETA_SEGMENTS + 1], h_vol[THETA_SEGMENTS + 1];
-        for (int i = 0; i <= THETA_SEGMENTS; ++i) {
+        h_surf[0] = h_vol[0] = h_surf[THETA_SEGMENTS] = h_vol[THETA_SEGMENTS] = 0.0;  // cos²θ_i = 0 there
+        for (int i = 1; i < THETA_SEGMENTS; ++i) {
           float theta = -0.5 * PI + float(i) * PI / float(THETA_SEGMENTS);
           float cos_t = max(cos(theta), 0.0);
           float cos_d = cos(0.5 * (theta - o.theta));
