@@ -11,7 +11,9 @@
 #include "core/cloth_bsdf.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
+#include "bake/azimuthal_table.h"
 #include "methods/iwasaki.h"
+#include "methods/mizutani.h"
 #include "reference/sg_quadrature.h"
 
 namespace weft {
@@ -47,14 +49,36 @@ int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const 
   return 0;
 }
 
+// Seed 001's approximation at the swatch: the same weighting tables as iwasaki (seed 001 Eq. 9 is
+// seed 000 Eq. 10), the azimuthal table T_m (Eq. 14), then Eq. 10–16 without visibility.
+int run_mizutani(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
+  BakeSettings settings;
+  settings.tangent_samples = paper_tangent_samples(fabric.name);
+  const auto t0 = std::chrono::steady_clock::now();
+  const WeightingTables tables = bake_weighting_tables(fabric, settings);
+  const AzimuthalTable azimuthal = bake_azimuthal_table();
+  const auto t1 = std::chrono::steady_clock::now();
+  const ClothBsdf bsdf(fabric, settings.tangent_samples);
+  const MizutaniTerms r = mizutani_radiance(bsdf, tables, azimuthal, SurfaceFrame{}, wo, sgs);
+  const auto t2 = std::chrono::steady_clock::now();
+  nlohmann::ordered_json out;
+  out["method"] = a.method;
+  out["radiance"] = {r.radiance.r, r.radiance.g, r.radiance.b};
+  out["tangent_samples"] = {settings.tangent_samples[0], settings.tangent_samples[1]};
+  out["bake_seconds"] = std::chrono::duration<double>(t1 - t0).count();
+  out["seconds"] = std::chrono::duration<double>(t2 - t1).count();
+  std::cout << out.dump() << "\n";
+  return 0;
+}
+
 int run_eval(const EvalArgs& a) {
   const dvec3 wo = parse_direction(a.view, "--view");
   if (wo.z <= 0.0) throw UsageError("--view: direction " + a.view + " is below the surface (z must be > 0)");
   if (a.sgs.empty()) throw UsageError("--sg: give at least one SG");
   SgLighting sgs;
   for (size_t i = 0; i < a.sgs.size(); ++i) sgs.push_back(parse_sg(a.sgs[i], "--sg #" + std::to_string(i + 1)));
-  if (a.method != "reference" && a.method != "iwasaki")
-    throw UsageError("--method: '" + a.method + "' is not available for eval (reference, iwasaki)");
+  if (a.method != "reference" && a.method != "iwasaki" && a.method != "mizutani")
+    throw UsageError("--method: '" + a.method + "' is not available for eval (reference, iwasaki, mizutani)");
   if (a.tangent_samples < 1 || a.tangent_samples > 4096)
     throw UsageError("--tangent-samples: must be in [1, 4096], got " + std::to_string(a.tangent_samples));
   if (!(a.tolerance > 0.0 && a.tolerance < 0.5))
@@ -62,6 +86,7 @@ int run_eval(const EvalArgs& a) {
 
   const Fabric fabric = load_fabric_preset(a.fabric, assets_dir() / "fabrics");
   if (a.method == "iwasaki") return run_iwasaki(a, fabric, wo, sgs);
+  if (a.method == "mizutani") return run_mizutani(a, fabric, wo, sgs);
   const auto start = std::chrono::steady_clock::now();
   const ClothBsdf bsdf(fabric, a.tangent_samples);
   SgQuadratureOptions opt;
@@ -90,7 +115,7 @@ CommandAction add_eval_command(CLI::App& app) {
   sub->add_option("--fabric", a->fabric, "Fabric preset name (assets/fabrics/NAME.json)")->capture_default_str();
   sub->add_option("--view", a->view, "Direction toward the viewer, x,y,z (normalised; z > 0)")->required();
   sub->add_option("--sg", a->sgs, "An SG light: axis_x,axis_y,axis_z,lambda,r,g,b (repeatable)")->required();
-  sub->add_option("--method", a->method, "Method: reference (converged quadrature of DESIGN.md §2) or iwasaki (seed 000, bakes its tables first)")
+  sub->add_option("--method", a->method, "Method: reference (converged quadrature of DESIGN.md §2), iwasaki (seed 000) or mizutani (seed 001, no visibility); the last two bake their tables first")
       ->capture_default_str();
   sub->add_option("--tangent-samples", a->tangent_samples, "Tangent samples per thread N_j")->capture_default_str();
   sub->add_option("--tolerance", a->tolerance, "Convergence: relative change between grid doublings")

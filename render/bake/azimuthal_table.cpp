@@ -45,6 +45,9 @@ double AzimuthalTable::value(int m, double phi_o, double phi_k, double lp) const
   if (m < 0 || m > s.max_power) throw std::out_of_range("AzimuthalTable::value: power out of range");
   if (!(std::isfinite(phi_o) && std::isfinite(phi_k) && lp >= 0.0)) return 0.0;
   phi_k = std::remainder(phi_k, 2 * kPi);
+  // Past λ_max the ratio T/Z has settled (the lobe is narrower than anything else in φ), but Z
+  // keeps shrinking as 1/√λ': take the ratio at the last node and Z at the true λ'.
+  const double z = circular_gaussian_full_integral(lp);
   lp = std::min(lp, s.lambda_max);
   int io, ik, il;
   double fo, fk, fl;
@@ -56,7 +59,7 @@ double AzimuthalTable::value(int m, double phi_o, double phi_k, double lp) const
     for (int dk = 0; dk < 2; ++dk)
       for (int d0 = 0; d0 < 2; ++d0)
         r += (dl ? fl : 1 - fl) * (dk ? fk : 1 - fk) * (d0 ? fo : 1 - fo) * node_ratio(m, il + dl, ik + dk, io + d0);
-  return r * circular_gaussian_full_integral(lp);
+  return r * z;
 }
 
 AzimuthalTable bake_azimuthal_table(const AzimuthalTableSettings& s) {

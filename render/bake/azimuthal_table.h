@@ -14,7 +14,8 @@
 // Storage: T_m / Z(λ') with Z(λ') = ∫_{−π}^{π} g^c = 2π·e^{−λ'}·I_0(λ'), which lies in [0, 1]
 // and varies far less with λ' than T itself; value() multiplies Z back. Axes: φ_o nodes over
 // [−π/2, π/2], φ_k nodes over [−π, π], λ' nodes uniform in log(1 + λ') over [0, lambda_max];
-// lookups are trilinear and clamp to the axes (φ_k is wrapped to (−π, π] first).
+// lookups are trilinear and clamp to the axes (φ_k is wrapped to (−π, π] first); past lambda_max
+// the ratio is held at the last node while Z(λ') is exact.
 #include <cstddef>
 #include <vector>
 

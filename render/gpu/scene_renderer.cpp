@@ -5,8 +5,11 @@
 #include <stdexcept>
 
 #include "gpu/egl_context.h"
+#include "bake/bake_selection.h"
+#include "bake/weighting_bake.h"
 #include "gpu/fabric_uniforms.h"
 #include "gpu/method_uniforms.h"
+#include "gpu/mizutani_textures.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -26,6 +29,7 @@ const std::vector<MethodInfo>& method_table() {
       {Method::sheen, "sheen", {"sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
       {Method::mdfrot, "mdfrot", {"sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
       {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
+      {Method::mizutani, "mizutani", {"microcylinder.glsl", "mizutani.glsl", "mizutani.frag"}, false},
   };
   return table;
 }
@@ -78,11 +82,24 @@ struct SceneRenderer::Object {
     mdfrot = mdfrot_params(f);
     thin = thin_params(f);
   }
+  std::unique_ptr<MizutaniTextures> mizutani;  // cloth under Method::mizutani
 };
+
+// Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
+// baked for; knob edits keep them (the tables depend on the curves, not on A or γ).
+std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) const {
+  return std::make_unique<ClothBsdf>(fabric, paper_tangent_samples(fabric.name));
+}
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples)
     : method_(method), tangent_samples_(tangent_samples) {
-  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source(info(method).fragment));
+  std::string fragment = program_source(info(method).fragment);
+  if (method == Method::mizutani) {  // its light arrays are sized at compile time
+    fragment = program_source({}) + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
+               fragment.substr(program_source({}).size());
+    azimuthal_ = std::make_unique<AzimuthalTable>(bake_azimuthal_table());
+  }
+  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
   if (info(method).see_through)
     background_program_ =
         std::make_unique<GlProgram>(kFullscreenVs, program_source({"sg_lighting.glsl", "background.frag"}));
@@ -92,7 +109,14 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
     auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}});
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
-      obj->set(fabrics[cloth++], tangent_samples_);
+      obj->set(fabrics[cloth], tangent_samples_);
+      if (method == Method::mizutani) {
+        obj->bsdf = mizutani_cloth(fabrics[cloth]);
+        BakeSettings settings;
+        settings.tangent_samples = paper_tangent_samples(fabrics[cloth].name);
+        obj->mizutani = std::make_unique<MizutaniTextures>(bake_weighting_tables(fabrics[cloth], settings), *azimuthal_);
+      }
+      ++cloth;
     }
     objects_.push_back(std::move(obj));
   }
@@ -105,6 +129,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   for (auto& o : objects_)
     if (o->bsdf && cloth++ == cloth_index) {
       o->set(fabric, tangent_samples_);
+      if (method_ == Method::mizutani) o->bsdf = mizutani_cloth(fabric);
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
@@ -184,6 +209,11 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
             upload_fabric(prog, *o->bsdf);
             upload_sg_lighting(prog, sgs_);
             upload_thin(prog, o->thin);
+            break;
+          case Method::mizutani:
+            upload_fabric(prog, *o->bsdf);
+            o->mizutani->bind(prog);
+            upload_mizutani_lights(prog, sgs_);
             break;
         }
       } else {

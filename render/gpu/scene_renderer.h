@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/azimuthal_table.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 #include "methods/mdfrot.h"
@@ -20,7 +21,13 @@ namespace weft::gpu {
 
 // The GPU methods (DESIGN.md §4). A new one is a value here and a row in scene_renderer.cpp's
 // method table (name, fragment shader parts, whether the cloth is see-through).
-enum class Method { sgpoint, sheen, mdfrot, thin };
+enum class Method {
+  sgpoint,
+  sheen,
+  mdfrot,
+  thin,
+  mizutani,  // seed 001: bakes each cloth's weighting tables (paper's tangent samples) at construction
+};
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
 std::vector<std::string> method_names();
@@ -44,6 +51,9 @@ private:
   Method method_;
   SgLighting sgs_;
   int tangent_samples_;
+  // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).
+  std::unique_ptr<AzimuthalTable> azimuthal_;
+  std::unique_ptr<ClothBsdf> mizutani_cloth(const Fabric& fabric) const;
 };
 
 // The frame as linear radiance (row 0 at the top) from a float target of the given size.

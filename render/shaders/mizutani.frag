@@ -1,0 +1,14 @@
+// Method `mizutani` (seed 001, DESIGN.md §4) on a scene's cloth: mizutani.glsl per pixel.
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_warp;
+in vec3 v_colour;
+uniform vec3 u_eye;
+out vec4 o_radiance;
+void main() {
+  vec3 n = normalize(v_normal);
+  vec3 wo = normalize(u_eye - v_position);
+  if (dot(n, wo) < 0.0) n = -n;  // thin cloth seen from behind: shade the side facing the eye
+  vec3 u = normalize(v_warp - dot(v_warp, n) * n);
+  o_radiance = vec4(mizutani_radiance(n, u, wo), 1.0);
+}

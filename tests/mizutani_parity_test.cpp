@@ -1,0 +1,138 @@
+// Parity: shaders/mizutani.glsl, run on the GL driver (llvmpipe here) and read back, agrees
+// with the C++ twin render/methods/mizutani.cpp within 1e-3 relative, per pixel, with the
+// tables uploaded by gpu/mizutani_textures (so the upload layout is pinned too).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bake/azimuthal_table.h"
+#include "bake/bake_selection.h"
+#include "bake/weighting_bake.h"
+#include "core/cloth_bsdf.h"
+#include "gpu/egl_context.h"
+#include "gpu/fabric_uniforms.h"
+#include "gpu/gl_program.h"
+#include "gpu/mizutani_textures.h"
+#include "gpu/offscreen_target.h"
+#include "methods/mizutani.h"
+#include "shaders/embedded_shaders.h"
+
+using namespace weft;
+using namespace weft::gpu;
+
+namespace {
+
+const char* kVs = R"(#version 300 es
+void main() {
+  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
+  gl_Position = vec4(p, 0.0, 1.0);
+})";
+
+// One (ω_o, frame) per pixel, from float textures, so both sides see the same floats.
+const char* kFs = R"(
+uniform highp sampler2D u_wo, u_n, u_u;
+out vec4 colour;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec3 wo = texelFetch(u_wo, p, 0).xyz, n = texelFetch(u_n, p, 0).xyz, u = texelFetch(u_u, p, 0).xyz;
+  colour = vec4(mizutani_radiance(n, u, wo), 1.0);
+})";
+
+GLuint float_texture(int w, int h, const std::vector<float>& rgba) {
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return t;
+}
+
+}  // namespace
+
+class MizutaniParity : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MizutaniParity, GlslMatchesCpp) {
+  EglContext ctx = EglContext::headless();
+  const Fabric fabric = load_fabric_preset(GetParam(), WEFT_SOURCE_ASSETS "/fabrics");
+  // Small tables: parity does not need accurate ones, only the same ones on both sides.
+  BakeSettings s;
+  s.tangent_samples = paper_tangent_samples(fabric.name);
+  s.xi_resolution = s.wo_resolution = s.wi_resolution = 12;
+  s.lambda_levels = 3;
+  const WeightingTables tables = bake_weighting_tables(fabric, s);
+  AzimuthalTableSettings as;
+  as.quadrature_points = 256;
+  const AzimuthalTable azimuthal = bake_azimuthal_table(as);
+  const ClothBsdf bsdf(fabric, s.tangent_samples);
+
+  GlProgram program(kVs, shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
+                             std::string(shaders::source("microcylinder.glsl")) +
+                             std::string(shaders::source("mizutani.glsl")) + kFs);
+  upload_fabric(program, bsdf);
+  const MizutaniTextures textures(tables, azimuthal);
+  textures.bind(program, 3);
+  // Broad to sharp lights, past the tables' λ range on both sides, one below the horizon.
+  const SgLighting sgs = {{glm::normalize(dvec3(-0.3, 0.1, 0.9)), 2.0, dvec3(1.0, 0.8, 0.6)},
+                          {glm::normalize(dvec3(0.6, -0.5, 0.5)), 60.0, dvec3(0.5, 0.4, 0.3)},
+                          {glm::normalize(dvec3(0.1, 0.8, 0.3)), 3000.0, dvec3(2.0)},
+                          {glm::normalize(dvec3(-0.7, -0.2, -0.1)), 8.0, dvec3(0.3)}};
+  upload_mizutani_lights(program, sgs);
+
+  const int w = 16, h = 8;
+  std::mt19937 rng(5);
+  std::normal_distribution<float> nd;
+  std::vector<float> wo(w * h * 4), nn(w * h * 4), uu(w * h * 4);
+  std::vector<SurfaceFrame> frames(w * h);
+  auto store = [](std::vector<float>& v, int i, glm::vec3 d) {
+    v[4 * i] = d.x, v[4 * i + 1] = d.y, v[4 * i + 2] = d.z, v[4 * i + 3] = 0;
+  };
+  for (int i = 0; i < w * h; ++i) {
+    glm::vec3 n = glm::normalize(glm::vec3(0.3f * nd(rng), 0.3f * nd(rng), 1.0f));
+    glm::vec3 warp(nd(rng), nd(rng), nd(rng));
+    glm::vec3 u = glm::normalize(warp - glm::dot(warp, n) * n);
+    glm::vec3 d;
+    do d = glm::normalize(glm::vec3(nd(rng), nd(rng), nd(rng)));
+    while (glm::dot(d, n) <= 0.1f);
+    store(wo, i, d), store(nn, i, n), store(uu, i, u);
+    frames[i].n = glm::dvec3(n);
+    frames[i].u = glm::dvec3(u);
+    frames[i].v = glm::cross(frames[i].n, frames[i].u);
+  }
+  const GLuint tex[3] = {float_texture(w, h, wo), float_texture(w, h, nn), float_texture(w, h, uu)};
+  const char* names[3] = {"u_wo", "u_n", "u_u"};
+  program.use();
+  for (int k = 0; k < 3; ++k) {
+    glActiveTexture(GL_TEXTURE0 + k);
+    glBindTexture(GL_TEXTURE_2D, tex[k]);
+    glUniform1i(program.uniform(names[k]), k);
+  }
+  OffscreenTarget target(w, h);
+  target.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const auto px = target.read_rgba();
+
+  double worst = 0.0, typical = 0.0;
+  std::vector<dvec3> expect(w * h);
+  for (int i = 0; i < w * h; ++i) {
+    expect[i] = mizutani_radiance(bsdf, tables, azimuthal, frames[i], dvec3(wo[4 * i], wo[4 * i + 1], wo[4 * i + 2]), sgs)
+                    .radiance;
+    typical = std::max(typical, expect[i].g);
+  }
+  ASSERT_GT(typical, 0.0);
+  for (int i = 0; i < w * h; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double got = px[4 * i + c];
+      ASSERT_TRUE(std::isfinite(got));
+      // Relative where the value matters; an absolute floor at 1e-4 of the brightest pixel.
+      const double err = std::abs(got - expect[i][c]) / std::max(std::abs(expect[i][c]), 1e-4 * typical);
+      worst = std::max(worst, err);
+      EXPECT_LT(err, 1e-3) << GetParam() << " pixel " << i << " channel " << c << ": glsl " << got << " c++ "
+                           << expect[i][c];
+    }
+  std::printf("%s: %d values, worst relative difference %.2e\n", GetParam().c_str(), 3 * w * h, worst);
+  glDeleteTextures(3, tex);
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, MizutaniParity,
+                         ::testing::Values("linen_plain", "silk_crepe_de_chine", "polyester_satin_charmeuse"));
