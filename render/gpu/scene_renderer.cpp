@@ -27,26 +27,33 @@ void main() {
 
 Method parse_method(const std::string& name) {
   if (name == "sgpoint") return Method::sgpoint;
-  throw std::invalid_argument("unknown GPU method '" + name + "' (available: sgpoint)");
+  if (name == "iwasaki") return Method::iwasaki;
+  throw std::invalid_argument("unknown GPU method '" + name + "' (available: sgpoint, iwasaki)");
 }
 
 struct SceneRenderer::Object {
   const SceneObject* source;
   GpuMesh mesh;
   std::unique_ptr<ClothBsdf> bsdf;  // cloth only
+  size_t iwasaki = 0;               // handle in iwasaki_ (Method::iwasaki cloth)
 };
 
-SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples)
+SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
+                             std::shared_ptr<const IwasakiBundleData> iwasaki)
     : tangent_samples_(tangent_samples) {
+  if (method == Method::iwasaki) iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki));
   cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}),
                                                program_source({"microcylinder.glsl", "sgpoint.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
-  for (const auto& o : scene.objects) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
     auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr});
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
-      obj->bsdf = std::make_unique<ClothBsdf>(fabrics[cloth++], tangent_samples_);
+      obj->bsdf = std::make_unique<ClothBsdf>(fabrics[cloth], tangent_samples_);
+      if (iwasaki_) obj->iwasaki = iwasaki_->add_object(i, o.mesh, fabrics[cloth]);
+      ++cloth;
     }
     objects_.push_back(std::move(obj));
   }
@@ -58,6 +65,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->bsdf && cloth++ == cloth_index) {
+      if (iwasaki_) iwasaki_->set_fabric(o->iwasaki, fabric);  // throws (and changes nothing) without tables
       o->bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
       return;
     }
@@ -97,6 +105,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     powers.insert(powers.end(), {float(p.r), float(p.g), float(p.b)});
   }
   for (auto& o : objects_) {
+    if (o->bsdf && iwasaki_) {
+      iwasaki_->draw(o->iwasaki, vp, glm::vec3(camera.position), sgs_);
+      continue;
+    }
     const GlProgram& prog = o->bsdf ? *cloth_program_ : *lambert_program_;
     prog.use();
     glUniformMatrix4fv(prog.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

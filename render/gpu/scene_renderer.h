@@ -10,18 +10,21 @@
 #include "core/spherical_gaussian.h"
 #include "gpu/gl_program.h"
 #include "gpu/gpu_mesh.h"
+#include "gpu/iwasaki_cloth.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
 
-enum class Method { sgpoint };
+enum class Method { sgpoint, iwasaki };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
-  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16);
+  // Method::iwasaki draws cloth from `iwasaki` (a bundle's seed 000 tables; required for it).
+  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
+                std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
 
   void set_lighting(const SgLighting& sgs);
@@ -34,6 +37,7 @@ private:
   struct Object;
   std::vector<std::unique_ptr<Object>> objects_;
   std::unique_ptr<GlProgram> cloth_program_, lambert_program_;
+  std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki only
   SgLighting sgs_;
   int tangent_samples_;
 };

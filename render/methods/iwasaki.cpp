@@ -20,6 +20,8 @@ double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_
   if (!vis || !vis->sdf) return circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
   double d = 0, dt = 0, dp = 0;
   vis->sdf(f, theta_l, phi_k, d, dt, dp);
+  if (vis->kappa)
+    return circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p) * vis->kappa->h(sigma_l, sigma_p, d, dt, dp);
   return visible_pair_integral(theta_l, sigma_l, phi_k, sigma_p, d, dt, dp);
 }
 

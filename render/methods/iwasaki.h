@@ -8,6 +8,7 @@
 #include <functional>
 #include <span>
 
+#include "bake/sigmoid_gain.h"
 #include "bake/weighting_tables.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
@@ -19,6 +20,9 @@ struct IwasakiVisibility {
   // Linearised visibility at direction (θ, φ) of the sample frame: d and its gradient.
   std::function<void(const ThreadFrame&, double theta, double phi, double& d, double& d_dtheta, double& d_dphi)>
       sdf;
+  // Eq. 14's sigmoid with the baked gains replaces the closed-form H when given (the runtime's
+  // choice: the GPU reads the same table).
+  const SigmoidGainTable* kappa = nullptr;
 };
 
 struct IwasakiTerms {
