@@ -19,9 +19,8 @@
 #include <sstream>
 
 #include "app/gpu_render.h"
-#include "bake/bake_selection.h"
-#include "bake/scene_visibility.h"
-#include "bake/weighting_bake.h"
+#include "bake/iwasaki_bundle.h"
+#include "bundle/bundle_reader.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
@@ -61,25 +60,35 @@ Scene scene_with(const Case& c) {
   return s;
 }
 
-std::shared_ptr<IwasakiBundleData> bake(const Scene& scene, const std::map<std::string, Fabric>& fabrics, bool visibility) {
-  auto d = std::make_shared<IwasakiBundleData>();
-  for (const auto& [name, f] : fabrics) {
-    BakeSettings s;
-    s.tangent_samples = paper_tangent_samples(name);
-    d->tables.emplace(name, bake_weighting_tables(f, s));
+fs::path refs_dir() {
+  const fs::path d = std::getenv("WEFT_BENCH_REFS") ? std::getenv("WEFT_BENCH_REFS") : "iwasaki_bench_refs";
+  fs::create_directories(d);
+  return d;
+}
+
+// The case's bundle (`weft bake`, paper settings), cached beside the references.
+fs::path bundle_for(const Case& c) {
+  const fs::path b = refs_dir() / (c.scene + "_" + c.fabric + ".weft");
+  if (!fs::exists(b)) {
+    const std::string cmd = std::string(WEFT_BINARY) + " bake --scene " + c.scene + " --fabric " + c.fabric + " --out " +
+                            b.string() + " 2> " + b.string() + ".log";
+    std::printf("baking: %s\n", cmd.c_str());
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("bake failed: " + cmd);
   }
-  if (visibility) {
-    for (size_t i = 0; i < scene.objects.size(); ++i)
-      if (scene.objects[i].material == Material::cloth)
-        if (auto v = bake_object_visibility(scene, i, SceneVisibilityOptions{})) d->visibility.emplace(i, std::move(*v));
-    if (!d->visibility.empty()) d->kappa = SigmoidGainTable::fit(SigmoidGainTableSpec{});
-  }
+  return b;
+}
+
+std::shared_ptr<IwasakiBundleData> tables(const Case& c, const Scene& scene, bool visibility) {
+  const auto reader = bundle::BundleReader::open(bundle_for(c));
+  std::map<size_t, size_t> vertices;
+  for (size_t i = 0; i < scene.objects.size(); ++i) vertices[i] = scene.objects[i].mesh.positions.size();
+  auto d = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+  if (!visibility) d->visibility.clear();
   return d;
 }
 
 TEST(IwasakiBench, AccuracyAgainstReference) {
-  const fs::path refs = std::getenv("WEFT_BENCH_REFS") ? std::getenv("WEFT_BENCH_REFS") : "iwasaki_bench_refs";
-  fs::create_directories(refs);
+  const fs::path refs = refs_dir();
   for (const Case& c : cases()) {
     const Scene scene = scene_with(c);
     std::map<std::string, Fabric> fabrics;
@@ -106,12 +115,11 @@ TEST(IwasakiBench, AccuracyAgainstReference) {
         cloth[size_t(y) * w + x] = hit && scene.objects[hit->object].material == Material::cloth;
       }
     for (bool visibility : {true, false}) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const auto data = bake(scene, fabrics, visibility);
-      const double bake_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto data = tables(c, scene, visibility);
       const GpuFrame f = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, 0, data);
-      double se = 0, sum = 0;
+      double se = 0, sum = 0, sum_x = 0;
       size_t n = 0;
+      Image ratio(w, h);  // x/r per cloth pixel, 0.5 at equality after write_png's tone curve scale
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
           if (!cloth[size_t(y) * w + x]) continue;
@@ -119,11 +127,17 @@ TEST(IwasakiBench, AccuracyAgainstReference) {
           const glm::dvec3 e = a - b;
           se += glm::dot(e, e) / 3;
           sum += (b.r + b.g + b.b) / 3;
+          sum_x += (a.r + a.g + a.b) / 3;
+          ratio.at(x, y) = glm::dvec3((a.r + a.g + a.b) / std::max(1e-9, b.r + b.g + b.b));
           ++n;
         }
       const double rmse = std::sqrt(se / n) / (sum / n);
-      std::printf("accuracy %s/%s/%s %s: relative RMSE %.4f over %zu cloth pixels (bake %.1f s)\n", c.scene.c_str(),
-                  c.fabric.c_str(), c.env.c_str(), visibility ? "with visibility" : "no visibility", rmse, n, bake_s);
+      std::printf("accuracy %s/%s/%s %s: relative RMSE %.4f over %zu cloth pixels, mean(iwasaki)/mean(reference) %.3f\n",
+                  c.scene.c_str(), c.fabric.c_str(), c.env.c_str(), visibility ? "with visibility" : "no visibility", rmse, n,
+                  sum_x / sum);
+      // Red: too bright, blue: too dark, black: equal.
+      for (auto& px : ratio.pixels) px = glm::dvec3(std::max(0.0, px.r - 1), 0.0, std::max(0.0, 1 - px.r) * (px.r > 0));
+      write_png(ratio, refs / (c.scene + "_" + c.fabric + "_" + c.env + (visibility ? "_ratio.png" : "_ratio_novis.png")), 3.0);
       write_exr(f.image, refs / (c.scene + "_" + c.fabric + "_" + c.env + (visibility ? "_iwasaki.exr" : "_iwasaki_novis.exr")));
       EXPECT_GT(n, 100u);
     }
@@ -137,10 +151,8 @@ TEST(IwasakiBench, SpeedPillowLinen) {
   const SgLighting sgs =
       fit_sgs(load_env_map(fs::path(WEFT_SOURCE_ASSETS) / "envmaps/studio.exr", NonFinitePolicy::clamp), SgFitOptions{});
   const int frames = std::getenv("WEFT_BENCH_FRAMES") ? std::atoi(std::getenv("WEFT_BENCH_FRAMES")) : 20;
-  const auto vis = bake(scene, fabrics, true);
-  auto novis = std::make_shared<IwasakiBundleData>();
-  novis->tables = vis->tables;
-  for (int size : {640, 320}) {
+  const auto vis = tables(c, scene, true), novis = tables(c, scene, false);
+  for (int size : {640}) {
     const int w = size, h = size * 3 / 4;
     const GpuFrame sp = render_gpu_frame(scene, fabrics, sgs, "sgpoint", w, h, frames);
     const GpuFrame a = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, frames, vis);
@@ -149,6 +161,13 @@ TEST(IwasakiBench, SpeedPillowLinen) {
                 "sgpoint (16 samples/thread) %.1f ms/frame\n",
                 w, h, a.renderer.c_str(), frames, a.median_ms, b.median_ms, sp.median_ms);
   }
+  // Boot to first frame: `weft run` from the bundle, headless 640×480.
+  const fs::path state = refs_dir() / "run_state";
+  const std::string cmd = std::string(WEFT_BINARY) + " run --bundle " + bundle_for(c).string() + " --state-dir " +
+                          state.string() + " --display headless --panel none --frames 1 --size 640 480 2>&1 | grep 'first frame'";
+  std::printf("boot: ");
+  std::fflush(stdout);
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
 }
 
 }  // namespace

@@ -148,11 +148,12 @@ float visibility_h(float sigma_l, float sp, vec3 s) {
   return 1.0 / (1.0 + exp(-(g / spread) * s.x / len));
 }
 
-// ∫∫ g^c g^c V' of one lobe (Eq. 12–13).
-float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b) {
+// ∫∫ g^c g^c V' of one lobe (Eq. 12–13); `sdf` = (d, ∂d/∂θ, ∂d/∂φ) looked up once per (SG,
+// sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf).
+float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k) {
   float i = pair_integral(theta_l, sigma_l, phi_k, sp);
   if (!u_visibility) return i;
-  return i * visibility_h(sigma_l, sp, sdf_in_sample_frame(n, u, v, t, np, b, theta_l, phi_k));
+  return i * visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz));
 }
 
 void main() {
@@ -191,6 +192,7 @@ void main() {
           FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
           float theta_k = fk.theta, phi_k = fk.phi;
           Lobe light = Lobe(1.0, theta_k, sigma_k);
+          vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // Surface lobe.
@@ -200,7 +202,7 @@ void main() {
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, n, u, v, t, np, axis);
+            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k);
           }
           // Volume lobe and the isotropic k_d part.
           {
@@ -210,13 +212,13 @@ void main() {
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
             float sp = sigma_prime(sigma_k, l.mu, theta_k);
             float lobe = (1.0 - p.kd) * l.alpha * tr * tr * geo / max(cos(l.mu) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                         lobe_integral(l.mu, l.sigma, phi_k, sp, n, u, v, t, np, axis);
+                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k);
             float cos_dk = cos(0.5 * (theta_k - fo.theta));
             float tk = 1.0 - fresnel_dielectric(p.eta, cos_dk * cos_half);
             float geok = cos(theta_k) * cos(theta_k) / max(cos_dk * cos_dk, DENOMINATOR_FLOOR);
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                        lobe_integral(theta_k, sigma_k, phi_k, spk, n, u, v, t, np, axis);
+                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k);
             vol += T * (lobe + iso) * p.albedo;
           }
         }
