@@ -152,7 +152,7 @@ TEST(IwasakiBench, SpeedPillowLinen) {
       fit_sgs(load_env_map(fs::path(WEFT_SOURCE_ASSETS) / "envmaps/studio.exr", NonFinitePolicy::clamp), SgFitOptions{});
   const int frames = std::getenv("WEFT_BENCH_FRAMES") ? std::atoi(std::getenv("WEFT_BENCH_FRAMES")) : 20;
   const auto vis = tables(c, scene, true), novis = tables(c, scene, false);
-  for (int size : {640}) {
+  for (int size : {std::getenv("WEFT_BENCH_WIDTH") ? std::atoi(std::getenv("WEFT_BENCH_WIDTH")) : 640}) {
     const int w = size, h = size * 3 / 4;
     const GpuFrame sp = render_gpu_frame(scene, fabrics, sgs, "sgpoint", w, h, frames);
     const GpuFrame a = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, frames, vis);

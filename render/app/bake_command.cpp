@@ -29,6 +29,8 @@ struct BakeArgs {
   bool no_tables = false;
   double target_error = 0.0;
   int sdf_resolution = 32;
+  int grid = 0;
+  std::vector<int> samples;
 };
 
 std::string read_text(const std::filesystem::path& path) {
@@ -103,7 +105,18 @@ int run_bake(const BakeArgs& a) {
     IwasakiBakeOptions opt;
     opt.target_error = a.target_error;
     opt.visibility.resolution = a.sdf_resolution;
-    const IwasakiBundleData data = bake_iwasaki(in.scene, fabrics, opt, &tables_report);
+    opt.grid = a.grid;
+    if (!a.samples.empty()) {
+      if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
+        throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
+      opt.tangent_samples = {a.samples[0], a.samples[1]};
+    }
+    IwasakiBundleData data;
+    try {
+      data = bake_iwasaki(in.scene, fabrics, opt, &tables_report);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
     add_iwasaki_sections(writer, data);
     char buf[256];
     std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
@@ -150,6 +163,9 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))
       ->capture_default_str();
+  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")
+      ->check(CLI::Range(4, 128));
+  sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };
 }
 

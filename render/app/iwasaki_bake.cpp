@@ -37,6 +37,9 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
           std::fprintf(stderr, "%-30s %-30s %10.3g %7.2f s\n", r.setting.c_str(), r.value.c_str(), r.error, r.seconds);
       }
     }
+    if (opt.grid > 0) settings.xi_resolution = settings.wo_resolution = settings.wi_resolution = opt.grid;
+    if (opt.tangent_samples[0] > 0 && opt.tangent_samples[1] > 0) settings.tangent_samples = opt.tangent_samples;
+    settings.validate();
     ProgressBar bar("T tables " + o.fabric);
     WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {
       if (!opt.quiet) bar(f);

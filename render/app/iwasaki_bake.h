@@ -2,6 +2,7 @@
 // The seed 000 stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
 // weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded cloth
 // object, and κ when any object is occluded. Progress bars on stderr, a summary on request.
+#include <array>
 #include <map>
 #include <string>
 
@@ -14,6 +15,8 @@ namespace weft {
 
 struct IwasakiBakeOptions {
   double target_error = 0.0;  // > 0: bake_selection picks the table settings (and prints its table)
+  int grid = 0;               // > 0: ξ, ω_o and ω_i grids n×n instead of the paper's 48×48 (tests, previews)
+  std::array<int, 2> tangent_samples{0, 0};  // > 0: override the paper's (or the selection's) counts
   SceneVisibilityOptions visibility;
   bool quiet = false;         // no progress bars or summary
 };

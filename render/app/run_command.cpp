@@ -160,7 +160,18 @@ int run_kiosk(const RunArgs& a) {
   notifier.status("loading bundle " + a.bundle);
   std::optional<SceneBundle> loaded;
   bundle::FallbackOptions fo;
-  fo.accept = [&](const bundle::BundleReader& r) { loaded = read_scene_bundle(r); };
+  std::shared_ptr<const IwasakiBundleData> iwasaki;
+  // Seed 000's tables are read in the accept step too: a bundle whose tables do not read (a
+  // section missing, a shape that does not match the mesh) falls back like a corrupt one.
+  fo.accept = [&](const bundle::BundleReader& r) {
+    loaded = read_scene_bundle(r);
+    iwasaki.reset();
+    if (has_iwasaki_sections(r) && a.method != "sgpoint") {
+      std::map<size_t, size_t> vertices;
+      for (size_t i = 0; i < loaded->scene.objects.size(); ++i) vertices[i] = loaded->scene.objects[i].mesh.positions.size();
+      iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(r, vertices));
+    }
+  };
   fo.log = [](std::string_view s) { log_line(std::string(s)); };
   bundle::OpenedBundle opened = [&] {
     try {
@@ -171,22 +182,8 @@ int run_kiosk(const RunArgs& a) {
       throw;
     }
   }();
-  if (!loaded) loaded = read_scene_bundle(opened.bundle);
+  if (!loaded) fo.accept(opened.bundle);
   SceneBundle& sb = *loaded;
-  // Seed 000's tables, when the bundle has them (a bundle whose tables do not read is refused
-  // here, naming the section; the scene alone still shows with sgpoint only if asked for).
-  std::shared_ptr<const IwasakiBundleData> iwasaki;
-  if (has_iwasaki_sections(opened.bundle) && a.method != "sgpoint") {
-    std::map<size_t, size_t> vertices;
-    for (size_t i = 0; i < sb.scene.objects.size(); ++i) vertices[i] = sb.scene.objects[i].mesh.positions.size();
-    try {
-      iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(opened.bundle, vertices));
-    } catch (const bundle::BundleError& e) {
-      log_line(std::string("unusable seed 000 tables: ") + e.what());
-      notifier.status("unusable seed 000 tables (see journal)");
-      throw;
-    }
-  }
   const std::string method_name = a.method != "auto" ? a.method : (iwasaki ? "iwasaki" : "sgpoint");
   const gpu::Method method = gpu::parse_method(method_name);
   if (method == gpu::Method::iwasaki && !iwasaki)
