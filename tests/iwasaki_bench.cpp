@@ -119,7 +119,7 @@ TEST(IwasakiBench, AccuracyAgainstReference) {
       const GpuFrame f = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, 0, data);
       double se = 0, sum = 0, sum_x = 0;
       size_t n = 0;
-      Image ratio(w, h);  // x/r per cloth pixel, 0.5 at equality after write_png's tone curve scale
+      Image ratio(w, h);  // x/r per cloth pixel
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
           if (!cloth[size_t(y) * w + x]) continue;
