@@ -1,5 +1,6 @@
 #include "gpu/iwasaki_cloth.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -91,7 +92,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
   std::vector<float> axes, amplitudes, sigmas, level_w;
   std::vector<GLint> levels;
+  int count = 0;
   for (const auto& g : sgs) {
+    if (!(std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0)) continue;  // a fit's empty lobe: no work
+    ++count;
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
     sigmas.push_back(float(sg_bandwidth(g.sharpness)));
@@ -101,13 +105,13 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     levels.insert(levels.end(), {l0, l1});
     level_w.push_back(float(f));
   }
-  glUniform1i(program_.uniform("u_sg_count"), int(sgs.size()));
-  if (!sgs.empty()) {
-    glUniform3fv(program_.uniform("u_sg_axis"), GLsizei(sgs.size()), axes.data());
-    glUniform3fv(program_.uniform("u_sg_amplitude"), GLsizei(sgs.size()), amplitudes.data());
-    glUniform1fv(program_.uniform("u_sg_sigma"), GLsizei(sgs.size()), sigmas.data());
-    glUniform2iv(program_.uniform("u_sg_levels"), GLsizei(sgs.size()), levels.data());
-    glUniform1fv(program_.uniform("u_sg_level_w"), GLsizei(sgs.size()), level_w.data());
+  glUniform1i(program_.uniform("u_sg_count"), count);
+  if (count > 0) {
+    glUniform3fv(program_.uniform("u_sg_axis"), count, axes.data());
+    glUniform3fv(program_.uniform("u_sg_amplitude"), count, amplitudes.data());
+    glUniform1fv(program_.uniform("u_sg_sigma"), count, sigmas.data());
+    glUniform2iv(program_.uniform("u_sg_levels"), count, levels.data());
+    glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
   }
   glUniform1i(program_.uniform("u_visibility"), o.sdf ? 1 : 0);
   // Samplers of every declared unit get a texture of their type, used or not.
