@@ -14,6 +14,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// σ' of Eq. 11 at a lobe's peak, with cos θ·cos θ_k kept ≥ 1e−6: at a pole (or a peak past
+// it) σ' → ∞ and σ'·[erf − erf] tends to a finite limit, but ∞·0 would give NaN.
+double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
+  return sigma_k / std::sqrt(std::max(std::cos(theta) * std::cos(theta_k), 1e-6));
+}
+
 // The linear visibility of one (SG, tangent sample): d and ∇d looked up once, at the SG's own
 // direction (θ_k, φ_k), and carried to each lobe's peak along the plane they define. All lobes
 // peak at φ_k and near θ_k, and V' is linear anyway (Eq. 12): one SDF lookup instead of three.
@@ -79,7 +85,7 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         // Surface lobe: g^u(θ_h; γ_s) ≈ g^c(θ_i; −θ_o, 2γ_s)/(√π γ_s), merged with the SG's.
         {
           const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gs));
-          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           double fr = 0, geo = 0;
           const double cos_half = smooth(l.mu, fr, geo);
           const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
@@ -91,14 +97,14 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           double fr = 0, geo = 0;
           smooth(l.mu, fr, geo);
           const double t = 1.0 - fr;
-          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
           const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
                               std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
 
           smooth(sg.theta_k, fr, geo);
           const double td = 1.0 - fr;
-          const double spk = sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
+          const double spk = lobe_sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
           const double Ik = pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk, sdf, visibility);
           const double iso = p.kd * td * td * geo /
                              std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;

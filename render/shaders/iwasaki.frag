@@ -95,7 +95,8 @@ Lobe lobe_product(Lobe a, Lobe b) {
   return Lobe(a.alpha * b.alpha * (denom > 0.0 ? exp(-4.0 * k1 * k2 * h * h / denom) : 1.0),
               k3 > 0.0 ? atan(s, c) : a.mu, sqrt(2.0 / k3));
 }
-float sigma_prime(float sigma_k, float theta, float theta_k) { return sigma_k / sqrt(cos(theta) * cos(theta_k)); }
+// iwasaki.cpp's lobe_sigma_prime: cos θ·cos θ_k kept ≥ 1e−6 (σ' = ∞ would make ∞·0 = NaN).
+float sigma_prime(float sigma_k, float theta, float theta_k) { return sigma_k / sqrt(max(cos(theta) * cos(theta_k), 1e-6)); }
 // erf to 1.2e−7 (Numerical Recipes' erfc Chebyshev fit); GLSL ES has none.
 float erf_approx(float x) {
   float z = abs(x);
