@@ -1,14 +1,18 @@
-// `weft bake`: writes the scene part of a kiosk bundle (BUNDLE_FORMAT.md, "Scene bundle
-// sections"): meshes, materials, fabric parameters, camera and default SGs.
+// `weft bake`: writes a kiosk bundle (BUNDLE_FORMAT.md): the scene sections (meshes, materials,
+// fabric parameters, camera, default SGs) and seed 000's tables (T per cloth fabric, per-vertex
+// visibility PCA for occluded cloth, κ).
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "app/iwasaki_bake.h"
+#include "bake/iwasaki_bundle.h"
 #include "bake/scene_bundle.h"
 #include "bundle/bundle_writer.h"
 #include "lighting/env_map.h"
@@ -22,6 +26,11 @@ struct BakeArgs {
   std::string scene, fabric, sgs_file, out;
   int fit_sgs = 0;
   bool only_scene_fabrics = false;
+  bool no_tables = false;
+  double target_error = 0.0;
+  int sdf_resolution = 32;
+  int grid = 0;
+  std::vector<int> samples;
 };
 
 void progress(int step, int steps, const std::string& what) {
@@ -30,7 +39,8 @@ void progress(int step, int steps, const std::string& what) {
 
 int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  constexpr int kSteps = 4;
+  constexpr int kSteps = 5;
+  if (a.sdf_resolution % 2) throw UsageError("--sdf-resolution: must be even");
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   try {
@@ -75,9 +85,39 @@ int run_bake(const BakeArgs& a) {
     lighting = "fitted to " + in.scene.environment;
   }
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
-  progress(4, kSteps, "writing " + a.out);
   bundle::BundleWriter writer;
   add_scene_sections(writer, in);
+  IwasakiBakeReport tables_report;
+  std::string tables_line = "no seed 000 tables (--no-tables)";
+  if (!a.no_tables) {
+    progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
+    std::map<std::string, Fabric> fabrics;
+    for (const auto& o : in.scene.objects)
+      if (o.material == Material::cloth && !fabrics.count(o.fabric))
+        fabrics.emplace(o.fabric, parse_fabric(in.fabrics.at(o.fabric), o.fabric));
+    IwasakiBakeOptions opt;
+    opt.target_error = a.target_error;
+    opt.visibility.resolution = a.sdf_resolution;
+    opt.grid = a.grid;
+    if (!a.samples.empty()) {
+      if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
+        throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
+      opt.tangent_samples = {a.samples[0], a.samples[1]};
+    }
+    IwasakiBundleData data;
+    try {
+      data = bake_iwasaki(in.scene, fabrics, opt, &tables_report);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+    add_iwasaki_sections(writer, data);
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
+                  data.tables.size(), tables_report.tables_s, data.visibility.size(), tables_report.visibility_s,
+                  tables_report.kappa_s);
+    tables_line = buf;
+  }
+  progress(5, kSteps, "writing " + a.out);
   const auto bytes = writer.to_bytes();
   try {
     writer.write_file(a.out);
@@ -90,9 +130,10 @@ int run_bake(const BakeArgs& a) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fprintf(stderr,
                "baked %s: scene '%s', %zu objects, %zu triangles, %zu fabrics, %zu SGs (%s); %zu sections, %zu bytes, "
-               "%.2f s\n",
+               "%.2f s\n  %s; bundle %.2f MB\n",
                a.out.c_str(), in.scene.name.c_str(), in.scene.objects.size(), triangles, in.fabrics.size(),
-               in.sgs.size(), lighting.c_str(), writer.section_count(), bytes.size(), s);
+               in.sgs.size(), lighting.c_str(), writer.section_count(), bytes.size(), s, tables_line.c_str(),
+               bytes.size() / 1e6);
   return 0;
 }
 
@@ -100,7 +141,7 @@ int run_bake(const BakeArgs& a) {
 
 CommandAction add_bake_command(CLI::App& app) {
   auto a = std::make_shared<BakeArgs>();
-  CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs)");
+  CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs, seed 000 tables)");
   sub->add_option("--scene", a->scene, "Scene preset (assets/scenes/NAME.json)")->required();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: each object's own)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
@@ -108,6 +149,16 @@ CommandAction add_bake_command(CLI::App& app) {
       ->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
+  sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
+  sub->add_option("--target-error", a->target_error,
+                  "Choose tangent samples, sharpness levels and SVD ranks for this error (0: the paper's settings)")
+      ->check(CLI::Range(0.0, 0.5));
+  sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
+      ->check(CLI::Range(8, 256))
+      ->capture_default_str();
+  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")
+      ->check(CLI::Range(4, 128));
+  sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };
 }
 

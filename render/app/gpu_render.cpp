@@ -10,12 +10,13 @@
 namespace weft {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
-                          const std::string& method, int width, int height, int timed_frames) {
+                          const std::string& method, int width, int height, int timed_frames,
+                          std::shared_ptr<const IwasakiBundleData> iwasaki) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
-  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method));
+  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki));
   renderer.set_lighting(sgs);
   gpu::OffscreenTarget target(width, height);
   target.bind();

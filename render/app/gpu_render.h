@@ -1,8 +1,10 @@
 #pragma once
 // `weft render` for the runtime methods: one headless GLES frame, read back as linear radiance.
 #include <map>
+#include <memory>
 #include <string>
 
+#include "bake/iwasaki_bundle.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "image/image.h"
@@ -18,6 +20,7 @@ struct GpuFrame {
 };
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
-                          const std::string& method, int width, int height, int timed_frames);
+                          const std::string& method, int width, int height, int timed_frames,
+                          std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
 
 }  // namespace weft

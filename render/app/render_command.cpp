@@ -12,6 +12,11 @@
 #include "app/cli_parse.h"
 #include "app/gpu_render.h"
 #include "gpu/scene_renderer.h"
+#include "app/iwasaki_bake.h"
+#include "bake/iwasaki_bundle.h"
+#include "bake/scene_bundle.h"
+#include "gpu/egl_context.h"
+#include "app/progress_bar.h"
 #include "app/commands.h"
 #include "core/fabric.h"
 #include "image/image.h"
@@ -43,28 +48,7 @@ struct RenderArgs {
   bool no_check = false;
   double exposure = 0.0;  // 0: automatic
   int timed_frames = 20;
-};
-
-// A one-line bar on stderr, redrawn in place: "[#####.....]  48%  12 s".
-class ProgressBar {
-public:
-  explicit ProgressBar(std::string label) : label_(std::move(label)), start_(std::chrono::steady_clock::now()) {}
-  void operator()(double fraction) {
-    const int percent = static_cast<int>(std::lround(100.0 * fraction));
-    if (percent == last_) return;
-    last_ = percent;
-    const int filled = percent * 30 / 100;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    std::fprintf(stderr, "\r%s [%s%s] %3d%% %6.1f s", label_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(30 - filled, '.').c_str(), percent, s);
-    if (percent >= 100) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  }
-
-private:
-  std::string label_;
-  std::chrono::steady_clock::time_point start_;
-  int last_ = -1;
+  std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
 };
 
 std::filesystem::path png_beside(const std::filesystem::path& exr) {
@@ -80,6 +64,7 @@ int run_render(const RenderArgs& a) {
     for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
+  if (!a.bundle.empty() && a.method != "iwasaki") throw UsageError("--bundle: only with --method iwasaki");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -103,6 +88,21 @@ int run_render(const RenderArgs& a) {
     if (obj.repair.degenerate_triangles_dropped > 0)
       std::cerr << "weft render: mesh " << scene.name << "/" << obj.name << ": dropped "
                 << obj.repair.degenerate_triangles_dropped << " degenerate triangles\n";
+  std::shared_ptr<const IwasakiBundleData> iwasaki;
+  if (!a.bundle.empty()) {
+    // The bundle's scene, fabrics and seed 000 tables; the lighting still comes from the options.
+    try {
+      const auto reader = bundle::BundleReader::open(a.bundle);
+      SceneBundle sb = read_scene_bundle(reader);
+      std::map<size_t, size_t> vertices;
+      for (size_t i = 0; i < sb.scene.objects.size(); ++i) vertices[i] = sb.scene.objects[i].mesh.positions.size();
+      if (!has_iwasaki_sections(reader)) throw UsageError("--bundle: " + a.bundle + " has no seed 000 tables (weft bake without --no-tables)");
+      iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+      scene = std::move(sb.scene);
+    } catch (const bundle::BundleError& e) {
+      throw UsageError(std::string("--bundle: ") + e.what());
+    }
+  }
   if (!a.fabric.empty())
     for (auto& obj : scene.objects)
       if (obj.material == Material::cloth) obj.fabric = a.fabric;
@@ -154,8 +154,18 @@ int run_render(const RenderArgs& a) {
     lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
   }
 
+  if (a.method == "iwasaki" && !iwasaki) {
+    std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
+    iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(scene, fabrics, IwasakiBakeOptions{}));
+  }
   if (a.method != "reference") {
-    const GpuFrame f = render_gpu_frame(scene, fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames);
+    GpuFrame f;
+    try {
+      f = render_gpu_frame(scene, fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, iwasaki);
+    } catch (const gpu::GpuError& e) {
+      std::cerr << "weft render: " << e.what() << "\n";
+      return 1;
+    }
     write_exr(f.image, out);
     std::vector<bool> drawn(f.image.pixels.size());  // the GPU frame clears the background to 0
     for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = f.image.pixels[i] != glm::dvec3(0.0);
@@ -239,7 +249,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, iwasaki, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
   sub->add_option("--sgs", a->sgs_file,
@@ -258,6 +268,7 @@ CommandAction add_render_command(CLI::App& app) {
                   "Convergence check: re-render every Nth pixel (in x and y) at twice the lighting resolution and tangent samples")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
+  sub->add_option("--bundle", a->bundle, "iwasaki: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: exposure before the 1-exp(-x) tone curve and sRGB (0: automatic, from the mean of the surfaces)")

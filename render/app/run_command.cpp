@@ -22,6 +22,7 @@
 #include "app/commands.h"
 #include "app/knob_appearance.h"
 #include "app/service_notifier.h"
+#include "bake/iwasaki_bundle.h"
 #include "bake/scene_bundle.h"
 #include "bundle/bundle_fallback.h"
 #include "gpu/egl_context.h"
@@ -54,7 +55,7 @@ struct RunArgs {
   double sim_speed = 1.0;
   std::string screenshot;
   std::vector<int> size{640, 480};
-  std::string method = "sgpoint";
+  std::string method = "auto";  // iwasaki when the bundle has seed 000 tables, else sgpoint
   double exposure = 1.0;
   double stats_every = 300;  // seconds between stats lines in the log
   std::string probe = "none";
@@ -141,13 +142,11 @@ int run_kiosk(const RunArgs& a) {
     throw UsageError("--size: expected WIDTH HEIGHT in [8, 8192]");
   if (!std::isfinite(a.turntable) || std::abs(a.turntable) > 360)
     throw UsageError("--turntable: degrees per second in [-360, 360]");
-  const gpu::Method method = [&] {
-    try {
-      return gpu::parse_method(a.method);
+  if (a.method != "auto") try {
+      gpu::parse_method(a.method);
     } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--method: ") + e.what());
+      throw UsageError(std::string("--method: ") + e.what() + " or auto");
     }
-  }();
   std::error_code ec;
   std::filesystem::create_directories(a.state_dir, ec);
   if (ec) log_line("cannot create state directory " + a.state_dir + ": " + ec.message() + " (no last-good copy, no knob state)");
@@ -156,7 +155,18 @@ int run_kiosk(const RunArgs& a) {
   notifier.status("loading bundle " + a.bundle);
   std::optional<SceneBundle> loaded;
   bundle::FallbackOptions fo;
-  fo.accept = [&](const bundle::BundleReader& r) { loaded = read_scene_bundle(r); };
+  std::shared_ptr<const IwasakiBundleData> iwasaki;
+  // Seed 000's tables are read in the accept step too: a bundle whose tables do not read (a
+  // section missing, a shape that does not match the mesh) falls back like a corrupt one.
+  fo.accept = [&](const bundle::BundleReader& r) {
+    loaded = read_scene_bundle(r);
+    iwasaki.reset();
+    if (has_iwasaki_sections(r) && a.method != "sgpoint") {
+      std::map<size_t, size_t> vertices;
+      for (size_t i = 0; i < loaded->scene.objects.size(); ++i) vertices[i] = loaded->scene.objects[i].mesh.positions.size();
+      iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(r, vertices));
+    }
+  };
   fo.log = [](std::string_view s) { log_line(std::string(s)); };
   bundle::OpenedBundle opened = [&] {
     try {
@@ -167,8 +177,12 @@ int run_kiosk(const RunArgs& a) {
       throw;
     }
   }();
-  if (!loaded) loaded = read_scene_bundle(opened.bundle);
+  if (!loaded) fo.accept(opened.bundle);
   SceneBundle& sb = *loaded;
+  const std::string method_name = a.method != "auto" ? a.method : (iwasaki ? "iwasaki" : "sgpoint");
+  const gpu::Method method = gpu::parse_method(method_name);
+  if (method == gpu::Method::iwasaki && !iwasaki)
+    throw UsageError("--method iwasaki: bundle " + opened.file.string() + " has no seed 000 tables (weft bake without --no-tables)");
   log_line("bundle " + opened.file.string() + (opened.is_last_good ? " (LAST GOOD COPY: " + opened.primary_error + ")" : "") +
            ": scene '" + sb.scene.name + "', " + std::to_string(sb.scene.objects.size()) + " objects, " +
            std::to_string(sb.sgs.size()) + " SGs");
@@ -250,7 +264,7 @@ int run_kiosk(const RunArgs& a) {
   std::vector<Fabric> cloth_fabrics;
   for (size_t i = 0; i < sb.scene.objects.size(); ++i)
     if (sb.scene.objects[i].material == Material::cloth) cloth_fabrics.push_back(sb.fabrics.at(sb.scene.objects[i].fabric));
-  gpu::SceneRenderer renderer(sb.scene, cloth_fabrics, method);
+  gpu::SceneRenderer renderer(sb.scene, cloth_fabrics, method, 16, iwasaki);
   gpu::OffscreenTarget target(width, height);
   std::optional<gpu::ToneMapper> tonemap;
   if (kms) tonemap.emplace();
@@ -268,7 +282,11 @@ int run_kiosk(const RunArgs& a) {
   float light_rotation = -1;
   auto apply_knob_state = [&](const input::AppearanceState& s) {
     const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
-    for (size_t c = 0; c < cloth_fabrics.size(); ++c) renderer.set_fabric(c, f);
+    try {
+      for (size_t c = 0; c < cloth_fabrics.size(); ++c) renderer.set_fabric(c, f);
+    } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
+      log_line(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
+    }
     if (s.env_rotation_deg != light_rotation) {
       renderer.set_lighting(rotated_about_z(room_light, s.env_rotation_deg));
       light_rotation = s.env_rotation_deg;
@@ -313,7 +331,7 @@ int run_kiosk(const RunArgs& a) {
   const std::string where = kms ? kms->description() : "headless";
   char line[256];
   std::snprintf(line, sizeof line, "first frame after %.0f ms (%dx%d, %s, %s)", boot_ms, width, height, where.c_str(),
-                a.method.c_str());
+                method_name.c_str());
   log_line(line);
   notifier.ready(std::string("showing '") + sb.scene.name + "'" + (opened.is_last_good ? " from the LAST GOOD bundle" : "") +
                  " on " + where);
@@ -408,7 +426,7 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--sim-speed", a->sim_speed, "Play the sim: script this many times faster")->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Write the last frame, tone-mapped, as PNG");
   sub->add_option("--size", a->size, "Headless frame size WIDTH HEIGHT")->expected(2)->capture_default_str();
-  sub->add_option("--method", a->method, "Runtime method")->capture_default_str();
+  sub->add_option("--method", a->method, "Runtime method: auto (iwasaki when the bundle has its tables, else sgpoint), iwasaki or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "Tone-mapping exposure")->capture_default_str();

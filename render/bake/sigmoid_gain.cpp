@@ -284,6 +284,24 @@ SigmoidGainTable SigmoidGainTable::fit(const SigmoidGainTableSpec& spec,
   return table;
 }
 
+SigmoidGainTable SigmoidGainTable::from_gains(const SigmoidGainTableSpec& spec, std::vector<float> gains,
+                                              double max_fit_error) {
+  if (spec.sigma_l_count < 2 || spec.sigma_prime_count < 2 || spec.beta_count < 2 ||
+      !(spec.sigma_min > 0 && spec.sigma_max > spec.sigma_min))
+    throw std::invalid_argument("sigmoid gain table: bad spec");
+  if (gains.size() != size_t(spec.sigma_l_count) * spec.sigma_prime_count * spec.beta_count)
+    throw std::invalid_argument("sigmoid gain table: " + std::to_string(gains.size()) + " gains for a " +
+                                std::to_string(spec.sigma_l_count) + "x" + std::to_string(spec.sigma_prime_count) +
+                                "x" + std::to_string(spec.beta_count) + " table");
+  for (float g : gains)
+    if (!(std::isfinite(g) && g > 0)) throw std::invalid_argument("sigmoid gain table: non-finite or non-positive gain");
+  SigmoidGainTable t;
+  t.spec_ = spec;
+  t.kappa_ = std::move(gains);
+  t.max_fit_error_ = max_fit_error;
+  return t;
+}
+
 double SigmoidGainTable::kappa(double sigma_l, double sigma_prime, double grad_theta,
                                double grad_phi) const {
   const double log_range = std::log(spec_.sigma_max / spec_.sigma_min);

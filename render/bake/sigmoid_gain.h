@@ -90,6 +90,11 @@ class SigmoidGainTable {
   // Fits every cell (OpenMP over cells). `progress(done, total)` may be empty.
   static SigmoidGainTable fit(const SigmoidGainTableSpec& spec,
                               const std::function<void(int, int)>& progress = {});
+  // A table read back from storage (a bundle): the spec and its normalised gains, as
+  // normalized_gains() gave them. Throws std::invalid_argument on a size mismatch or a
+  // non-finite or non-positive gain.
+  static SigmoidGainTable from_gains(const SigmoidGainTableSpec& spec, std::vector<float> gains,
+                                     double max_fit_error);
   // κ at any (σ_l, σ', ∇d): trilinear interpolation of the normalised gain κ·s in
   // (log σ_l, log σ', β), divided by s(σ_l, σ', ∇d) of the actual arguments (gaussian_spread).
   // κ·s stays near 1.70 everywhere (the logistic–probit constant; it drifts only where the

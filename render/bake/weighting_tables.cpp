@@ -13,11 +13,11 @@ double WeightingTables::node_value(int t, int level, int xi_node, int wo_node) c
   return sum;
 }
 
-double WeightingTables::value(int t, double lambda, const glm::dvec3& xi, const glm::dvec3& wo) const {
-  if (lambdas.empty()) return 0.0;
+void WeightingTables::level_weights(double lambda, int& l0, int& l1, double& f) const {
   // Level weights: linear in log λ.
-  int l0 = 0, l1 = 0;
-  double f = 0.0;
+  l0 = 0, l1 = 0;
+  f = 0.0;
+  if (lambdas.empty()) return;
   const double ll = std::log(std::clamp(lambda, lambdas.front(), lambdas.back()));
   if (lambdas.size() > 1) {
     l0 = 0;
@@ -25,6 +25,13 @@ double WeightingTables::value(int t, double lambda, const glm::dvec3& xi, const 
     l1 = l0 + 1;
     f = std::clamp((ll - std::log(lambdas[l0])) / (std::log(lambdas[l1]) - std::log(lambdas[l0])), 0.0, 1.0);
   }
+}
+
+double WeightingTables::value(int t, double lambda, const glm::dvec3& xi, const glm::dvec3& wo) const {
+  if (lambdas.empty()) return 0.0;
+  int l0 = 0, l1 = 0;
+  double f = 0.0;
+  level_weights(lambda, l0, l1, f);
   const BilinearTap a = xi_grid.tap(xi), b = wo_grid.tap(wo);
   double total = 0.0;
   for (int k = 0; k < 2; ++k) {

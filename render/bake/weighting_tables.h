@@ -52,6 +52,9 @@ struct WeightingTables {
   // T(t, λ, ξ, ω_o): bilinear in both direction grids, linear in log λ between the two
   // nearest levels (clamped to the baked range). ξ, ω_o unit vectors in the local frame.
   double value(int t, double lambda, const glm::dvec3& xi, const glm::dvec3& wo) const;
+  // The two levels value() blends for sharpness λ and the weight f of the second (level l1);
+  // the GPU path takes its levels from here too.
+  void level_weights(double lambda, int& l0, int& l1, double& f) const;
 
   std::size_t bytes() const;  // payload: the U and V factors
 };

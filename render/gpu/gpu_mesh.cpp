@@ -43,8 +43,10 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh) : vertices_(mesh.positions.size()) {
 }
 
 GpuMesh::GpuMesh(GpuMesh&& o) noexcept
-    : vao_(o.vao_), vbo_(o.vbo_), ibo_(o.ibo_), colour_vbo_(o.colour_vbo_), indices_(o.indices_), vertices_(o.vertices_) {
+    : vao_(o.vao_), vbo_(o.vbo_), ibo_(o.ibo_), colour_vbo_(o.colour_vbo_), extra_vbos_(std::move(o.extra_vbos_)),
+      indices_(o.indices_), vertices_(o.vertices_) {
   o.vao_ = o.vbo_ = o.ibo_ = o.colour_vbo_ = 0;
+  o.extra_vbos_.clear();
 }
 
 GpuMesh::~GpuMesh() {
@@ -52,6 +54,7 @@ GpuMesh::~GpuMesh() {
   glDeleteBuffers(1, &vbo_);
   glDeleteBuffers(1, &colour_vbo_);
   glDeleteBuffers(1, &ibo_);
+  if (!extra_vbos_.empty()) glDeleteBuffers(GLsizei(extra_vbos_.size()), extra_vbos_.data());
   glDeleteVertexArrays(1, &vao_);
 }
 
@@ -59,6 +62,19 @@ void GpuMesh::set_vertex_colours(const std::vector<glm::vec3>& colours) {
   if (colours.size() != vertices_) throw GpuError("vertex colour count does not match the mesh");
   glBindBuffer(GL_ARRAY_BUFFER, colour_vbo_);
   glBufferSubData(GL_ARRAY_BUFFER, 0, colours.size() * sizeof(glm::vec3), colours.data());
+}
+
+void GpuMesh::add_attribute(GLuint location, const std::vector<glm::vec3>& values) {
+  if (values.size() != vertices_) throw GpuError("attribute value count does not match the mesh");
+  GLuint vbo = 0;
+  glGenBuffers(1, &vbo);
+  extra_vbos_.push_back(vbo);
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, values.size() * sizeof(glm::vec3), values.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glBindVertexArray(0);
 }
 
 void GpuMesh::draw() const {

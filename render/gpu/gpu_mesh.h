@@ -22,11 +22,14 @@ public:
   ~GpuMesh();
   // Replaces the per-vertex colour slot (e.g. SG irradiance of a Lambertian surface).
   void set_vertex_colours(const std::vector<glm::vec3>& colours);
+  // A further static vec3 attribute at `location` (one value per vertex).
+  void add_attribute(GLuint location, const std::vector<glm::vec3>& values);
   void draw() const;
   size_t vertex_count() const { return vertices_; }
 
 private:
   GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, colour_vbo_ = 0;
+  std::vector<GLuint> extra_vbos_;
   GLsizei indices_ = 0;
   size_t vertices_ = 0;
 };

@@ -30,6 +30,7 @@ const std::vector<MethodInfo>& method_table() {
       {Method::mdfrot, "mdfrot", {"sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
       {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
       {Method::mizutani, "mizutani", {"microcylinder.glsl", "mizutani.glsl", "mizutani.frag"}, false},
+      {Method::iwasaki, "iwasaki", {}, false},  // its own programs: gpu/iwasaki_cloth.h
   };
   return table;
 }
@@ -83,6 +84,7 @@ struct SceneRenderer::Object {
     thin = thin_params(f);
   }
   std::unique_ptr<MizutaniTextures> mizutani;  // cloth under Method::mizutani
+  size_t iwasaki = 0;                           // handle in iwasaki_ (Method::iwasaki cloth)
 };
 
 // Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
@@ -91,25 +93,29 @@ std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) c
   return std::make_unique<ClothBsdf>(fabric, paper_tangent_samples(fabric.name));
 }
 
-SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples)
+SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
+                             std::shared_ptr<const IwasakiBundleData> iwasaki)
     : method_(method), tangent_samples_(tangent_samples) {
+  if (method == Method::iwasaki) iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki));
   std::string fragment = program_source(info(method).fragment);
   if (method == Method::mizutani) {  // its light arrays are sized at compile time
     fragment = program_source({}) + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
                fragment.substr(program_source({}).size());
     azimuthal_ = std::make_unique<AzimuthalTable>(bake_azimuthal_table());
   }
-  cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
+  if (!iwasaki_) cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
   if (info(method).see_through)
     background_program_ =
         std::make_unique<GlProgram>(kFullscreenVs, program_source({"sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
-  for (const auto& o : scene.objects) {
-    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}});
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}, nullptr, 0});
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->set(fabrics[cloth], tangent_samples_);
+      if (iwasaki_) obj->iwasaki = iwasaki_->add_object(i, o.mesh, fabrics[cloth]);
       if (method == Method::mizutani) {
         obj->bsdf = mizutani_cloth(fabrics[cloth]);
         BakeSettings settings;
@@ -128,6 +134,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->bsdf && cloth++ == cloth_index) {
+      if (iwasaki_) iwasaki_->set_fabric(o->iwasaki, fabric);  // throws (and changes nothing) without tables
       o->set(fabric, tangent_samples_);
       if (method_ == Method::mizutani) o->bsdf = mizutani_cloth(fabric);
       return;
@@ -183,6 +190,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     for (auto& o : objects_) {
       const bool blended = o->bsdf && see_through;
       if (blended != (pass == 1)) continue;
+      if (o->bsdf && iwasaki_) {
+        iwasaki_->draw(o->iwasaki, vp, glm::vec3(camera.position), sgs_);
+        continue;
+      }
       const GlProgram& prog = o->bsdf ? *cloth_program_ : *lambert_program_;
       prog.use();
       glUniformMatrix4fv(prog.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
@@ -209,6 +220,8 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
             upload_fabric(prog, *o->bsdf);
             upload_sg_lighting(prog, sgs_);
             upload_thin(prog, o->thin);
+            break;
+          case Method::iwasaki:  // drawn by iwasaki_ above
             break;
           case Method::mizutani:
             upload_fabric(prog, *o->bsdf);

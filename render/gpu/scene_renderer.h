@@ -14,6 +14,7 @@
 #include "methods/thin.h"
 #include "gpu/gl_program.h"
 #include "gpu/gpu_mesh.h"
+#include "gpu/iwasaki_cloth.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -26,6 +27,7 @@ enum class Method {
   sheen,
   mdfrot,
   thin,
+  iwasaki,   // seed 000: needs the bundle's tables (IwasakiBundleData)
   mizutani,  // seed 001: bakes each cloth's weighting tables (paper's tangent samples) at construction
 };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
@@ -35,7 +37,9 @@ std::vector<std::string> method_names();
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
-  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16);
+  // Method::iwasaki draws cloth from `iwasaki` (a bundle's seed 000 tables; required for it).
+  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
+                std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
 
   void set_lighting(const SgLighting& sgs);
@@ -49,6 +53,7 @@ private:
   std::vector<std::unique_ptr<Object>> objects_;
   std::unique_ptr<GlProgram> cloth_program_, lambert_program_, background_program_;
   Method method_;
+  std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki only
   SgLighting sgs_;
   int tangent_samples_;
   // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).

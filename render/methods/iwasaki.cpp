@@ -14,13 +14,28 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// σ' of Eq. 11 at a lobe's peak, with cos θ·cos θ_k kept ≥ 1e−6: at a pole (or a peak past
+// it) σ' → ∞ and σ'·[erf − erf] tends to a finite limit, but ∞·0 would give NaN.
+double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
+  return sigma_k / std::sqrt(std::max(std::cos(theta) * std::cos(theta_k), 1e-6));
+}
+
+// The linear visibility of one (SG, tangent sample): d and ∇d looked up once, at the SG's own
+// direction (θ_k, φ_k), and carried to each lobe's peak along the plane they define. All lobes
+// peak at φ_k and near θ_k, and V' is linear anyway (Eq. 12): one SDF lookup instead of three.
+struct LinearSdf {
+  bool on = false;
+  double d = 0, d_dtheta = 0, d_dphi = 0, theta = 0;
+};
+
 // ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13).
-double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, const ThreadFrame& f,
+double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, const LinearSdf& sdf,
                      const IwasakiVisibility* vis) {
-  if (!vis || !vis->sdf) return circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
-  double d = 0, dt = 0, dp = 0;
-  vis->sdf(f, theta_l, phi_k, d, dt, dp);
-  return visible_pair_integral(theta_l, sigma_l, phi_k, sigma_p, d, dt, dp);
+  const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
+  if (!sdf.on) return open;
+  const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
+  if (vis->kappa) return open * vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
+  return open * linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
 }
 
 }  // namespace
@@ -50,6 +65,12 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
         const FiberAngles o = fiber_angles(tf, wo);
         const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
+        LinearSdf sdf;
+        if (visibility && visibility->sdf) {
+          sdf.on = true;
+          sdf.theta = sg.theta_k;
+          visibility->sdf(tf, sg.theta_k, sg.phi_k, sdf.d, sdf.d_dtheta, sdf.d_dphi);
+        }
 
         // The smooth factors at a lobe's peak θ_i = θ_l, φ_i = φ_k. dω = cos θ dθ dφ gives the
         // second cos θ_l beside the model's own.
@@ -64,10 +85,10 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         // Surface lobe: g^u(θ_h; γ_s) ≈ g^c(θ_i; −θ_o, 2γ_s)/(√π γ_s), merged with the SG's.
         {
           const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gs));
-          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           double fr = 0, geo = 0;
           const double cos_half = smooth(l.mu, fr, geo);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, tf, visibility);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
           surf += dvec3(T * l.alpha * fr * cos_half * geo * I);
         }
         // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
@@ -76,15 +97,15 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           double fr = 0, geo = 0;
           smooth(l.mu, fr, geo);
           const double t = 1.0 - fr;
-          const double sp = sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, tf, visibility);
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
           const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
                               std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
 
           smooth(sg.theta_k, fr, geo);
           const double td = 1.0 - fr;
-          const double spk = sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
-          const double Ik = pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk, tf, visibility);
+          const double spk = lobe_sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
+          const double Ik = pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk, sdf, visibility);
           const double iso = p.kd * td * td * geo /
                              std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;
           vol += T * (lobe + iso) * p.albedo;

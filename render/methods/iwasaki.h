@@ -8,6 +8,7 @@
 #include <functional>
 #include <span>
 
+#include "bake/sigmoid_gain.h"
 #include "bake/weighting_tables.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
@@ -16,9 +17,14 @@ namespace weft {
 
 // H(σ_l, σ'_l, d, ∂d/∂θ, ∂d/∂φ) at (θ_l, φ_k) of a tangent sample, or empty for unoccluded.
 struct IwasakiVisibility {
-  // Linearised visibility at direction (θ, φ) of the sample frame: d and its gradient.
+  // Linearised visibility at direction (θ, φ) of the sample frame: d and its gradient. Called
+  // once per (SG, tangent sample), at the SG's direction (θ_k, φ_k); each lobe's H takes d
+  // carried along that plane to its own peak (θ_l, φ_k).
   std::function<void(const ThreadFrame&, double theta, double phi, double& d, double& d_dtheta, double& d_dphi)>
       sdf;
+  // Eq. 14's sigmoid with the baked gains replaces the closed-form H when given (the runtime's
+  // choice: the GPU reads the same table).
+  const SigmoidGainTable* kappa = nullptr;
 };
 
 struct IwasakiTerms {

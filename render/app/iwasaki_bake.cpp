@@ -1,0 +1,101 @@
+#include "app/iwasaki_bake.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "app/progress_bar.h"
+#include "bake/bake_selection.h"
+#include "bake/weighting_bake.h"
+
+namespace weft {
+
+namespace {
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+}  // namespace
+
+IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                               const IwasakiBakeOptions& opt, IwasakiBakeReport* report) {
+  IwasakiBundleData out;
+  IwasakiBakeReport rep;
+  auto t0 = std::chrono::steady_clock::now();
+  for (const auto& o : scene.objects) {
+    if (o.material != Material::cloth || out.tables.count(o.fabric)) continue;
+    const Fabric& fabric = fabrics.at(o.fabric);
+    BakeSettings settings;
+    settings.tangent_samples = paper_tangent_samples(fabric.name);  // the paper's settings by default
+    if (opt.target_error > 0) {
+      ProgressBar bar("settings " + o.fabric);
+      const SelectionResult sel = select_bake_settings(fabric, opt.target_error, settings, [&](double f, std::string_view) {
+        if (!opt.quiet) bar(f);
+      });
+      settings = sel.settings;
+      if (!opt.quiet) {
+        std::fprintf(stderr, "%-30s %-30s %10s %9s\n", "setting", "chosen", "error", "time");
+        for (const SelectionRow& r : sel.rows)
+          std::fprintf(stderr, "%-30s %-30s %10.3g %7.2f s\n", r.setting.c_str(), r.value.c_str(), r.error, r.seconds);
+      }
+    }
+    if (opt.grid > 0) settings.xi_resolution = settings.wo_resolution = settings.wi_resolution = opt.grid;
+    if (opt.tangent_samples[0] > 0 && opt.tangent_samples[1] > 0) settings.tangent_samples = opt.tangent_samples;
+    settings.validate();
+    ProgressBar bar("T tables " + o.fabric);
+    WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {
+      if (!opt.quiet) bar(f);
+    });
+    if (!opt.quiet) {
+      bar(1.0);
+      const TableSummary s = summarize(t);
+      std::fprintf(stderr, "  %s: %d+%d tangent samples (%d distinct tables) x %d levels, rank %d/%.1f/%d (min/mean/max), "
+                   "SVD error max %.3g, %.2f MB; rank histogram:",
+                   o.fabric.c_str(), t.tangent_samples[0], t.tangent_samples[1], t.distinct_count(), t.level_count(),
+                   s.min_rank, s.mean_rank, s.max_rank, s.max_error, t.bytes() / 1e6);
+      for (const auto& [rank, count] : s.rank_histogram) std::fprintf(stderr, " %d:%d", rank, count);
+      std::fprintf(stderr, "\n");
+    }
+    out.tables.emplace(o.fabric, std::move(t));
+  }
+  rep.tables_s = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    if (scene.objects[i].material != Material::cloth) continue;
+    ProgressBar bar("visibility " + scene.objects[i].name);
+    SceneVisibilityStats st;
+    auto v = bake_object_visibility(scene, i, opt.visibility, [&](size_t d, size_t n) {
+      if (!opt.quiet) bar(0.95 * double(d) / double(n));
+    }, &st);
+    if (!opt.quiet) {
+      bar(1.0);
+      if (v)
+        std::fprintf(stderr, "  %s: %zu vertices, %d² SDF, %.1f %% of rays blocked, PCA %d terms (RMS %.4f rad, max %.3f rad), "
+                     "%.2f MB, %.1f s\n",
+                     scene.objects[i].name.c_str(), st.vertices, opt.visibility.resolution, 100 * st.blocked_share, v->terms,
+                     v->rms_error, v->max_error,
+                     4e-6 * double(v->mean.size() + v->basis.size() + v->coefficients.size()), st.seconds);
+      else
+        std::fprintf(stderr, "  %s: %zu vertices, no ray blocked: unoccluded, no visibility stored\n",
+                     scene.objects[i].name.c_str(), st.vertices);
+    }
+    if (v) out.visibility.emplace(i, std::move(*v));
+  }
+  rep.visibility_s = since(t0);
+
+  if (!out.visibility.empty()) {
+    t0 = std::chrono::steady_clock::now();
+    ProgressBar bar("kappa table");
+    out.kappa = SigmoidGainTable::fit(SigmoidGainTableSpec{}, [&](int d, int n) {
+      if (!opt.quiet) bar(double(d) / n);
+    });
+    rep.kappa_s = since(t0);
+    if (!opt.quiet)
+      std::fprintf(stderr, "  kappa: %dx%dx%d, max |sigmoid - H| %.4f, %.1f s\n", out.kappa->spec().sigma_l_count,
+                   out.kappa->spec().sigma_prime_count, out.kappa->spec().beta_count, out.kappa->max_fit_error(),
+                   rep.kappa_s);
+  }
+  if (report) *report = rep;
+  return out;
+}
+
+}  // namespace weft

@@ -1,0 +1,32 @@
+#pragma once
+// The seed 000 stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
+// weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded cloth
+// object, and κ when any object is occluded. Progress bars on stderr, a summary on request.
+#include <array>
+#include <map>
+#include <string>
+
+#include "bake/iwasaki_bundle.h"
+#include "bake/scene_visibility.h"
+#include "core/fabric.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+struct IwasakiBakeOptions {
+  double target_error = 0.0;  // > 0: bake_selection picks the table settings (and prints its table)
+  int grid = 0;               // > 0: ξ, ω_o and ω_i grids n×n instead of the paper's 48×48 (tests, previews)
+  std::array<int, 2> tangent_samples{0, 0};  // > 0: override the paper's (or the selection's) counts
+  SceneVisibilityOptions visibility;
+  bool quiet = false;         // no progress bars or summary
+};
+
+struct IwasakiBakeReport {
+  double tables_s = 0, visibility_s = 0, kappa_s = 0;
+};
+
+// `fabrics`: preset → fabric for every cloth object's preset.
+IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                               const IwasakiBakeOptions& options, IwasakiBakeReport* report = nullptr);
+
+}  // namespace weft

@@ -1,0 +1,33 @@
+#pragma once
+// A one-line progress bar on stderr, redrawn in place: "label [#####.....]  48%  12.0 s".
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace weft {
+
+class ProgressBar {
+public:
+  explicit ProgressBar(std::string label) : label_(std::move(label)), start_(std::chrono::steady_clock::now()) {}
+  void operator()(double fraction) {
+    const int percent = static_cast<int>(std::lround(100.0 * fraction));
+    if (percent == last_) return;
+    last_ = percent;
+    const int filled = percent * 30 / 100;
+    std::fprintf(stderr, "\r%s [%s%s] %3d%% %6.1f s", label_.c_str(), std::string(filled, '#').c_str(),
+                 std::string(30 - filled, '.').c_str(), percent, seconds());
+    if (percent >= 100) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  }
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  std::string label_;
+  std::chrono::steady_clock::time_point start_;
+  int last_ = -1;
+};
+
+}  // namespace weft

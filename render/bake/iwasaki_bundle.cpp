@@ -1,0 +1,192 @@
+#include "bake/iwasaki_bundle.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace weft {
+
+namespace iwasaki_section {
+std::string table(int id, const char* part) { return "T/" + std::to_string(id) + "/" + part; }
+std::string vis(size_t object, const char* part) { return "vis/" + std::to_string(object) + "/" + part; }
+}  // namespace iwasaki_section
+
+namespace {
+
+using nlohmann::json;
+
+bundle::BundleError bad(const bundle::BundleReader& r, const std::string& section, const std::string& detail) {
+  return bundle::BundleError(r.origin(), "section '" + section + "'", section, detail);
+}
+
+json parse(const bundle::BundleReader& r, const std::string& section) {
+  try {
+    return json::parse(r.json(section));
+  } catch (const json::exception& e) {
+    throw bad(r, section, std::string("not valid JSON: ") + e.what());
+  }
+}
+
+// An f32 section with exactly `count` finite values.
+std::vector<float> floats(const bundle::BundleReader& r, const std::string& name, size_t count) {
+  const auto a = r.array<float>(name);
+  if (a.size() != count)
+    throw bad(r, name, "expected " + std::to_string(count) + " values, found " + std::to_string(a.size()));
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!std::isfinite(a[i])) throw bad(r, name, "non-finite value at " + std::to_string(i));
+  return {a.begin(), a.end()};
+}
+
+}  // namespace
+
+void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
+  json index = json::object();
+  int id = 0;
+  for (const auto& [preset, t] : d.tables) {
+    json ranks = json::array(), errors = json::array();
+    std::vector<float> u, v;
+    for (const CompressedTable& c : t.tables) {
+      ranks.push_back(c.rank);
+      errors.push_back(c.error);
+      u.insert(u.end(), c.u.begin(), c.u.end());
+      v.insert(v.end(), c.v.begin(), c.v.end());
+    }
+    index[preset] = {{"id", id},
+                     {"tangent_samples", {t.tangent_samples[0], t.tangent_samples[1]}},
+                     {"tilts", t.tilts},
+                     {"sample_table", t.sample_table},
+                     {"xi_resolution", t.xi_grid.n},
+                     {"wo_resolution", t.wo_grid.n},
+                     {"lambdas", t.lambdas},
+                     {"ranks", ranks},
+                     {"svd_errors", errors}};
+    w.add_array<float>(iwasaki_section::table(id, "u"), u);
+    w.add_array<float>(iwasaki_section::table(id, "v"), v);
+    ++id;
+  }
+  w.add_json(iwasaki_section::kTablesIndex, index.dump());
+  json vis = json::object();
+  for (const auto& [object, o] : d.visibility) {
+    const uint64_t cells = uint64_t(o.resolution) * o.resolution;
+    vis[std::to_string(object)] = {{"resolution", o.resolution}, {"terms", o.terms},
+                                   {"rms_error", o.rms_error}, {"max_error", o.max_error}};
+    w.add_array<float>(iwasaki_section::vis(object, "pca_mean"), o.mean, {cells});
+    w.add_array<float>(iwasaki_section::vis(object, "pca_basis"), o.basis, {uint64_t(o.terms), cells});
+    w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), o.coefficients,
+                       {uint64_t(o.vertex_count()), uint64_t(o.terms)});
+  }
+  w.add_json(iwasaki_section::kVisIndex, vis.dump());
+  if (d.kappa) {
+    const SigmoidGainTableSpec& s = d.kappa->spec();
+    w.add_array<float>(iwasaki_section::kKappa, d.kappa->normalized_gains(),
+                       {uint64_t(s.sigma_l_count), uint64_t(s.sigma_prime_count), uint64_t(s.beta_count)});
+    w.add_json(iwasaki_section::kKappaIndex,
+               json{{"sigma_min", s.sigma_min}, {"sigma_max", s.sigma_max}, {"max_fit_error", d.kappa->max_fit_error()}}
+                   .dump());
+  }
+}
+
+bool has_iwasaki_sections(const bundle::BundleReader& r) { return r.has(iwasaki_section::kTablesIndex); }
+
+IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
+  IwasakiBundleData out;
+  const std::string TI = iwasaki_section::kTablesIndex;
+  const json index = parse(r, TI);
+  if (!index.is_object()) throw bad(r, TI, "expected an object of fabric presets");
+  for (const auto& [preset, j] : index.items()) {
+    WeightingTables t;
+    std::string u_name, v_name;
+    std::vector<int> ranks;
+    try {
+      const int id = j.at("id").get<int>();
+      u_name = iwasaki_section::table(id, "u");
+      v_name = iwasaki_section::table(id, "v");
+      t.tangent_samples = {j.at("tangent_samples").at(0).get<int>(), j.at("tangent_samples").at(1).get<int>()};
+      t.tilts = j.at("tilts").get<std::vector<double>>();
+      t.sample_table = j.at("sample_table").get<std::vector<int>>();
+      t.xi_grid.n = j.at("xi_resolution").get<int>();
+      t.wo_grid.n = j.at("wo_resolution").get<int>();
+      t.lambdas = j.at("lambdas").get<std::vector<double>>();
+      ranks = j.at("ranks").get<std::vector<int>>();
+    } catch (const json::exception& e) {
+      throw bad(r, TI, "fabric '" + preset + "': bad field: " + e.what());
+    }
+    const int samples = t.tangent_samples[0] + t.tangent_samples[1];
+    if (t.tangent_samples[0] < 1 || t.tangent_samples[1] < 1 || int(t.tilts.size()) != samples ||
+        int(t.sample_table.size()) != samples || t.xi_grid.n < 2 || t.wo_grid.n < 2 || t.lambdas.empty() ||
+        ranks.empty() || ranks.size() % t.lambdas.size())
+      throw bad(r, TI, "fabric '" + preset + "': inconsistent sizes");
+    for (size_t l = 0; l < t.lambdas.size(); ++l)
+      if (!(t.lambdas[l] > 0) || (l && !(t.lambdas[l] > t.lambdas[l - 1])))
+        throw bad(r, TI, "fabric '" + preset + "': sharpness levels must be positive and increasing");
+    const int distinct = int(ranks.size() / t.lambdas.size());
+    for (int s : t.sample_table)
+      if (s < 0 || s >= distinct) throw bad(r, TI, "fabric '" + preset + "': sample table index out of range");
+    size_t nu = 0, nv = 0;
+    for (int k : ranks) {
+      if (k < 0 || k > 4096) throw bad(r, TI, "fabric '" + preset + "': rank out of range");
+      nu += size_t(k) * t.xi_grid.size();
+      nv += size_t(k) * t.wo_grid.size();
+    }
+    const std::vector<float> u = floats(r, u_name, nu), v = floats(r, v_name, nv);
+    size_t ou = 0, ov = 0;
+    for (int k : ranks) {
+      CompressedTable c;
+      c.rank = k;
+      c.u.assign(u.begin() + ou, u.begin() + ou + size_t(k) * t.xi_grid.size());
+      c.v.assign(v.begin() + ov, v.begin() + ov + size_t(k) * t.wo_grid.size());
+      ou += c.u.size();
+      ov += c.v.size();
+      t.tables.push_back(std::move(c));
+    }
+    out.tables.emplace(preset, std::move(t));
+  }
+
+  const std::string VI = iwasaki_section::kVisIndex;
+  const json vis = parse(r, VI);
+  if (!vis.is_object()) throw bad(r, VI, "expected an object keyed by scene object index");
+  for (const auto& [key, j] : vis.items()) {
+    ObjectVisibility o;
+    size_t object = 0;
+    try {
+      object = std::stoul(key);
+      o.resolution = j.at("resolution").get<int>();
+      o.terms = j.at("terms").get<int>();
+      o.rms_error = j.value("rms_error", 0.0);
+      o.max_error = j.value("max_error", 0.0);
+    } catch (const std::exception& e) {
+      throw bad(r, VI, "entry '" + key + "': " + e.what());
+    }
+    if (o.resolution < 2 || o.resolution > 1024 || o.terms < 0 || o.terms > 1024)
+      throw bad(r, VI, "entry '" + key + "': resolution or terms out of range");
+    const auto vc = vertex_counts.find(object);
+    if (vc == vertex_counts.end()) throw bad(r, VI, "entry '" + key + "': no such cloth object in the scene");
+    const size_t cells = size_t(o.resolution) * o.resolution;
+    o.mean = floats(r, iwasaki_section::vis(object, "pca_mean"), cells);
+    o.basis = floats(r, iwasaki_section::vis(object, "pca_basis"), cells * o.terms);
+    o.coefficients = floats(r, iwasaki_section::vis(object, "pca_coeffs"), vc->second * o.terms);
+    out.visibility.emplace(object, std::move(o));
+  }
+
+  if (r.has(iwasaki_section::kKappa)) {
+    const std::string K = iwasaki_section::kKappa;
+    const json kj = parse(r, iwasaki_section::kKappaIndex);
+    const auto& info = r.section(K);
+    if (info.shape.size() != 3) throw bad(r, K, "expected shape [σ_l, σ', β]");
+    SigmoidGainTableSpec spec;
+    spec.sigma_l_count = int(info.shape[0]);
+    spec.sigma_prime_count = int(info.shape[1]);
+    spec.beta_count = int(info.shape[2]);
+    try {
+      spec.sigma_min = kj.at("sigma_min").get<double>();
+      spec.sigma_max = kj.at("sigma_max").get<double>();
+      out.kappa = SigmoidGainTable::from_gains(spec, floats(r, K, info.element_count()), kj.value("max_fit_error", 0.0));
+    } catch (const std::exception& e) {
+      throw bad(r, K, e.what());
+    }
+  }
+  if (!out.visibility.empty() && !out.kappa) throw bad(r, iwasaki_section::kKappa, "missing: visibility needs κ");
+  return out;
+}
+
+}  // namespace weft

@@ -1,0 +1,125 @@
+#include "gpu/iwasaki_cloth.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/egl_context.h"
+#include "gpu/fabric_uniforms.h"
+#include "shaders/embedded_shaders.h"
+
+namespace weft::gpu {
+
+namespace {
+constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.frag
+std::string source(std::initializer_list<std::string_view> parts) {
+  std::string s = shader_preamble();
+  for (auto p : parts) s += shaders::source(p);
+  return s;
+}
+}  // namespace
+
+struct IwasakiCloth::Object {
+  GpuMesh mesh;
+  std::unique_ptr<ClothBsdf> bsdf;
+  const WeightingTablesTexture* tables = nullptr;
+  std::unique_ptr<SdfAtlasTexture> sdf;
+};
+
+IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data)
+    : data_(std::move(data)),
+      program_(source({"iwasaki.vert"}), source({"microcylinder.glsl", "iwasaki.frag"})) {
+  if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
+  if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
+}
+
+IwasakiCloth::~IwasakiCloth() = default;
+
+const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
+  auto it = tables_.find(fabric.name);
+  if (it != tables_.end()) return *it->second;
+  const auto t = data_->tables.find(fabric.name);
+  if (t == data_->tables.end()) throw GpuError("method iwasaki: no weighting tables baked for fabric '" + fabric.name + "'");
+  return *tables_.emplace(fabric.name, std::make_unique<WeightingTablesTexture>(t->second)).first->second;
+}
+
+size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
+  const auto vis = data_->visibility.find(scene_index);
+  std::unique_ptr<Object> o;
+  if (vis != data_->visibility.end()) {
+    if (vis->second.vertex_count() != mesh.positions.size())
+      throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
+                     std::to_string(vis->second.vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
+    if (!kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
+    std::vector<glm::vec3> corners, bary;
+    const TriangleMesh flat = deindexed(mesh, corners, bary);
+    o = std::make_unique<Object>(Object{GpuMesh(flat), nullptr, nullptr, nullptr});
+    o->mesh.add_attribute(4, corners);
+    o->mesh.add_attribute(5, bary);
+    o->sdf = std::make_unique<SdfAtlasTexture>(VertexSdfGrids::expand(vis->second));
+  } else {
+    o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
+  }
+  objects_.push_back(std::move(o));
+  set_fabric(objects_.size() - 1, fabric);
+  return objects_.size() - 1;
+}
+
+bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->sdf != nullptr; }
+
+void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
+  Object& o = *objects_.at(handle);
+  const WeightingTablesTexture& t = tables_for(fabric);
+  auto bsdf = std::make_unique<ClothBsdf>(fabric, t.tables().tangent_samples);
+  for (int j = 0, s = 0; j < 2; ++j)
+    for (int k = 0; k < bsdf->sample_count(j); ++k, ++s)
+      if (std::abs(bsdf->tilt(j, k) - t.tables().tilts[s]) > 1e-9)
+        throw GpuError("method iwasaki: the tables of fabric '" + fabric.name + "' were baked for other tangent samples");
+  o.bsdf = std::move(bsdf);
+  o.tables = &t;
+}
+
+void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) const {
+  const Object& o = *objects_.at(handle);
+  if (sgs.size() > kMaxSgs) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
+  program_.use();
+  glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform3f(program_.uniform("u_eye"), eye.x, eye.y, eye.z);
+  upload_fabric(program_, *o.bsdf);
+  o.tables->bind(program_, 0);
+  const WeightingTables& t = o.tables->tables();
+  // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
+  std::vector<float> axes, amplitudes, sigmas, level_w;
+  std::vector<GLint> levels;
+  int count = 0;
+  for (const auto& g : sgs) {
+    if (!(std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0)) continue;  // a fit's empty lobe: no work
+    ++count;
+    axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
+    amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
+    sigmas.push_back(float(sg_bandwidth(g.sharpness)));
+    int l0 = 0, l1 = 0;
+    double f = 0;
+    t.level_weights(g.sharpness, l0, l1, f);
+    levels.insert(levels.end(), {l0, l1});
+    level_w.push_back(float(f));
+  }
+  glUniform1i(program_.uniform("u_sg_count"), count);
+  if (count > 0) {
+    glUniform3fv(program_.uniform("u_sg_axis"), count, axes.data());
+    glUniform3fv(program_.uniform("u_sg_amplitude"), count, amplitudes.data());
+    glUniform1fv(program_.uniform("u_sg_sigma"), count, sigmas.data());
+    glUniform2iv(program_.uniform("u_sg_levels"), count, levels.data());
+    glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
+  }
+  glUniform1i(program_.uniform("u_visibility"), o.sdf ? 1 : 0);
+  // Samplers of every declared unit get a texture of their type, used or not.
+  if (o.sdf) o.sdf->bind(program_, 2);
+  if (kappa_) kappa_->bind(program_, 3);
+  if (!o.sdf) glUniform1i(program_.uniform("u_sdf"), 2);
+  if (!kappa_) glUniform1i(program_.uniform("u_kappa"), 3);
+  o.mesh.draw();
+}
+
+}  // namespace weft::gpu

@@ -1,0 +1,43 @@
+#pragma once
+// Cloth drawn with seed 000's method (shaders/iwasaki.vert + iwasaki.frag) from a bundle's baked
+// data: per fabric the weighting-table textures, per occluded object the SDF atlas and a
+// de-indexed mesh, κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
+// cannot be shown (GpuError naming it).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/iwasaki_bundle.h"
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+#include "gpu/gl_program.h"
+#include "gpu/gpu_mesh.h"
+#include "gpu/iwasaki_textures.h"
+#include "scene/scene.h"
+
+namespace weft::gpu {
+
+class IwasakiCloth {
+public:
+  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data);
+  ~IwasakiCloth();
+  // Scene object `scene_index` (cloth); returns the handle draw() takes.
+  size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric);
+  void set_fabric(size_t handle, const Fabric& fabric);
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) const;
+  bool has_visibility(size_t handle) const;
+
+private:
+  struct Object;
+  const WeightingTablesTexture& tables_for(const Fabric& fabric);
+  std::shared_ptr<const IwasakiBundleData> data_;
+  GlProgram program_;
+  std::unique_ptr<KappaTexture> kappa_;
+  std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
+  std::vector<std::unique_ptr<Object>> objects_;
+};
+
+}  // namespace weft::gpu

@@ -1,0 +1,72 @@
+#pragma once
+// Seed 000's baked data as GLES textures for shaders/iwasaki.frag: one fabric's weighting-table
+// factors (two RGBA32F array textures, four SVD ranks per layer), one object's per-vertex SDF
+// grids (an RGBA32F atlas of resolution² tiles) and the sigmoid gain table κ (R32F 3D).
+// Linear filtering of float textures needs GL_OES_texture_float_linear (llvmpipe and desktop
+// drivers have it); constructors throw GpuError without it.
+#include <GLES3/gl3.h>
+
+#include <vector>
+
+#include "bake/sigmoid_gain.h"
+#include "bake/weighting_tables.h"
+#include "gpu/gl_program.h"
+#include "methods/iwasaki_visibility.h"
+#include "scene/mesh.h"
+
+namespace weft::gpu {
+
+// Must match MAX_TABLES in iwasaki.frag.
+inline constexpr int kMaxIwasakiTables = 512;
+
+class GlTexture {
+public:
+  GlTexture();
+  GlTexture(GlTexture&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+  GlTexture(const GlTexture&) = delete;
+  ~GlTexture();
+  GLuint id() const { return id_; }
+
+private:
+  GLuint id_ = 0;
+};
+
+class WeightingTablesTexture {
+public:
+  explicit WeightingTablesTexture(const WeightingTables& tables);
+  // Binds to units `unit`, `unit + 1` and sets the table uniforms of `program` (in use).
+  void bind(const GlProgram& program, int unit) const;
+  const WeightingTables& tables() const { return *tables_; }
+
+private:
+  const WeightingTables* tables_;
+  GlTexture u_, v_;
+  std::vector<GLint> index_;  // (first layer, layers) per table
+};
+
+class SdfAtlasTexture {
+public:
+  explicit SdfAtlasTexture(const VertexSdfGrids& grids);
+  void bind(const GlProgram& program, int unit) const;
+
+private:
+  GlTexture texture_;
+  int n_ = 0, tiles_per_row_ = 0, width_ = 0, height_ = 0;
+};
+
+class KappaTexture {
+public:
+  explicit KappaTexture(const SigmoidGainTable& table);
+  void bind(const GlProgram& program, int unit) const;
+
+private:
+  GlTexture texture_;
+  SigmoidGainTableSpec spec_;
+};
+
+// A mesh drawn de-indexed for per-pixel visibility: every corner of triangle t becomes its own
+// vertex carrying the triangle's three source vertex indices (`corners`) and a one-hot
+// barycentric (`bary`), attributes 4 and 5 of iwasaki.vert.
+TriangleMesh deindexed(const TriangleMesh& mesh, std::vector<glm::vec3>& corners, std::vector<glm::vec3>& bary);
+
+}  // namespace weft::gpu
