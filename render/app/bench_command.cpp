@@ -17,6 +17,7 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/gpu_render.h"
+#include "app/iwasaki_bake.h"
 #include "bench/chart.h"
 #include "bench/image_metrics.h"
 #include "bench/reference_cache.h"
@@ -146,6 +147,26 @@ int run_bench(BenchArgs a) {
   if (a.stress_points < 0 || a.stress_points > 1000) throw UsageError("--stress-points: must be within 0..1000");
   for (int k : a.sweep_sg_counts)
     if (k < 1 || k > 40) throw UsageError("--sweep-sg-counts: each must be within 1..40");
+  // iwasaki draws from seed 000 tables: baked once per scene and fabric set, in memory (small
+  // grids with --quick; the paper's settings otherwise, minutes each on two cores).
+  std::map<std::string, std::shared_ptr<const IwasakiBundleData>> iwasaki_bakes;
+  auto tables_for = [&](const std::string& method, const Scene& scene,
+                        const std::map<std::string, Fabric>& fabrics) -> std::shared_ptr<const IwasakiBundleData> {
+    if (method != "iwasaki") return nullptr;
+    std::string key = scene.name;
+    for (const auto& [name, f] : fabrics) key += "/" + name;
+    auto& data = iwasaki_bakes[key];
+    if (!data) {
+      IwasakiBakeOptions o;
+      o.quiet = true;
+      if (a.quick) o.grid = 12, o.visibility.resolution = 16;
+      std::cerr << "weft bench: baking seed 000 tables for " << key << " ...";
+      const auto t = std::chrono::steady_clock::now();
+      data = std::make_shared<IwasakiBundleData>(bake_iwasaki(scene, fabrics, o));
+      std::cerr << " " << fmt(seconds_since(t)) << " s\n";
+    }
+    return data;
+  };
   const auto available = gpu::method_names();
   std::vector<LadderEntry> run;
   std::vector<std::string> missing;
@@ -262,10 +283,11 @@ int run_bench(BenchArgs a) {
           }
           Row r;
           r.scene = scene_name, r.fabric = fabric_label, r.env = env, r.method = m.name;
-          const GpuFrame speed = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, a.speed_frames);
+          const GpuFrame speed = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, a.speed_frames,
+                                                  tables_for(m.name, s, fabrics));
           renderer = speed.renderer;
           r.ms = speed.median_ms, r.frames = speed.frames;
-          const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0);
+          const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0, tables_for(m.name, s, fabrics));
           r.image = "images/" + tag + "_" + m.name + ".png";
           write_image_png(acc.image, out / r.image, exposure);
           r.reference_image = ref_png;
@@ -334,8 +356,8 @@ int run_bench(BenchArgs a) {
         if (!m.scenes.empty() && !m.scenes.count(s.name)) continue;
         if (m.thin_reference) continue;  // the map-lit reference has opaque cloth
         SweepRow r{m.name, k, 0.0, 0.0};
-        r.ms = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, 5).median_ms;
-        const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0);
+        r.ms = render_gpu_frame(s, fabrics, sgs, m.name, a.speed_width, a.speed_height, 5, tables_for(m.name, s, fabrics)).median_ms;
+        const GpuFrame acc = render_gpu_frame(s, fabrics, sgs, m.name, a.width, a.height, 0, tables_for(m.name, s, fabrics));
         r.rmse = bench::cloth_error(acc.image, ref->image, ref->kinds).relative_rmse;
         std::cerr << "weft bench: sweep " << m.name << " K=" << k << ": " << fmt(r.ms) << " ms, relative RMSE "
                   << fmt(r.rmse) << "\n";
