@@ -27,9 +27,10 @@ ln -sf /proc/self/fd /host/dev/fd
 ln -sf /proc/self/fd/0 /host/dev/stdin
 ln -sf /proc/self/fd/1 /host/dev/stdout
 ln -sf /proc/self/fd/2 /host/dev/stderr
-mount -t tmpfs tmp /host/tmp
+# Scratch space on /run only: a tmpfs over /tmp would hide a checkout or build under /tmp
+# (CI machines often have one there). guest_steps.sh points HOME and TMPDIR at /run.
 mount -t tmpfs run /host/run
-# Last, so an output folder under /tmp or /run is not hidden by the tmpfs above.
+# Last, so an output folder under /run is not hidden by the tmpfs above.
 mount -t 9p -o trans=virtio,version=9p2000.L,msize=512000 out "/host$OUT" || echo "vm-init: FAILED to mount the output folder"
 echo "vm-init: userspace ready after $(cut -d' ' -f1 /proc/uptime) s"
 chroot /host /bin/bash "$GUEST_STEPS" "$OUT"

@@ -6,7 +6,7 @@
 set -u
 OUT=$1
 . "$OUT/guest.env"  # WEFT SIM UHID_TEST BUNDLE PANEL_CONFIG TURN1 TURN2 WAIT_S
-export HOME=/tmp XDG_RUNTIME_DIR=/run
+export HOME=/run TMPDIR=/run XDG_RUNTIME_DIR=/run  # /tmp is the host's, read-only
 up() { cut -d' ' -f1 /proc/uptime; }
 mark() {
   echo "$(up) $1" >>"$OUT/marks"
