@@ -1,12 +1,15 @@
-// Parity: shaders/iwasaki.frag, drawn by SceneRenderer (Method::iwasaki) on the GL driver
+// Parity: shaders/iwasaki.glsl, drawn by SceneRenderer (Method::iwasaki per pixel, and
+// Method::iwasaki_vertex per vertex, interpolated) on the GL driver
 // (llvmpipe here) and read back, agrees with the C++ evaluation of the same approximation
 // (methods/iwasaki.cpp with iwasaki_visibility.cpp's SDF lookup and the baked κ) within 1e−3
 // relative at sample pixels. Both consume the same baked data: the weighting tables, the
 // per-vertex SDF grids expanded from the PCA, and κ. The C++ side finds each pixel's surface
 // point by casting the pixel's camera ray (Embree), which gives the same perspective-correct
-// barycentrics the rasteriser interpolates with.
+// barycentrics the rasteriser interpolates with. For iwasaki_vertex the C++ side evaluates the
+// triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -53,8 +56,8 @@ struct Case {
 
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
-TEST_P(IwasakiParity, GlslMatchesCpp) {
-  const Case c = GetParam();
+void check_parity(const Case& c, gpu::Method method) {
+  const bool per_vertex = method == gpu::Method::iwasaki_vertex;
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
   size_t cloth_index = 0;
@@ -77,7 +80,7 @@ TEST_P(IwasakiParity, GlslMatchesCpp) {
   const int w = 80, h = 60;
   const SgLighting sgs = test_lights();
   gpu::EglContext ctx = gpu::EglContext::headless();
-  gpu::SceneRenderer renderer(scene, {fabric}, gpu::Method::iwasaki, 16, data);
+  gpu::SceneRenderer renderer(scene, {fabric}, method, 16, data);
   renderer.set_lighting(sgs);
   gpu::OffscreenTarget target(w, h);
   target.bind();
@@ -110,30 +113,44 @@ TEST_P(IwasakiParity, GlslMatchesCpp) {
       if (!interior) continue;
       const auto& tri = mesh.triangles[hit->triangle];
       const dvec3 bary(b0, hit->b1, hit->b2);
-      dvec3 p(0), n(0), warp(0);
-      for (int k = 0; k < 3; ++k) {
-        p += bary[k] * mesh.positions[tri[k]];
-        n += bary[k] * mesh.normals[tri[k]];
-        warp += bary[k] * mesh.warps[tri[k]];
-      }
-      const dvec3 wo = glm::normalize(scene.camera.position - p);
-      n = glm::normalize(n);
-      if (glm::dot(n, wo) < 0) n = -n;
-      const SurfaceFrame frame = SurfaceFrame::from_normal_warp(n, warp);
-      IwasakiVisibility vis;
-      if (grids) {
-        vis.kappa = &*data->kappa;
-        vis.sdf = [&](const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
-          const SdfSample s = sdf_in_sample_frame(*grids, frame, {tri[0], tri[1], tri[2]}, bary, tf, theta, phi);
-          d = s.d;
-          dt = s.d_dtheta;
-          dp = s.d_dphi;
-          if (d < 0.1) ++occluded_pixels;
-        };
-      }
-      const dvec3 cpu = iwasaki_radiance(bsdf, tables, frame, wo, sgs, grids ? &vis : nullptr).radiance;
+      // The radiance at surface point (bary over `corners`, SDF blended over `sdf_corners`).
+      auto radiance = [&](dvec3 b, std::array<uint32_t, 3> sdf_corners, dvec3 sdf_bary, bool with_visibility) {
+        dvec3 p(0), n(0), warp(0);
+        for (int k = 0; k < 3; ++k) {
+          p += b[k] * mesh.positions[tri[k]];
+          n += b[k] * mesh.normals[tri[k]];
+          warp += b[k] * mesh.warps[tri[k]];
+        }
+        const dvec3 wo = glm::normalize(scene.camera.position - p);
+        n = glm::normalize(n);
+        if (glm::dot(n, wo) < 0) n = -n;
+        const SurfaceFrame frame = SurfaceFrame::from_normal_warp(n, warp);
+        IwasakiVisibility vis;
+        if (grids) {
+          vis.kappa = &*data->kappa;
+          vis.sdf = [&](const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
+            const SdfSample s = sdf_in_sample_frame(*grids, frame, sdf_corners, sdf_bary, tf, theta, phi);
+            d = s.d;
+            dt = s.d_dtheta;
+            dp = s.d_dphi;
+            if (d < 0.1) ++occluded_pixels;
+          };
+        }
+        return iwasaki_radiance(bsdf, tables, frame, wo, sgs, grids && with_visibility ? &vis : nullptr).radiance;
+      };
+      auto shade = [&](bool with_visibility) {
+        if (!per_vertex) return radiance(bary, {tri[0], tri[1], tri[2]}, bary, with_visibility);
+        dvec3 sum(0);
+        for (int k = 0; k < 3; ++k) {
+          dvec3 one(0);
+          one[k] = 1;
+          sum += bary[k] * radiance(one, {tri[k], tri[k], tri[k]}, dvec3(1, 0, 0), with_visibility);
+        }
+        return sum;
+      };
+      const dvec3 cpu = shade(true);
       if (grids) {  // how much the visibility path changes this pixel: parity must cover it
-        const dvec3 open = iwasaki_radiance(bsdf, tables, frame, wo, sgs).radiance;
+        const dvec3 open = shade(false);
         visibility_effect = std::max(visibility_effect, glm::length(open - cpu) / glm::length(open));
       }
       const dvec3 g = gpu_image.at(x, y);
@@ -146,15 +163,18 @@ TEST_P(IwasakiParity, GlslMatchesCpp) {
       }
       ++compared;
     }
-  RecordProperty("worst_relative", std::to_string(worst));
-  std::printf("%s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
-              c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
+  ::testing::Test::RecordProperty("worst_relative", std::to_string(worst));
+  std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
+              method_name(method).c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";
     EXPECT_GT(visibility_effect, 0.05) << "visibility hardly changes any compared pixel: the path went untested";
   }
 }
+
+TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), gpu::Method::iwasaki); }
+TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), gpu::Method::iwasaki_vertex); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,
                          ::testing::Values(Case{"swatch", "silk_shot", false}, Case{"pillow", "linen_plain", true},

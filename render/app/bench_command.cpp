@@ -152,7 +152,7 @@ int run_bench(BenchArgs a) {
   std::map<std::string, std::shared_ptr<const IwasakiBundleData>> iwasaki_bakes;
   auto tables_for = [&](const std::string& method, const Scene& scene,
                         const std::map<std::string, Fabric>& fabrics) -> std::shared_ptr<const IwasakiBundleData> {
-    if (method != "iwasaki") return nullptr;
+    if (!gpu::uses_seed000_tables(method)) return nullptr;
     std::string key = scene.name;
     for (const auto& [name, f] : fabrics) key += "/" + name;
     auto& data = iwasaki_bakes[key];

@@ -64,7 +64,8 @@ int run_render(const RenderArgs& a) {
     for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
-  if (!a.bundle.empty() && a.method != "iwasaki") throw UsageError("--bundle: only with --method iwasaki");
+  if (!a.bundle.empty() && !gpu::uses_seed000_tables(a.method))
+    throw UsageError("--bundle: only with --method iwasaki or iwasaki_vertex");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -154,7 +155,7 @@ int run_render(const RenderArgs& a) {
     lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
   }
 
-  if (a.method == "iwasaki" && !iwasaki) {
+  if (gpu::uses_seed000_tables(a.method) && !iwasaki) {
     std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
     iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(scene, fabrics, IwasakiBakeOptions{}));
   }
@@ -249,7 +250,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, iwasaki, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, iwasaki, iwasaki_vertex, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
   sub->add_option("--sgs", a->sgs_file,
@@ -268,7 +269,7 @@ CommandAction add_render_command(CLI::App& app) {
                   "Convergence check: re-render every Nth pixel (in x and y) at twice the lighting resolution and tangent samples")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
-  sub->add_option("--bundle", a->bundle, "iwasaki: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
+  sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: exposure before the 1-exp(-x) tone curve and sRGB (0: automatic, from the mean of the surfaces)")

@@ -181,8 +181,8 @@ int run_kiosk(const RunArgs& a) {
   SceneBundle& sb = *loaded;
   const std::string method_name = a.method != "auto" ? a.method : (iwasaki ? "iwasaki" : "sgpoint");
   const gpu::Method method = gpu::parse_method(method_name);
-  if (method == gpu::Method::iwasaki && !iwasaki)
-    throw UsageError("--method iwasaki: bundle " + opened.file.string() + " has no seed 000 tables (weft bake without --no-tables)");
+  if (gpu::uses_seed000_tables(method) && !iwasaki)
+    throw UsageError("--method " + method_name + ": bundle " + opened.file.string() + " has no seed 000 tables (weft bake without --no-tables)");
   log_line("bundle " + opened.file.string() + (opened.is_last_good ? " (LAST GOOD COPY: " + opened.primary_error + ")" : "") +
            ": scene '" + sb.scene.name + "', " + std::to_string(sb.scene.objects.size()) + " objects, " +
            std::to_string(sb.sgs.size()) + " SGs");
@@ -426,7 +426,7 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--sim-speed", a->sim_speed, "Play the sim: script this many times faster")->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Write the last frame, tone-mapped, as PNG");
   sub->add_option("--size", a->size, "Headless frame size WIDTH HEIGHT")->expected(2)->capture_default_str();
-  sub->add_option("--method", a->method, "Runtime method: auto (iwasaki when the bundle has its tables, else sgpoint), iwasaki or sgpoint")->capture_default_str();
+  sub->add_option("--method", a->method, "Runtime method: auto (iwasaki when the bundle has its tables, else sgpoint), iwasaki, iwasaki_vertex (per-vertex seed 000: far cheaper, blurs sharp highlights) or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "Tone-mapping exposure")->capture_default_str();

@@ -12,11 +12,17 @@
 namespace weft::gpu {
 
 namespace {
-constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.frag
+constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.glsl
 std::string source(std::initializer_list<std::string_view> parts) {
   std::string s = shader_preamble();
   for (auto p : parts) s += shaders::source(p);
   return s;
+}
+
+GlProgram make_program(IwasakiCloth::Evaluation e) {
+  if (e == IwasakiCloth::Evaluation::per_vertex)
+    return GlProgram(source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
+  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 }  // namespace
 
@@ -27,9 +33,8 @@ struct IwasakiCloth::Object {
   std::unique_ptr<SdfAtlasTexture> sdf;
 };
 
-IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data)
-    : data_(std::move(data)),
-      program_(source({"iwasaki.vert"}), source({"microcylinder.glsl", "iwasaki.frag"})) {
+IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
+    : data_(std::move(data)), evaluation_(evaluation), program_(make_program(evaluation)) {
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
@@ -47,19 +52,25 @@ const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
 size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
   const auto vis = data_->visibility.find(scene_index);
   std::unique_ptr<Object> o;
-  if (vis != data_->visibility.end()) {
+  if (vis == data_->visibility.end()) {
+    o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
+  } else {
     if (vis->second.vertex_count() != mesh.positions.size())
       throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
                      std::to_string(vis->second.vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
     if (!kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
     std::vector<glm::vec3> corners, bary;
-    const TriangleMesh flat = deindexed(mesh, corners, bary);
-    o = std::make_unique<Object>(Object{GpuMesh(flat), nullptr, nullptr, nullptr});
+    if (evaluation_ == Evaluation::per_vertex) {  // each vertex reads its own SDF grid, weight 1
+      corners.resize(mesh.positions.size());
+      for (size_t i = 0; i < corners.size(); ++i) corners[i] = glm::vec3(float(i));
+      bary.assign(mesh.positions.size(), glm::vec3(1, 0, 0));
+      o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
+    } else {  // drawn de-indexed: every corner carries the triangle's three vertices
+      o = std::make_unique<Object>(Object{GpuMesh(deindexed(mesh, corners, bary)), nullptr, nullptr, nullptr});
+    }
     o->mesh.add_attribute(4, corners);
     o->mesh.add_attribute(5, bary);
     o->sdf = std::make_unique<SdfAtlasTexture>(VertexSdfGrids::expand(vis->second));
-  } else {
-    o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
   }
   objects_.push_back(std::move(o));
   set_fabric(objects_.size() - 1, fabric);

@@ -1,8 +1,9 @@
 #pragma once
-// Cloth drawn with seed 000's method (shaders/iwasaki.vert + iwasaki.frag) from a bundle's baked
+// Cloth drawn with seed 000's method (shaders/iwasaki.glsl, called from iwasaki.frag or iwasaki_vertex.vert) from a bundle's baked
 // data: per fabric the weighting-table textures, per occluded object the SDF atlas and a
 // de-indexed mesh, κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
-// cannot be shown (GpuError naming it).
+// cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
+// interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in the vertex stage).
 #include <map>
 #include <memory>
 #include <string>
@@ -22,7 +23,8 @@ namespace weft::gpu {
 
 class IwasakiCloth {
 public:
-  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data);
+  enum class Evaluation { per_pixel, per_vertex };
+  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation = Evaluation::per_pixel);
   ~IwasakiCloth();
   // Scene object `scene_index` (cloth); returns the handle draw() takes.
   size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric);
@@ -34,6 +36,7 @@ private:
   struct Object;
   const WeightingTablesTexture& tables_for(const Fabric& fabric);
   std::shared_ptr<const IwasakiBundleData> data_;
+  Evaluation evaluation_;
   GlProgram program_;
   std::unique_ptr<KappaTexture> kappa_;
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000's baked data as GLES textures for shaders/iwasaki.frag: one fabric's weighting-table
+// Seed 000's baked data as GLES textures for shaders/iwasaki.glsl: one fabric's weighting-table
 // factors (two RGBA32F array textures, four SVD ranks per layer), one object's per-vertex SDF
 // grids (an RGBA32F atlas of resolution² tiles) and the sigmoid gain table κ (R32F 3D).
 // Linear filtering of float textures needs GL_OES_texture_float_linear (llvmpipe and desktop
@@ -16,7 +16,7 @@
 
 namespace weft::gpu {
 
-// Must match MAX_TABLES in iwasaki.frag.
+// Must match MAX_TABLES in iwasaki.glsl.
 inline constexpr int kMaxIwasakiTables = 512;
 
 class GlTexture {

@@ -31,6 +31,7 @@ const std::vector<MethodInfo>& method_table() {
       {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
       {Method::mizutani, "mizutani", {"microcylinder.glsl", "mizutani.glsl", "mizutani.frag"}, false},
       {Method::iwasaki, "iwasaki", {}, false},  // its own programs: gpu/iwasaki_cloth.h
+      {Method::iwasaki_vertex, "iwasaki_vertex", {}, false},
   };
   return table;
 }
@@ -64,6 +65,14 @@ Method parse_method(const std::string& name) {
 
 std::string method_name(Method method) { return info(method).name; }
 
+bool uses_seed000_tables(Method method) { return method == Method::iwasaki || method == Method::iwasaki_vertex; }
+
+bool uses_seed000_tables(const std::string& name) {
+  for (const auto& i : method_table())
+    if (name == i.name) return uses_seed000_tables(i.method);
+  return false;
+}
+
 std::vector<std::string> method_names() {
   std::vector<std::string> names;
   for (const auto& i : method_table()) names.push_back(i.name);
@@ -84,7 +93,7 @@ struct SceneRenderer::Object {
     thin = thin_params(f);
   }
   std::unique_ptr<MizutaniTextures> mizutani;  // cloth under Method::mizutani
-  size_t iwasaki = 0;                           // handle in iwasaki_ (Method::iwasaki cloth)
+  size_t iwasaki = 0;                           // handle in iwasaki_ (Method::iwasaki(_vertex) cloth)
 };
 
 // Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
@@ -96,7 +105,10 @@ std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) c
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
                              std::shared_ptr<const IwasakiBundleData> iwasaki)
     : method_(method), tangent_samples_(tangent_samples) {
-  if (method == Method::iwasaki) iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki));
+  if (uses_seed000_tables(method))
+    iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki), method == Method::iwasaki_vertex
+                                                                      ? IwasakiCloth::Evaluation::per_vertex
+                                                                      : IwasakiCloth::Evaluation::per_pixel);
   std::string fragment = program_source(info(method).fragment);
   if (method == Method::mizutani) {  // its light arrays are sized at compile time
     fragment = program_source({}) + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
@@ -222,6 +234,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
             upload_thin(prog, o->thin);
             break;
           case Method::iwasaki:  // drawn by iwasaki_ above
+          case Method::iwasaki_vertex:
             break;
           case Method::mizutani:
             upload_fabric(prog, *o->bsdf);

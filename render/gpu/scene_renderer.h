@@ -27,17 +27,20 @@ enum class Method {
   sheen,
   mdfrot,
   thin,
-  iwasaki,   // seed 000: needs the bundle's tables (IwasakiBundleData)
+  iwasaki,   // seed 000 per pixel: needs the bundle's tables (IwasakiBundleData)
+  iwasaki_vertex,  // seed 000 per vertex, radiance interpolated: same tables, a fraction of the cost
   mizutani,  // seed 001: bakes each cloth's weighting tables (paper's tangent samples) at construction
 };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
 std::vector<std::string> method_names();
+bool uses_seed000_tables(Method method);  // iwasaki, iwasaki_vertex
+bool uses_seed000_tables(const std::string& method_name);  // false for names that are no GPU method
 
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
-  // Method::iwasaki draws cloth from `iwasaki` (a bundle's seed 000 tables; required for it).
+  // Method::iwasaki(_vertex) draws cloth from `iwasaki` (a bundle's seed 000 tables; required).
   SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
                 std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
@@ -53,7 +56,7 @@ private:
   std::vector<std::unique_ptr<Object>> objects_;
   std::unique_ptr<GlProgram> cloth_program_, lambert_program_, background_program_;
   Method method_;
-  std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki only
+  std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki(_vertex) only
   SgLighting sgs_;
   int tangent_samples_;
   // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).

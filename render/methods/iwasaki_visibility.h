@@ -2,7 +2,7 @@
 // The runtime side of seed 000's visibility (§3.2, "SDF is interpolated at each pixel"): the
 // bundle's per-vertex PCA expanded once at load to per-vertex grids of (d, ∂d/∂θ, ∂d/∂φ), and
 // the lookup at a point inside a triangle for a direction given in a tangent sample's frame.
-// The GPU (shaders/iwasaki.frag, `sdf_in_sample_frame`) holds the same grids as one texture
+// The GPU (shaders/iwasaki.glsl, `sdf_in_sample_frame`) holds the same grids as one texture
 // atlas and does the same steps; tests/iwasaki_parity_test.cpp pins the two.
 //
 // Steps for direction ω = (θ, φ) of sample frame (t, n', b) at a point with frame (n, u, v):
