@@ -3,7 +3,7 @@
 // (llvmpipe here) and read back, agrees with the C++ evaluation of the same approximation
 // (methods/iwasaki.cpp with iwasaki_visibility.cpp's SDF lookup and the baked κ) within 1e−3
 // relative at sample pixels. Both consume the same baked data: the weighting tables, the
-// per-vertex SDF grids expanded from the PCA, and κ. The C++ side finds each pixel's surface
+// per-(vertex, SG) SDF values reconstructed from the PCA when the lighting is set, and κ. The C++ side finds each pixel's surface
 // point by casting the pixel's camera ray (Embree), which gives the same perspective-correct
 // barycentrics the rasteriser interpolates with. For iwasaki_vertex the C++ side evaluates the
 // triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics.
@@ -90,10 +90,10 @@ void check_parity(const Case& c, gpu::Method method) {
   // The C++ side, from the same data.
   const WeightingTables& tables = data->tables.at(c.fabric);
   const ClothBsdf bsdf(fabric, tables.tangent_samples);
-  std::unique_ptr<VertexSdfGrids> grids;
-  if (c.expect_visibility) grids = std::make_unique<VertexSdfGrids>(VertexSdfGrids::expand(data->visibility.at(cloth_index)));
-  const RayScene rays(scene);
   const TriangleMesh& mesh = scene.objects[cloth_index].mesh;
+  std::unique_ptr<SgVisibility> grids;
+  if (c.expect_visibility) grids = std::make_unique<SgVisibility>(SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs));
+  const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double worst = 0, visibility_effect = 0;
   for (int y = 1; y < h - 1; y += 2)
@@ -128,8 +128,8 @@ void check_parity(const Case& c, gpu::Method method) {
         IwasakiVisibility vis;
         if (grids) {
           vis.kappa = &*data->kappa;
-          vis.sdf = [&](const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
-            const SdfSample s = sdf_in_sample_frame(*grids, frame, sdf_corners, sdf_bary, tf, theta, phi);
+          vis.sdf = [&](int sg, const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
+            const SdfSample s = sdf_in_sample_frame(*grids, sg, frame, sdf_corners, sdf_bary, tf, theta, phi);
             d = s.d;
             dt = s.d_dtheta;
             dp = s.d_dphi;

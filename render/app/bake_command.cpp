@@ -28,7 +28,7 @@ struct BakeArgs {
   bool only_scene_fabrics = false;
   bool no_tables = false;
   double target_error = 0.0;
-  int sdf_resolution = 32;
+  int sdf_resolution = 128;  // the paper's
   int grid = 0;
   std::vector<int> samples;
 };

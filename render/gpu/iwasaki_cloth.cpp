@@ -26,11 +26,23 @@ GlProgram make_program(IwasakiCloth::Evaluation e) {
 }
 }  // namespace
 
+static bool same_lighting(const SgLighting& a, const SgLighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness) return false;  // amplitude: no effect on visibility
+  return true;
+}
+
 struct IwasakiCloth::Object {
   GpuMesh mesh;
   std::unique_ptr<ClothBsdf> bsdf;
   const WeightingTablesTexture* tables = nullptr;
-  std::unique_ptr<SdfAtlasTexture> sdf;
+  // Occluded objects: the bundle's PCA and the mesh (vertex frames), and the per-(vertex, SG)
+  // values for the lighting they were last computed for.
+  const ObjectVisibility* visibility = nullptr;
+  const TriangleMesh* source = nullptr;
+  std::unique_ptr<SgVisibilityTexture> sg_visibility;
+  SgLighting computed_for;
 };
 
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
@@ -70,14 +82,16 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
     }
     o->mesh.add_attribute(4, corners);
     o->mesh.add_attribute(5, bary);
-    o->sdf = std::make_unique<SdfAtlasTexture>(VertexSdfGrids::expand(vis->second));
+    o->visibility = &vis->second;
+    o->source = &mesh;
+    o->sg_visibility = std::make_unique<SgVisibilityTexture>();
   }
   objects_.push_back(std::move(o));
   set_fabric(objects_.size() - 1, fabric);
   return objects_.size() - 1;
 }
 
-bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->sdf != nullptr; }
+bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->visibility != nullptr; }
 
 void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
   Object& o = *objects_.at(handle);
@@ -92,7 +106,7 @@ void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
 }
 
 void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) const {
-  const Object& o = *objects_.at(handle);
+  Object& o = *objects_.at(handle);
   if (sgs.size() > kMaxSgs) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
   program_.use();
   glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
@@ -103,10 +117,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
   std::vector<float> axes, amplitudes, sigmas, level_w;
   std::vector<GLint> levels;
-  int count = 0;
+  SgLighting drawn;
   for (const auto& g : sgs) {
     if (!(std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0)) continue;  // a fit's empty lobe: no work
-    ++count;
+    drawn.push_back(g);
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
     sigmas.push_back(float(sg_bandwidth(g.sharpness)));
@@ -116,6 +130,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     levels.insert(levels.end(), {l0, l1});
     level_w.push_back(float(f));
   }
+  const int count = int(drawn.size());
   glUniform1i(program_.uniform("u_sg_count"), count);
   if (count > 0) {
     glUniform3fv(program_.uniform("u_sg_axis"), count, axes.data());
@@ -124,11 +139,15 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     glUniform2iv(program_.uniform("u_sg_levels"), count, levels.data());
     glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
   }
-  glUniform1i(program_.uniform("u_visibility"), o.sdf ? 1 : 0);
+  glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
+  if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
+    o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn));
+    o.computed_for = drawn;
+  }
   // Samplers of every declared unit get a texture of their type, used or not.
-  if (o.sdf) o.sdf->bind(program_, 2);
+  if (o.sg_visibility) o.sg_visibility->bind(program_, 2);
   if (kappa_) kappa_->bind(program_, 3);
-  if (!o.sdf) glUniform1i(program_.uniform("u_sdf"), 2);
+  if (!o.sg_visibility) glUniform1i(program_.uniform("u_sg_visibility"), 2);
   if (!kappa_) glUniform1i(program_.uniform("u_kappa"), 3);
   o.mesh.draw();
 }

@@ -94,38 +94,33 @@ void WeightingTablesTexture::bind(const GlProgram& p, int unit) const {
   glUniform1f(p.uniform("u_wo_n"), float(t.wo_grid.n));
 }
 
-SdfAtlasTexture::SdfAtlasTexture(const VertexSdfGrids& g) : n_(g.resolution) {
-  require_float_linear();
+void SgVisibilityTexture::upload(const SgVisibility& vis) {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  tiles_per_row_ = std::max(1, std::min<int>(int(g.vertices), max_size / n_));
-  const int rows = int((g.vertices + tiles_per_row_ - 1) / tiles_per_row_);
-  width_ = tiles_per_row_ * n_;
-  height_ = rows * n_;
-  if (height_ > max_size)
-    throw GpuError("method iwasaki: " + std::to_string(g.vertices) + " vertices of " + std::to_string(n_) + "² SDF cells do not fit a " +
-                   std::to_string(max_size) + "² texture");
-  std::vector<float> texels(size_t(width_) * height_ * 4, 0.0f);
-  const size_t cells = size_t(n_) * n_;
-  for (size_t v = 0; v < g.vertices; ++v) {
-    const int tx = int(v % tiles_per_row_), ty = int(v / tiles_per_row_);
-    for (int i = 0; i < n_; ++i)  // θ row → y, φ column → x
-      std::memcpy(&texels[((size_t(ty) * n_ + i) * width_ + size_t(tx) * n_) * 4], &g.texels[(v * cells + size_t(i) * n_) * 4],
-                  sizeof(float) * 4 * n_);
-  }
+  const int sgs = std::max(vis.sgs, 1);
+  per_row_ = std::max(1, int((vis.vertices + max_size - 1) / max_size));
+  const int width = per_row_ * sgs, height = std::max(1, int((vis.vertices + per_row_ - 1) / per_row_));
+  if (width > max_size) throw GpuError("method iwasaki: " + std::to_string(vis.vertices) + " vertices × " + std::to_string(sgs) +
+                                       " SGs do not fit a " + std::to_string(max_size) + "² texture");
+  std::vector<float> texels(size_t(width) * height * 4, 0.0f);
+  for (size_t v = 0; v < vis.vertices; ++v)
+    for (int k = 0; k < vis.sgs; ++k) {
+      const size_t x = (v % per_row_) * sgs + k, y = v / per_row_;
+      const float* src = &vis.values[(v * vis.sgs + k) * 3];
+      std::memcpy(&texels[(y * width + x) * 4], src, 3 * sizeof(float));
+    }
   glBindTexture(GL_TEXTURE_2D, texture_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width_, height_, 0, GL_RGBA, GL_FLOAT, texels.data());
-  linear_clamped(GL_TEXTURE_2D);
-  check("uploading the SDF atlas");
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  check("uploading the per-SG visibility");
 }
 
-void SdfAtlasTexture::bind(const GlProgram& p, int unit) const {
+void SgVisibilityTexture::bind(const GlProgram& p, int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, texture_.id());
-  glUniform1i(p.uniform("u_sdf"), unit);
-  glUniform1i(p.uniform("u_sdf_n"), n_);
-  glUniform1i(p.uniform("u_sdf_tiles_per_row"), tiles_per_row_);
-  glUniform2f(p.uniform("u_sdf_atlas_size"), float(width_), float(height_));
+  glUniform1i(p.uniform("u_sg_visibility"), unit);
+  glUniform1i(p.uniform("u_sg_visibility_per_row"), per_row_);
 }
 
 KappaTexture::KappaTexture(const SigmoidGainTable& t) : spec_(t.spec()) {

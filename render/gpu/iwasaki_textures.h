@@ -44,14 +44,16 @@ private:
   std::vector<GLint> index_;  // (first layer, layers) per table
 };
 
-class SdfAtlasTexture {
+// SgVisibility's (d, ∂d/∂θ', ∂d/∂φ') per (vertex, SG), refilled when the lighting changes:
+// RGBA32F, texel ((v mod P)·sgs + k, v div P) for P vertices per row, read with texelFetch.
+class SgVisibilityTexture {
 public:
-  explicit SdfAtlasTexture(const VertexSdfGrids& grids);
+  void upload(const SgVisibility& visibility);
   void bind(const GlProgram& program, int unit) const;
 
 private:
   GlTexture texture_;
-  int n_ = 0, tiles_per_row_ = 0, width_ = 0, height_ = 0;
+  int per_row_ = 1;
 };
 
 class KappaTexture {

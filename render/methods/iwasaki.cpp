@@ -50,7 +50,8 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
   auto local = [&](const dvec3& w) { return dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n)); };
   const dvec3 wo_local = local(wo);
 
-  for (const SphericalGaussian& g : sgs) {
+  for (size_t sg_index = 0; sg_index < sgs.size(); ++sg_index) {
+    const SphericalGaussian& g = sgs[sg_index];
     const dvec3 xi_local = local(g.axis);
     int s = 0;
     for (int j = 0; j < 2; ++j) {
@@ -69,7 +70,7 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         if (visibility && visibility->sdf) {
           sdf.on = true;
           sdf.theta = sg.theta_k;
-          visibility->sdf(tf, sg.theta_k, sg.phi_k, sdf.d, sdf.d_dtheta, sdf.d_dphi);
+          visibility->sdf(int(sg_index), tf, sg.theta_k, sg.phi_k, sdf.d, sdf.d_dtheta, sdf.d_dphi);
         }
 
         // The smooth factors at a lobe's peak θ_i = θ_l, φ_i = φ_k. dω = cos θ dθ dφ gives the

@@ -18,9 +18,9 @@ namespace weft {
 // H(σ_l, σ'_l, d, ∂d/∂θ, ∂d/∂φ) at (θ_l, φ_k) of a tangent sample, or empty for unoccluded.
 struct IwasakiVisibility {
   // Linearised visibility at direction (θ, φ) of the sample frame: d and its gradient. Called
-  // once per (SG, tangent sample), at the SG's direction (θ_k, φ_k); each lobe's H takes d
-  // carried along that plane to its own peak (θ_l, φ_k).
-  std::function<void(const ThreadFrame&, double theta, double phi, double& d, double& d_dtheta, double& d_dphi)>
+  // once per (SG, tangent sample), with the SG's index and direction (θ_k, φ_k); each lobe's H
+  // takes d carried along that plane to its own peak (θ_l, φ_k).
+  std::function<void(int sg, const ThreadFrame&, double theta, double phi, double& d, double& d_dtheta, double& d_dphi)>
       sdf;
   // Eq. 14's sigmoid with the baked gains replaces the closed-form H when given (the runtime's
   // choice: the GPU reads the same table).

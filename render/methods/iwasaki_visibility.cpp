@@ -3,66 +3,69 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "bake/visibility_sdf.h"
 
 namespace weft {
 
-VertexSdfGrids VertexSdfGrids::expand(const ObjectVisibility& o) {
-  VertexSdfGrids g;
-  g.resolution = o.resolution;
-  g.vertices = o.vertex_count();
+SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh& mesh, const SgLighting& sgs) {
+  SgVisibility out;
+  out.vertices = o.vertex_count();
+  out.sgs = int(sgs.size());
+  if (mesh.positions.size() != out.vertices || mesh.normals.size() != out.vertices || mesh.warps.size() != out.vertices)
+    throw std::invalid_argument("visibility of " + std::to_string(out.vertices) + " vertices for a mesh of " +
+                                std::to_string(mesh.positions.size()));
+  out.values.resize(out.vertices * sgs.size() * 3);
+  constexpr double kHalfPi = std::numbers::pi / 2;
   const int n = o.resolution, cells = n * n;
   const double h = std::numbers::pi / n;
-  g.texels.resize(g.vertices * cells * 4);
-  DistanceGrid d{n, n, std::vector<double>(cells)};
-  for (size_t v = 0; v < g.vertices; ++v) {
-    for (int k = 0; k < cells; ++k) {
+#pragma omp parallel for schedule(static)
+  for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
+    const size_t v = size_t(vl);
+    const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
+    const float* c = &o.coefficients[v * o.terms];
+    // d at one node, from the PCA (clamped into the grid).
+    auto d = [&](int i, int j) {
+      const int k = std::clamp(i, 0, n - 1) * n + std::clamp(j, 0, n - 1);
       double x = o.mean[k];
-      for (int t = 0; t < o.terms; ++t) x += double(o.basis[size_t(t) * cells + k]) * o.coefficients[v * o.terms + t];
-      d.values[k] = x;
-    }
-    const SdfGradient grad = sdf_gradient(d, h, /*periodic_cols=*/false);
-    float* out = &g.texels[v * cells * 4];
-    for (int k = 0; k < cells; ++k) {
-      out[4 * k + 0] = float(d.values[k]);
-      out[4 * k + 1] = float(grad.d_theta.values[k]);
-      out[4 * k + 2] = float(grad.d_phi.values[k]);
-      out[4 * k + 3] = 0.0f;
+      for (int t = 0; t < o.terms; ++t) x += double(o.basis[size_t(t) * cells + k]) * c[t];
+      return x;
+    };
+    // (d, ∂d/∂θ', ∂d/∂φ') at a node: sdf_gradient's differences (central, one-sided at the edges).
+    auto node = [&](int i, int j) {
+      const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, n - 1), j0 = std::max(j - 1, 0), j1 = std::min(j + 1, n - 1);
+      return dvec3(d(i, j), (d(i1, j) - d(i0, j)) / ((i1 - i0) * h), (d(i, j1) - d(i, j0)) / ((j1 - j0) * h));
+    };
+    for (size_t k = 0; k < sgs.size(); ++k) {
+      const dvec3 w = glm::normalize(sgs[k].axis);
+      const double wu = std::clamp(glm::dot(w, f.u), -1.0, 1.0), wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
+      const double theta_v = std::atan2(wu, std::sqrt(std::max(wn * wn + wv * wv, 1e-8))), phi_v = std::atan2(wv, wn);
+      const double gi = std::clamp((theta_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));
+      const double gj = std::clamp((phi_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));
+      const int i0 = std::min(int(gi), n - 2), j0 = std::min(int(gj), n - 2);
+      const double fi = gi - i0, fj = gj - j0;
+      const dvec3 g = (1 - fi) * ((1 - fj) * node(i0, j0) + fj * node(i0, j0 + 1)) +
+                      fi * ((1 - fj) * node(i0 + 1, j0) + fj * node(i0 + 1, j0 + 1));
+      float* p = &out.values[(v * sgs.size() + k) * 3];
+      p[0] = float(g.x), p[1] = float(g.y), p[2] = float(g.z);
     }
   }
-  return g;
+  return out;
 }
 
-dvec3 VertexSdfGrids::bilinear(size_t vertex, double gi, double gj) const {
-  const int n = resolution;
-  const int i0 = std::min(int(gi), n - 2), j0 = std::min(int(gj), n - 2);
-  const double fi = gi - i0, fj = gj - j0;
-  const float* base = &texels[vertex * size_t(n) * n * 4];
-  auto at = [&](int i, int j) {
-    const float* p = base + (size_t(i) * n + j) * 4;
-    return dvec3(p[0], p[1], p[2]);
-  };
-  return (1 - fi) * ((1 - fj) * at(i0, j0) + fj * at(i0, j0 + 1)) + fi * ((1 - fj) * at(i0 + 1, j0) + fj * at(i0 + 1, j0 + 1));
-}
-
-SdfSample sdf_in_sample_frame(const VertexSdfGrids& grids, const SurfaceFrame& f, const std::array<uint32_t, 3>& corners,
+SdfSample sdf_in_sample_frame(const SgVisibility& vis, int sg, const SurfaceFrame& f, const std::array<uint32_t, 3>& corners,
                               const dvec3& bary, const ThreadFrame& s, double theta, double phi) {
-  constexpr double kHalfPi = std::numbers::pi / 2;
   const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
   const dvec3 radial = cp * s.n_prime + sp * s.b;
   const dvec3 w = st * s.t + ct * radial;
   const dvec3 dw_dtheta = ct * s.t - st * radial;
   const dvec3 dw_dphi = ct * (-sp * s.n_prime + cp * s.b);
-  const double wu = std::clamp(glm::dot(w, f.u), -1.0, 1.0), wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
+  const double wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
   const double cos2 = std::max(wn * wn + wv * wv, 1e-8);  // cos²θ'
-  const double theta_v = std::atan2(wu, std::sqrt(cos2)), phi_v = std::atan2(wv, wn);
-  const int n = grids.resolution;
-  const double h = std::numbers::pi / n;
-  const double gi = std::clamp((theta_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));
-  const double gj = std::clamp((phi_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));
   dvec3 g(0.0);
-  for (int k = 0; k < 3; ++k) g += bary[k] * grids.bilinear(corners[k], gi, gj);
+  for (int k = 0; k < 3; ++k) g += bary[k] * vis.at(corners[k], sg);
   // Chain rule through ω (header comment, step 3).
   const dvec3 dtheta_v = f.u / std::sqrt(cos2);
   const dvec3 dphi_v = (wn * f.v - wv * f.n) / cos2;

@@ -1,44 +1,51 @@
 #pragma once
-// The runtime side of seed 000's visibility (§3.2, "SDF is interpolated at each pixel"): the
-// bundle's per-vertex PCA expanded once at load to per-vertex grids of (d, ∂d/∂θ, ∂d/∂φ), and
-// the lookup at a point inside a triangle for a direction given in a tangent sample's frame.
-// The GPU (shaders/iwasaki.glsl, `sdf_in_sample_frame`) holds the same grids as one texture
-// atlas and does the same steps; tests/iwasaki_parity_test.cpp pins the two.
+// The runtime side of seed 000's visibility (§3.2): the bundle's per-vertex PCA of the SDF
+// d(θ', φ'), read where the lighting needs it. The lookup directions are the SG axes, which
+// change only with the lighting, so d and ∇d are reconstructed per (vertex, SG) on the CPU when
+// the lighting changes (SgVisibility), at the bundle's full SDF resolution, instead of
+// expanding every vertex's grid for the GPU (128² cells × 16 B × 3362 vertices = 880 MB).
+// The GPU (shaders/iwasaki.glsl) gets the values as one small texture and does step 3 below;
+// tests/iwasaki_parity_test.cpp pins the two.
 //
-// Steps for direction ω = (θ, φ) of sample frame (t, n', b) at a point with frame (n, u, v):
-//  1. the vertex-frame angles θ' = asin(ω·u), φ' = atan2(ω·v, ω·n) (visibility_sdf.h's frame);
-//  2. each corner's grid bilinearly at (θ', φ') (cell centres, clamped: GL_LINEAR's footprint),
-//     blended with the point's barycentrics;
-//  3. ∇d carried to (θ, φ) by the chain rule through ω: ∂θ'/∂ω = u/cosθ',
-//     ∂φ'/∂ω = ((ω·n)v − (ω·v)n)/cos²θ'.
+// Steps for SG axis ξ_k, seen at a point with frame (n, u, v) through sample frame (t, n', b)
+// at the axis's sample-frame angles (θ_k, φ_k):
+//  1. per vertex, in its own frame: θ' = asin(ξ·u), φ' = atan2(ξ·v, ξ·n) (visibility_sdf.h);
+//     the PCA grid (d by reconstruction, ∇d by its central differences, as sdf_gradient)
+//     bilinearly at (θ', φ') (cell centres, clamped);
+//  2. at a point inside a triangle: the corners' values blended with the point's barycentrics;
+//  3. ∇d carried to the sample frame's (θ, φ) by the chain rule through ω = ξ_k, with the
+//     point's frame: ∂θ'/∂ω = u/cosθ', ∂φ'/∂ω = ((ω·n)v − (ω·v)n)/cos²θ'.
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "bake/iwasaki_bundle.h"
 #include "core/microcylinder.h"
+#include "core/spherical_gaussian.h"
+#include "scene/mesh.h"
 
 namespace weft {
 
-struct VertexSdfGrids {
-  int resolution = 0;
+// Step 1 for every vertex of an object and every SG of a lighting.
+struct SgVisibility {
   size_t vertices = 0;
-  // [vertex][θ row][φ col] × RGBA: d, ∂d/∂θ', ∂d/∂φ' (radians, vertex frame), 0.
-  std::vector<float> texels;
-  // d from the PCA, ∇d by central differences (visibility_sdf.h's sdf_gradient).
-  static VertexSdfGrids expand(const ObjectVisibility& visibility);
-  // (d, ∂d/∂θ', ∂d/∂φ') of one vertex, bilinear at grid coordinates (gi, gj) already clamped to
-  // [0, resolution − 1].
-  dvec3 bilinear(size_t vertex, double gi, double gj) const;
+  int sgs = 0;
+  std::vector<float> values;  // [vertex][sg] × (d, ∂d/∂θ', ∂d/∂φ') (radians, vertex frame)
+  // `mesh`: the object's mesh (the vertex frames the bake cast from: normal + warp).
+  static SgVisibility compute(const ObjectVisibility& visibility, const TriangleMesh& mesh, const SgLighting& sgs);
+  dvec3 at(size_t vertex, int sg) const {
+    const float* p = &values[(vertex * size_t(sgs) + size_t(sg)) * 3];
+    return dvec3(p[0], p[1], p[2]);
+  }
 };
 
 struct SdfSample {
   double d = 0, d_dtheta = 0, d_dphi = 0;
 };
 
-// Step 1–3 above. `frame`: the point's (interpolated) frame; `corners`: the triangle's vertex
-// indices; `bary`: the point's barycentrics.
-SdfSample sdf_in_sample_frame(const VertexSdfGrids& grids, const SurfaceFrame& frame,
+// Steps 2–3 above for SG `sg`. `frame`: the point's (interpolated) frame; `corners`: the
+// triangle's vertex indices; `bary`: the point's barycentrics; (θ, φ): the SG axis in `sample`.
+SdfSample sdf_in_sample_frame(const SgVisibility& visibility, int sg, const SurfaceFrame& frame,
                               const std::array<uint32_t, 3>& corners, const dvec3& bary,
                               const ThreadFrame& sample, double theta, double phi);
 

@@ -2,7 +2,7 @@
 //   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids)
 //   × the circular-Gaussian product of the SG with each longitudinal lobe (Eq. 11, 13)
 //   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
-//   with the baked gain κ, d and ∇d from the per-vertex SDF grids).
+//   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes).
 // The same steps as render/methods/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
 // them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) before it.
 // Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex.vert).
@@ -28,10 +28,8 @@ uniform float u_xi_n;
 uniform float u_wo_n;
 
 uniform bool u_visibility;
-uniform highp sampler2D u_sdf;        // per-vertex tiles of (d, ∂d/∂θ', ∂d/∂φ')
-uniform int u_sdf_n;                  // tile side (cells)
-uniform int u_sdf_tiles_per_row;
-uniform vec2 u_sdf_atlas_size;
+uniform highp sampler2D u_sg_visibility;  // (d, ∂d/∂θ', ∂d/∂φ') per (vertex, SG): SgVisibilityTexture
+uniform int u_sg_visibility_per_row;      // vertices per texel row
 uniform highp sampler3D u_kappa;      // κ·s over (β, σ', σ_l) as x, y, z
 uniform vec3 u_kappa_n;               // nodes along σ_l, σ', β
 uniform vec2 u_kappa_sigma;           // σ range (min, max)
@@ -106,25 +104,20 @@ float pair_integral(float theta_l, float sigma_l, float phi_k, float sp) {
   return 0.25 * PI * sigma_l * sp * a * b;
 }
 
-// --- methods/iwasaki_visibility.cpp: d and ∇d in a sample frame's (θ, φ).
-vec3 sdf_corner(int vertex, vec2 g) {
-  int tx = vertex - (vertex / u_sdf_tiles_per_row) * u_sdf_tiles_per_row, ty = vertex / u_sdf_tiles_per_row;
-  vec2 p = vec2(float(tx * u_sdf_n), float(ty * u_sdf_n)) + g.yx + 0.5;
-  return texture(u_sdf, p / u_sdf_atlas_size).rgb;
+// --- methods/iwasaki_visibility.cpp: (d, ∂d/∂θ', ∂d/∂φ') of SG k blended over the corners
+// (step 2), then ∇d carried to a sample frame's (θ, φ) (step 3).
+vec3 sg_visibility(int vertex, int k) {
+  int p = u_sg_visibility_per_row;
+  return texelFetch(u_sg_visibility, ivec2((vertex - (vertex / p) * p) * u_sg_count + k, vertex / p), 0).rgb;
 }
-vec3 sdf_in_sample_frame(vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b, float theta, float phi, ivec3 c,
-                          vec3 bary) {
+vec3 sdf_in_sample_frame(vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b, float theta, float phi, vec3 s) {
   float ct = cos(theta), st = sin(theta), cp = cos(phi), sp = sin(phi);
   vec3 radial = cp * np + sp * b;
   vec3 w = st * t + ct * radial;
   vec3 dw_dtheta = ct * t - st * radial;
   vec3 dw_dphi = ct * (-sp * np + cp * b);
-  float wu = clamp(dot(w, u), -1.0, 1.0), wn = dot(w, n), wv = dot(w, v);
+  float wn = dot(w, n), wv = dot(w, v);
   float cos2 = max(wn * wn + wv * wv, 1e-8);
-  float theta_v = atan(wu, sqrt(cos2)), phi_v = atan(wv, wn);
-  float nn = float(u_sdf_n), h = PI / nn;
-  vec2 g = clamp(vec2((theta_v + HALF_PI) / h - 0.5, (phi_v + HALF_PI) / h - 0.5), 0.0, nn - 1.0);
-  vec3 s = bary.x * sdf_corner(c.x, g) + bary.y * sdf_corner(c.y, g) + bary.z * sdf_corner(c.z, g);
   vec3 dtheta_v = u / sqrt(cos2);
   vec3 dphi_v = (wn * v - wv * n) / cos2;
   return vec3(s.x, s.y * dot(dtheta_v, dw_dtheta) + s.z * dot(dphi_v, dw_dtheta),
@@ -169,6 +162,9 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       float sigma_k = u_sg_sigma[k];
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
+      vec3 vis_k = u_visibility ? bary.x * sg_visibility(corners.x, k) + bary.y * sg_visibility(corners.y, k) +
+                                      bary.z * sg_visibility(corners.z, k)
+                                : vec3(0.0);
       for (int j = 0; j < 2; ++j) {
         Thread p = u_threads[j];
         int count = p.samples;
@@ -189,7 +185,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
           float theta_k = fk.theta, phi_k = fk.phi;
           Lobe light = Lobe(1.0, theta_k, sigma_k);
-          vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, corners, bary) : vec3(0.0);
+          vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // Surface lobe.
