@@ -1,6 +1,7 @@
 #!/bin/bash
-# `weft bake` with seed 000's tables (small grids), then `weft run` picks iwasaki from the bundle
-# and shows a first frame, and `weft render --method iwasaki --bundle` writes an image.
+# `weft bake` with seed 000's tables (small grids), then `weft run` picks iwasaki_vertex from the
+# bundle (auto) or iwasaki (asked) and shows a first frame, and `weft render --method iwasaki
+# --bundle` writes an image.
 set -eu
 weft=$1
 dir=$(mktemp -d)
@@ -10,8 +11,11 @@ grep -q "PCA" "$dir/bake.log" || { cat "$dir/bake.log"; echo "no visibility bake
 grep -q "bundle .* MB" "$dir/bake.log" || { cat "$dir/bake.log"; exit 1; }
 "$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
   --size 48 36 --screenshot "$dir/shot.png" 2> "$dir/run.log"
-grep -q "first frame after .* iwasaki" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki"; exit 1; }
+grep -q "first frame after .* iwasaki_vertex)" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki_vertex"; exit 1; }
 test -s "$dir/shot.png"
+"$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
+  --size 48 36 --method iwasaki 2> "$dir/run_pixel.log"
+grep -q "first frame after .* iwasaki)" "$dir/run_pixel.log" || { cat "$dir/run_pixel.log"; echo "weft run --method iwasaki did not use it"; exit 1; }
 "$weft" render --method iwasaki --bundle "$dir/p.weft" --width 48 --height 36 --frames 1 --out "$dir/f.exr" > "$dir/render.json"
 grep -q '"method":"iwasaki"' "$dir/render.json"
 test -s "$dir/f.exr"
