@@ -6,7 +6,7 @@
 //    ./iwasaki_bench_refs) and rendered with the weft binary when missing. WEFT_BENCH_CASES
 //    (e.g. "pillow:linen_plain:studio,drape:polyester_satin_charmeuse:city") picks the cases.
 //  - speed: median ms/frame at 640×480 over ≥ 20 frames after warm-up, glFinish included, for
-//    pillow/linen_plain/10 SGs, with and without visibility, and sgpoint beside it (one run, so
+//    pillow/linen_plain/10 SGs, with and without visibility, iwasaki_vertex and sgpoint beside it (one run, so
 //    the ratio holds on any machine); boot to first frame from a bundle (`weft run`).
 #include <gtest/gtest.h>
 
@@ -163,9 +163,10 @@ TEST(IwasakiBench, SpeedPillowLinen) {
     const GpuFrame sp = render_gpu_frame(scene, fabrics, sgs, "sgpoint", w, h, frames);
     const GpuFrame a = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, frames, vis);
     const GpuFrame b = render_gpu_frame(scene, fabrics, sgs, "iwasaki", w, h, frames, novis);
+    const GpuFrame v = render_gpu_frame(scene, fabrics, sgs, "iwasaki_vertex", w, h, frames, vis);
     std::printf("speed %dx%d on %s, %d frames: iwasaki %.1f ms/frame, iwasaki without visibility %.1f ms/frame, "
-                "sgpoint (16 samples/thread) %.1f ms/frame\n",
-                w, h, a.renderer.c_str(), frames, a.median_ms, b.median_ms, sp.median_ms);
+                "iwasaki_vertex %.1f ms/frame, sgpoint (16 samples/thread) %.1f ms/frame\n",
+                w, h, a.renderer.c_str(), frames, a.median_ms, b.median_ms, v.median_ms, sp.median_ms);
   }
   // Boot to first frame: `weft run` from the bundle, headless 640×480.
   const fs::path state = refs_dir() / "run_state";
