@@ -64,8 +64,8 @@ int run_render(const RenderArgs& a) {
     for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
-  if (!a.bundle.empty() && !gpu::uses_seed000_tables(a.method))
-    throw UsageError("--bundle: only with --method iwasaki or iwasaki_vertex");
+  if (!a.bundle.empty() && !gpu::uses_seed000_tables(a.method) && a.method != "mizutani")
+    throw UsageError("--bundle: only with --method iwasaki, iwasaki_vertex or mizutani");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: must be within 1..8192");
@@ -269,7 +269,7 @@ CommandAction add_render_command(CLI::App& app) {
                   "Convergence check: re-render every Nth pixel (in x and y) at twice the lighting resolution and tangent samples")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
-  sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
+  sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex, mizutani: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: exposure before the 1-exp(-x) tone curve and sRGB (0: automatic, from the mean of the surfaces)")

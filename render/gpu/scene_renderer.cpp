@@ -130,9 +130,19 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
       if (iwasaki_) obj->iwasaki = iwasaki_->add_object(i, o.mesh, fabrics[cloth]);
       if (method == Method::mizutani) {
         obj->bsdf = mizutani_cloth(fabrics[cloth]);
-        BakeSettings settings;
-        settings.tangent_samples = paper_tangent_samples(fabrics[cloth].name);
-        obj->mizutani = std::make_unique<MizutaniTextures>(bake_weighting_tables(fabrics[cloth], settings), *azimuthal_);
+        // Seed 001's W is seed 000's: a bundle's tables serve when baked for the same samples.
+        const auto samples = paper_tangent_samples(fabrics[cloth].name);
+        const WeightingTables* from_bundle = nullptr;
+        if (iwasaki)
+          if (auto t = iwasaki->tables.find(fabrics[cloth].name); t != iwasaki->tables.end() && t->second.tangent_samples == samples)
+            from_bundle = &t->second;
+        if (from_bundle) {
+          obj->mizutani = std::make_unique<MizutaniTextures>(*from_bundle, *azimuthal_);
+        } else {
+          BakeSettings settings;
+          settings.tangent_samples = samples;
+          obj->mizutani = std::make_unique<MizutaniTextures>(bake_weighting_tables(fabrics[cloth], settings), *azimuthal_);
+        }
       }
       ++cloth;
     }

@@ -29,7 +29,7 @@ enum class Method {
   thin,
   iwasaki,   // seed 000 per pixel: needs the bundle's tables (IwasakiBundleData)
   iwasaki_vertex,  // seed 000 per vertex, radiance interpolated: same tables, a fraction of the cost
-  mizutani,  // seed 001: bakes each cloth's weighting tables (paper's tangent samples) at construction
+  mizutani,  // seed 001: the bundle's weighting tables, or bakes them (paper's tangent samples) at construction
 };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
@@ -40,7 +40,9 @@ bool uses_seed000_tables(const std::string& method_name);  // false for names th
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
-  // Method::iwasaki(_vertex) draws cloth from `iwasaki` (a bundle's seed 000 tables; required).
+  // Method::iwasaki(_vertex) draws cloth from `iwasaki` (a bundle's seed 000 tables; required);
+  // Method::mizutani takes its W tables from there when they were baked for the paper's samples
+  // (else it bakes them, a minute on two cores).
   SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
                 std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
