@@ -21,6 +21,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   IwasakiBakeReport rep;
   auto t0 = std::chrono::steady_clock::now();
   for (const auto& o : scene.objects) {
+    if (!opt.bake_tables) break;
     if (o.material != Material::cloth || out.tables.count(o.fabric)) continue;
     const Fabric& fabric = fabrics.at(o.fabric);
     BakeSettings settings;
@@ -39,6 +40,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     }
     if (opt.grid > 0) settings.xi_resolution = settings.wo_resolution = settings.wi_resolution = opt.grid;
     if (opt.tangent_samples[0] > 0 && opt.tangent_samples[1] > 0) settings.tangent_samples = opt.tangent_samples;
+    if (opt.svd_error > 0) settings.svd_error = opt.svd_error;
     settings.validate();
     ProgressBar bar("T tables " + o.fabric);
     WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {
@@ -59,7 +61,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   rep.tables_s = since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < scene.objects.size(); ++i) {
+  for (size_t i = 0; i < scene.objects.size() && opt.bake_visibility; ++i) {
     if (scene.objects[i].material != Material::cloth) continue;
     ProgressBar bar("visibility " + scene.objects[i].name);
     SceneVisibilityStats st;

@@ -1,7 +1,8 @@
 #pragma once
 // The runtime methods' C++ evaluations behind one signature, for the stability sweeps and the
-// bench's stability table. One row per method: iwasaki/mizutani join with one line each
-// (their evaluations need baked tables; see stability.h).
+// bench's stability table. One row per method. iwasaki and mizutani read baked weighting
+// tables: small ones (kStressTableGrid) are baked in memory for each stress fabric on first use,
+// with the paper's tangent samples (bake_selection.h); iwasaki runs without visibility here.
 #include <functional>
 #include <span>
 #include <string>
@@ -24,6 +25,9 @@ struct CpuMethod {
                          std::span<const SphericalGaussian> sgs)>
       shade;
 };
+
+// ξ, ω_o and ω_i grids of the tables the table-backed methods bake (the paper's are 48).
+inline constexpr int kStressTableGrid = 16;
 
 const std::vector<CpuMethod>& cpu_methods();
 

@@ -50,6 +50,13 @@ std::vector<StressCase> stress_cases(const std::filesystem::path& dir_, int n) {
   cases.push_back({"narrow_sg_1e4", "three SGs with λ = 10⁴ (≈0.8° wide), one near grazing", satin,
                    {{dir(60, 10), 1e4, dvec3(1500.0)}, {dir(30, 200), 1e4, dvec3(800.0)}, {dir(8, 100), 1e4, dvec3(800.0)}},
                    points(n, 10, 85, 1)});
+  // A window: 15 SGs of λ = 2000 (1.8° to 1/e) 1.5° apart along an arc at 40° elevation, a
+  // bright strip ≈ 21° long and ≈ 2° across, which no single (isotropic) SG represents.
+  SgLighting window;
+  for (int i = 0; i < 15; ++i) window.push_back({dir(40, -10.5 + 1.5 * i), 2000.0, dvec3(300.0, 290.0, 270.0)});
+  window.push_back({dir(70, 180), 2.0, dvec3(0.2)});
+  cases.push_back({"window", "a strip of 15 collinear SGs with λ = 2000 (≈ 21° × 2°) over a dim ambient", satin, window,
+                   points(n, 10, 85, 8)});
   cases.push_back({"grazing_view_89", "views 85–89° from the normal", linen, room_sgs(), points(n, 1, 5, 2)});
   Fabric glossy = linen;
   for (auto& t : glossy.threads) t.gamma_s = kPi / 180.0, t.gamma_v = 2.0 * kPi / 180.0;
