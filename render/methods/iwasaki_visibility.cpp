@@ -33,11 +33,6 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
       for (int t = 0; t < o.terms; ++t) x += double(o.basis[size_t(t) * cells + k]) * c[t];
       return x;
     };
-    // (d, ∂d/∂θ', ∂d/∂φ') at a node: sdf_gradient's differences (central, one-sided at the edges).
-    auto node = [&](int i, int j) {
-      const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, n - 1), j0 = std::max(j - 1, 0), j1 = std::min(j + 1, n - 1);
-      return dvec3(d(i, j), (d(i1, j) - d(i0, j)) / ((i1 - i0) * h), (d(i, j1) - d(i, j0)) / ((j1 - j0) * h));
-    };
     for (size_t k = 0; k < sgs.size(); ++k) {
       const dvec3 w = glm::normalize(sgs[k].axis);
       const double wu = std::clamp(glm::dot(w, f.u), -1.0, 1.0), wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
@@ -46,6 +41,19 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
       const double gj = std::clamp((phi_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));
       const int i0 = std::min(int(gi), n - 2), j0 = std::min(int(gj), n - 2);
       const double fi = gi - i0, fj = gj - j0;
+      // d over the 4×4 nodes around the cell, each reconstructed once (12 of them are used).
+      double memo[4][4];
+      bool have[4][4] = {};
+      auto dm = [&](int i, int j) {
+        const int a = i - i0 + 1, b = j - j0 + 1;
+        if (!have[a][b]) memo[a][b] = d(i, j), have[a][b] = true;
+        return memo[a][b];
+      };
+      // (d, ∂d/∂θ', ∂d/∂φ') at a node: sdf_gradient's differences (central, one-sided at the edges).
+      auto node = [&](int i, int j) {
+        const int ia = std::max(i - 1, 0), ib = std::min(i + 1, n - 1), ja = std::max(j - 1, 0), jb = std::min(j + 1, n - 1);
+        return dvec3(dm(i, j), (dm(ib, j) - dm(ia, j)) / ((ib - ia) * h), (dm(i, jb) - dm(i, ja)) / ((jb - ja) * h));
+      };
       const dvec3 g = (1 - fi) * ((1 - fj) * node(i0, j0) + fj * node(i0, j0 + 1)) +
                       fi * ((1 - fj) * node(i0 + 1, j0) + fj * node(i0 + 1, j0 + 1));
       float* p = &out.values[(v * sgs.size() + k) * 3];

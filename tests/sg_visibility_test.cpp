@@ -1,0 +1,83 @@
+// SgVisibility (methods/iwasaki_visibility.h) reconstructs d and ∇d only at the SG axes, from
+// the PCA, when the lighting changes. Independent expectation: expand the vertex's whole grid
+// from the PCA, take visibility_sdf.h's sdf_gradient of it, and look it up bilinearly at the
+// axis's vertex-frame angles — what the runtime did before, for every vertex, at load.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "bake/scene_visibility.h"
+#include "bake/visibility_sdf.h"
+#include "methods/iwasaki_visibility.h"
+#include "scene/scene.h"
+
+using namespace weft;
+
+namespace {
+
+dvec3 expanded_lookup(const ObjectVisibility& o, size_t v, const SurfaceFrame& f, dvec3 w) {
+  const int n = o.resolution, cells = n * n;
+  const double h = std::numbers::pi / n;
+  DistanceGrid d{n, n, std::vector<double>(cells)};
+  for (int k = 0; k < cells; ++k) {
+    double x = o.mean[k];
+    for (int t = 0; t < o.terms; ++t) x += double(o.basis[size_t(t) * cells + k]) * o.coefficients[v * o.terms + t];
+    d.values[k] = x;
+  }
+  const SdfGradient g = sdf_gradient(d, h, false);
+  w = glm::normalize(w);
+  const double theta = std::asin(std::clamp(glm::dot(w, f.u), -1.0, 1.0));
+  const double phi = std::atan2(glm::dot(w, f.v), glm::dot(w, f.n));
+  const double gi = std::clamp((theta + std::numbers::pi / 2) / h - 0.5, 0.0, n - 1.0);
+  const double gj = std::clamp((phi + std::numbers::pi / 2) / h - 0.5, 0.0, n - 1.0);
+  const int i0 = std::min(int(gi), n - 2), j0 = std::min(int(gj), n - 2);
+  const double fi = gi - i0, fj = gj - j0;
+  auto at = [&](int i, int j) { return dvec3(d.at(i, j), g.d_theta.at(i, j), g.d_phi.at(i, j)); };
+  return (1 - fi) * ((1 - fj) * at(i0, j0) + fj * at(i0, j0 + 1)) + fi * ((1 - fj) * at(i0 + 1, j0) + fj * at(i0 + 1, j0 + 1));
+}
+
+TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
+  const Scene scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
+  size_t cloth = 0;
+  for (size_t i = 0; i < scene.objects.size(); ++i)
+    if (scene.objects[i].material == Material::cloth) cloth = i;
+  SceneVisibilityOptions vo;
+  vo.resolution = 16;
+  const auto vis = bake_object_visibility(scene, cloth, vo);
+  ASSERT_TRUE(vis.has_value());
+  const TriangleMesh& mesh = scene.objects[cloth].mesh;
+  // Axes from overhead to below the horizon, sharp and broad (sharpness does not enter d).
+  SgLighting sgs;
+  for (const dvec3& a : {dvec3(0, 0, 1), dvec3(0.3, -0.5, 0.8), dvec3(-0.9, 0.1, 0.05), dvec3(0.2, 0.9, -0.4)})
+    sgs.push_back({glm::normalize(a), 50.0, dvec3(1.0)});
+  const SgVisibility s = SgVisibility::compute(*vis, mesh, sgs);
+  ASSERT_EQ(s.vertices, mesh.positions.size());
+  double worst = 0.0, spread = 0.0;
+  for (size_t v = 0; v < s.vertices; v += 37) {
+    const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
+    for (int k = 0; k < int(sgs.size()); ++k) {
+      const dvec3 want = expanded_lookup(*vis, v, f, sgs[k].axis), got = s.at(v, k);
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(want[c] - got[c]) / (1.0 + std::abs(want[c])));
+      spread = std::max(spread, std::abs(want.x));
+    }
+  }
+  EXPECT_LT(worst, 1e-5);  // float storage
+  EXPECT_GT(spread, 0.1);  // the lookups saw real distances, not a flat grid
+}
+
+TEST(SgVisibility, RefusesAMeshOfAnotherSize) {
+  ObjectVisibility o;
+  o.resolution = 4;
+  o.terms = 1;
+  o.mean.assign(16, 0.0f);
+  o.basis.assign(16, 0.0f);
+  o.coefficients.assign(3, 0.0f);  // three vertices
+  TriangleMesh m;
+  m.positions.assign(2, dvec3(0));
+  m.normals.assign(2, dvec3(0, 0, 1));
+  m.warps.assign(2, dvec3(1, 0, 0));
+  EXPECT_THROW(SgVisibility::compute(o, m, {}), std::invalid_argument);
+}
+
+}  // namespace
