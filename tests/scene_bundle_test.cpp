@@ -60,8 +60,9 @@ TEST(SceneBundle, RoundTripsTheScene) {
         EXPECT_EQ(b.mesh.positions[v][k], double(float(a.mesh.positions[v][k])));
         EXPECT_EQ(b.mesh.normals[v][k], double(float(a.mesh.normals[v][k])));
       }
-      if (a.material == Material::cloth)
+      if (a.material == Material::cloth) {  // EXPECT_EQ is an if/else inside: braces keep it ours
         for (int k = 0; k < 3; ++k) EXPECT_EQ(b.mesh.warps[v][k], double(float(a.mesh.warps[v][k])));
+      }
     }
   }
   // Every stored fabric parses to what the preset loader gives.
