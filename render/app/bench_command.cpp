@@ -250,7 +250,7 @@ int run_bench(BenchArgs a) {
   // mizutani takes its W tables from it (baked for the paper's tangent samples).
   auto tables_for = [&](const std::string& method, const Scene& scene,
                         const std::map<std::string, Fabric>& fabrics) -> std::shared_ptr<const IwasakiBundleData> {
-    if (method.rfind("iwasaki", 0) != 0 && method != "mizutani") return nullptr;  // mizutani: seed 001's W is seed 000's
+    if (!gpu::reads_seed000_tables(method)) return nullptr;
     return bake(bake_key(scene, fabrics), scene, fabrics, paper_bake());
   };
   const auto available = gpu::method_names();

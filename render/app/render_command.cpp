@@ -64,7 +64,7 @@ int run_render(const RenderArgs& a) {
     for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
-  if (!a.bundle.empty() && !gpu::uses_seed000_tables(a.method) && a.method != "mizutani")
+  if (!a.bundle.empty() && !gpu::reads_seed000_tables(a.method))
     throw UsageError("--bundle: only with --method iwasaki, iwasaki_vertex or mizutani");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)

@@ -24,14 +24,14 @@ GlProgram make_program(IwasakiCloth::Evaluation e) {
     return GlProgram(source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
   return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
-}  // namespace
 
-static bool same_lighting(const SgLighting& a, const SgLighting& b) {
+bool same_lighting(const SgLighting& a, const SgLighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness) return false;  // amplitude: no effect on visibility
   return true;
 }
+}  // namespace
 
 struct IwasakiCloth::Object {
   GpuMesh mesh;

@@ -1,7 +1,7 @@
 #pragma once
 // Seed 000's baked data as GLES textures for shaders/iwasaki.glsl: one fabric's weighting-table
-// factors (two RGBA32F array textures, four SVD ranks per layer), one object's per-vertex SDF
-// grids (an RGBA32F atlas of resolution² tiles) and the sigmoid gain table κ (R32F 3D).
+// factors (two RGBA32F array textures, four SVD ranks per layer), one object's visibility per
+// (vertex, SG) (RGBA32F, refilled when the lighting changes) and the sigmoid gain table κ (R32F 3D).
 // Linear filtering of float textures needs GL_OES_texture_float_linear (llvmpipe and desktop
 // drivers have it); constructors throw GpuError without it.
 #include <GLES3/gl3.h>

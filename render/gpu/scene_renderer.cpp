@@ -66,12 +66,18 @@ Method parse_method(const std::string& name) {
 std::string method_name(Method method) { return info(method).name; }
 
 bool uses_seed000_tables(Method method) { return method == Method::iwasaki || method == Method::iwasaki_vertex; }
+bool reads_seed000_tables(Method method) { return uses_seed000_tables(method) || method == Method::mizutani; }
 
-bool uses_seed000_tables(const std::string& name) {
+namespace {
+bool named_method_is(const std::string& name, bool (*predicate)(Method)) {
   for (const auto& i : method_table())
-    if (name == i.name) return uses_seed000_tables(i.method);
+    if (name == i.name) return predicate(i.method);
   return false;
 }
+}  // namespace
+
+bool uses_seed000_tables(const std::string& name) { return named_method_is(name, uses_seed000_tables); }
+bool reads_seed000_tables(const std::string& name) { return named_method_is(name, reads_seed000_tables); }
 
 std::vector<std::string> method_names() {
   std::vector<std::string> names;

@@ -34,8 +34,13 @@ enum class Method {
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
 std::vector<std::string> method_names();
-bool uses_seed000_tables(Method method);  // iwasaki, iwasaki_vertex
-bool uses_seed000_tables(const std::string& method_name);  // false for names that are no GPU method
+// Seed 000's tables (a bundle's IwasakiBundleData): iwasaki and iwasaki_vertex cannot draw
+// without them; mizutani also reads their W tables when given (else it bakes its own).
+bool uses_seed000_tables(Method method);
+bool reads_seed000_tables(Method method);
+// The same by name; false for names that are no GPU method.
+bool uses_seed000_tables(const std::string& method_name);
+bool reads_seed000_tables(const std::string& method_name);
 
 class SceneRenderer {
 public:
