@@ -84,13 +84,13 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   std::vector<std::string_view> parts;
   std::string call;
   if (method == "sheen") {
-    parts = {"sg_lighting.glsl", "sheen.glsl"};
+    parts = {"erf.glsl", "sg_lighting.glsl", "sheen.glsl"};
     call = "vec4(sheen_radiance(n, wo), 1.0)";
   } else if (method == "mdfrot") {
-    parts = {"sg_lighting.glsl", "mdfrot.glsl"};
+    parts = {"erf.glsl", "sg_lighting.glsl", "mdfrot.glsl"};
     call = "vec4(mdfrot_radiance(n, u, wo), 1.0)";
   } else {
-    parts = {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl"};
+    parts = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl"};
     call = "thin_radiance(n, u, wo)";
   }
   std::string fs = shader_preamble();

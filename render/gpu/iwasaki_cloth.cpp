@@ -21,8 +21,8 @@ std::string source(std::initializer_list<std::string_view> parts) {
 
 GlProgram make_program(IwasakiCloth::Evaluation e) {
   if (e == IwasakiCloth::Evaluation::per_vertex)
-    return GlProgram(source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
-  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "iwasaki.glsl", "iwasaki.frag"}));
+    return GlProgram(source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
+  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 
 bool same_lighting(const SgLighting& a, const SgLighting& b) {

@@ -26,9 +26,9 @@ struct MethodInfo {
 const std::vector<MethodInfo>& method_table() {
   static const std::vector<MethodInfo> table = {
       {Method::sgpoint, "sgpoint", {"microcylinder.glsl", "sgpoint.frag"}, false},
-      {Method::sheen, "sheen", {"sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
-      {Method::mdfrot, "mdfrot", {"sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
-      {Method::thin, "thin", {"microcylinder.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
+      {Method::sheen, "sheen", {"erf.glsl", "sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
+      {Method::mdfrot, "mdfrot", {"erf.glsl", "sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
+      {Method::thin, "thin", {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
       {Method::mizutani, "mizutani", {"microcylinder.glsl", "mizutani.glsl", "mizutani.frag"}, false},
       {Method::iwasaki, "iwasaki", {}, false},  // its own programs: gpu/iwasaki_cloth.h
       {Method::iwasaki_vertex, "iwasaki_vertex", {}, false},
@@ -124,7 +124,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   if (!iwasaki_) cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
   if (info(method).see_through)
     background_program_ =
-        std::make_unique<GlProgram>(kFullscreenVs, program_source({"sg_lighting.glsl", "background.frag"}));
+        std::make_unique<GlProgram>(kFullscreenVs, program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {

@@ -4,7 +4,8 @@
 //   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
 //   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes).
 // The same steps as render/methods/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
-// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) before it.
+// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) and erf.glsl
+// before it.
 // Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex.vert).
 #define MAX_SGS 40
 #define MAX_TABLES 512
@@ -89,18 +90,9 @@ Lobe lobe_product(Lobe a, Lobe b) {
 }
 // iwasaki.cpp's lobe_sigma_prime: cos θ·cos θ_k kept ≥ 1e−6 (σ' = ∞ would make ∞·0 = NaN).
 float sigma_prime(float sigma_k, float theta, float theta_k) { return sigma_k / sqrt(max(cos(theta) * cos(theta_k), 1e-6)); }
-// erf to 1.2e−7 (Numerical Recipes' erfc Chebyshev fit); GLSL ES has none.
-float erf_approx(float x) {
-  float z = abs(x);
-  float t = 1.0 / (1.0 + 0.5 * z);
-  float r = t * exp(-z * z - 1.26551223 + t * (1.00002368 + t * (0.37409196 + t * (0.09678418 +
-            t * (-0.18628806 + t * (0.27886807 + t * (-1.13520398 + t * (1.48851587 +
-            t * (-0.82215223 + t * 0.17087277)))))))));
-  return x >= 0.0 ? 1.0 - r : r - 1.0;
-}
 float pair_integral(float theta_l, float sigma_l, float phi_k, float sp) {
-  float a = erf_approx((HALF_PI - theta_l) / sigma_l) - erf_approx((-HALF_PI - theta_l) / sigma_l);
-  float b = erf_approx((HALF_PI - phi_k) / sp) - erf_approx((-HALF_PI - phi_k) / sp);
+  float a = erf_nr((HALF_PI - theta_l) / sigma_l) - erf_nr((-HALF_PI - theta_l) / sigma_l);
+  float b = erf_nr((HALF_PI - phi_k) / sp) - erf_nr((-HALF_PI - phi_k) / sp);
   return 0.25 * PI * sigma_l * sp * a * b;
 }
 

@@ -1,6 +1,7 @@
 // SG lighting for the SG-lit methods (sheen, mdfrot, thin): the SGs as uniforms, their
 // clamped-cosine irradiance (core/spherical_gaussian.cpp's Tokuyoshi 2024 fit, term by term)
 // and the horizon lift of methods/sg_lights.cpp. Parity: tests/method_parity_test.cpp.
+// Needs erf.glsl before it.
 #define MAX_SGS 40
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
@@ -10,15 +11,6 @@ uniform vec3 u_sg_amplitude[MAX_SGS];
 const float SG_PI = 3.14159265358979;
 const float SG_HORIZON_COSINE = 0.02;  // kSgHorizonCosine
 
-// GLSL ES has no erfc: Numerical Recipes' Chebyshev fit, fractional error < 1.2e-7.
-float sg_erfc(float x) {
-  float z = abs(x);
-  float t = 1.0 / (1.0 + 0.5 * z);
-  float r = t * exp(-z * z - 1.26551223 + t * (1.00002368 + t * (0.37409196 + t * (0.09678418 +
-            t * (-0.18628806 + t * (0.27886807 + t * (-1.13520398 + t * (1.48851587 +
-            t * (-0.82215223 + t * 0.17087277)))))))));
-  return x >= 0.0 ? r : 2.0 - r;
-}
 float sg_expm1(float x) { return abs(x) < 1e-3 ? x * (1.0 + 0.5 * x) : exp(x) - 1.0; }
 float sg_one_minus_exp_over(float x) { return x == 0.0 ? 1.0 : -sg_expm1(-x) / x; }
 
@@ -46,7 +38,7 @@ float sg_clamped_cosine_integral(float lambda, float c) {
   float factor = 0.5 + 0.5 * c;
   if (t >= 1e-6) {
     float tc = t * c;
-    factor = 0.5 * (c * sg_erfc(-tc) + sg_erfc(t)) -
+    factor = 0.5 * (c * erfc_nr(-tc) + erfc_nr(t)) -
              0.5 / sqrt(SG_PI) * exp(-tc * tc) * sg_expm1(t * t * (c * c - 1.0)) / t;
   }
   return 2.0 * SG_PI * (lower + (upper - lower) * factor);
@@ -58,7 +50,7 @@ float sg_hemisphere_integral(float lambda, float c) {
   float lower = exp(-lambda) * upper;
   const float A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
   float t = lambda * sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
-  float factor = t < 1e-6 ? 0.5 + 0.5 * c : 0.5 + 0.5 * (1.0 - sg_erfc(t * c)) / (1.0 - sg_erfc(t));
+  float factor = t < 1e-6 ? 0.5 + 0.5 * c : 0.5 + 0.5 * (1.0 - erfc_nr(t * c)) / (1.0 - erfc_nr(t));
   return lower + (upper - lower) * factor;
 }
 // E/H clamped to [SG_HORIZON_COSINE, 1]: methods/sg_lights.cpp's sg_effective_cosine.
