@@ -28,14 +28,37 @@ struct LinearSdf {
   double d = 0, d_dtheta = 0, d_dphi = 0, theta = 0;
 };
 
-// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13).
-double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, const LinearSdf& sdf,
-                     const IwasakiVisibility* vis) {
+// The surface's own horizon as a visibility boundary in a sample frame. Eq. 9's T averages W over
+// the lobe's part above the surface (W = 0 below it), so the shading factor must also integrate
+// only there; the [−π/2, π/2]² square of Eq. 13 is the *sample's* hemisphere, which a tilted
+// sample or a lobe near the horizon pokes below the surface. The height h(θ, φ) = ω(θ, φ)·n is
+// known exactly, so its linearisation at the lobe's peak gives H in closed form
+// (linear_visibility_ratio), like Eq. 12's V' for an occluder. Measured on the flat swatch
+// (linen, 36 views, tables at grid 24): relative RMSE 10.8 % → 3.8 % under studio, whose sharp
+// lights sit a few degrees above the horizon, and 6.3 % → 3.8 % under courtyard.
+double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
+                     double sigma_p) {
+  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const double radial = cp * np_n + sp * b_n;
+  const double h = st * t_n + ct * radial;
+  const double h_dtheta = ct * t_n - st * radial;
+  const double h_dphi = ct * (cp * b_n - sp * np_n);
+  return linear_visibility_ratio(sigma_l, sigma_p, h, h_dtheta, h_dphi);
+}
+
+// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13). V' is the
+// horizon's alone without an SDF; with one (whose bake counts everything below the horizon as
+// occluded, so its nearest boundary may be the horizon itself) the smaller of the two ratios:
+// the visible set lies inside both, and a product would count the horizon twice.
+double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, double horizon,
+                     const LinearSdf& sdf, const IwasakiVisibility* vis) {
   const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
-  if (!sdf.on) return open;
+  if (!sdf.on) return open * horizon;
   const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
-  if (vis->kappa) return open * vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
-  return open * linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
+  const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
+                              : linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
+  return open * std::min(h, horizon);
 }
 
 }  // namespace
@@ -89,7 +112,8 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           double fr = 0, geo = 0;
           const double cos_half = smooth(l.mu, fr, geo);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
+                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
           surf += dvec3(T * l.alpha * fr * cos_half * geo * I);
         }
         // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
@@ -99,14 +123,17 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           smooth(l.mu, fr, geo);
           const double t = 1.0 - fr;
           const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp, sdf, visibility);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
+                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
           const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
                               std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
 
           smooth(sg.theta_k, fr, geo);
           const double td = 1.0 - fr;
           const double spk = lobe_sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
-          const double Ik = pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk, sdf, visibility);
+          const double Ik =
+              pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk,
+                            horizon_ratio(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
           const double iso = p.kd * td * td * geo /
                              std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;
           vol += T * (lobe + iso) * p.albedo;

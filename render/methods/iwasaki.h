@@ -4,7 +4,9 @@
 // with the second factor from circular Gaussians (Eq. 11–13): the SG split into g^c(θ)·g^c(φ),
 // each longitudinal lobe g^u(θ_h; γ) replaced by a circular Gaussian in θ_i and merged with
 // the SG's, the smooth factors taken at the product's peak (θ_l, φ_k), and the visibility as
-// the ratio H of the linearised-visibility integral (here: none, or a caller's H).
+// the ratio H of the linearised-visibility integral (here: none, or a caller's H), and the
+// surface's own horizon as one more straight boundary whose H is exact in closed form (T is the
+// average of W above the horizon, so the lobes are cut there too; iwasaki.cpp's horizon_ratio).
 #include <functional>
 #include <span>
 

@@ -2,7 +2,8 @@
 //   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids)
 //   × the circular-Gaussian product of the SG with each longitudinal lobe (Eq. 11, 13)
 //   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
-//   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes).
+//   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
+//   and the surface's horizon as a second linear boundary (closed-form H, the smaller one wins).
 // The same steps as render/methods/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
 // them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) and erf.glsl
 // before it.
@@ -128,12 +129,25 @@ float visibility_h(float sigma_l, float sp, vec3 s) {
   return 1.0 / (1.0 + exp(-(g / spread) * s.x / len));
 }
 
+// --- iwasaki.cpp's horizon_ratio: the surface's horizon as a linear visibility boundary at the
+// lobe's peak; hz = (t·n, n'·n, b·n) of the sample frame.
+float horizon_h(float theta, float phi, float sigma_l, float sp, vec3 hz) {
+  float ct = cos(theta), st = sin(theta), cp = cos(phi), sn = sin(phi);
+  float radial = cp * hz.y + sn * hz.z;
+  float h = st * hz.x + ct * radial;
+  float spread = length(vec2((ct * hz.x - st * radial) * sigma_l, ct * (cp * hz.z - sn * hz.y) * sp));
+  if (spread == 0.0) return h > 0.0 ? 1.0 : (h < 0.0 ? 0.0 : 0.5);
+  return 0.5 * erfc_nr(-h / spread);
+}
+
 // ∫∫ g^c g^c V' of one lobe (Eq. 12–13); `sdf` = (d, ∂d/∂θ, ∂d/∂φ) looked up once per (SG,
-// sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf).
-float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k) {
+// sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf);
+// V' is the horizon's alone, or the smaller of the horizon's and the SDF's (iwasaki.cpp).
+float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
   float i = pair_integral(theta_l, sigma_l, phi_k, sp);
-  if (!u_visibility) return i;
-  return i * visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz));
+  float h = horizon_h(theta_l, phi_k, sigma_l, sp, hz);
+  if (!u_visibility) return i * h;
+  return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
 
 // Outgoing radiance at a cloth point: `corners` are the vertices whose SDF grids are blended
@@ -177,6 +191,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
           float theta_k = fk.theta, phi_k = fk.phi;
           Lobe light = Lobe(1.0, theta_k, sigma_k);
+          vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
           vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
@@ -187,7 +202,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k);
+            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
           }
           // Volume lobe and the isotropic k_d part.
           {
@@ -197,13 +212,13 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
             float sp = sigma_prime(sigma_k, l.mu, theta_k);
             float lobe = (1.0 - p.kd) * l.alpha * tr * tr * geo / max(cos(l.mu) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k);
+                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
             float cos_dk = cos(0.5 * (theta_k - fo.theta));
             float tk = 1.0 - fresnel_dielectric(p.eta, cos_dk * cos_half);
             float geok = cos(theta_k) * cos(theta_k) / max(cos_dk * cos_dk, DENOMINATOR_FLOOR);
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k);
+                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz);
             vol += T * (lobe + iso) * p.albedo;
           }
         }
