@@ -2,6 +2,10 @@
 // measured error meets the target, and tighter targets never choose cheaper settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
 #include "bake/bake_selection.h"
 #include "core/fabric.h"
 
@@ -64,4 +68,30 @@ TEST(LambdaLevelSelection, TighterTargetsNeedAtLeastAsManyLevels) {
   // Finer spacing interpolates better: errors fall along 5, 9, 17 levels.
   EXPECT_GT(tight.tried[0].second, tight.tried[1].second);
   EXPECT_GT(tight.tried[1].second, tight.tried[2].second);
+}
+
+// The paper's per-cloth totals, split by need: a straight thread's samples are all one tilt,
+// so it keeps 1 and the curved thread gets the rest. Against the probe's converged radiance the
+// split must lose nothing on the straight thread and beat the even split at the same total.
+TEST(PaperTangentSamples, StraightThreadKeepsOneAndTheTotalIsThePapers) {
+  const std::map<std::string, int> paper_total = {{"linen_plain", 6},         {"polyester_satin_charmeuse", 16},
+                                                  {"silk_crepe_de_chine", 10}, {"silk_shot", 10},
+                                                  {"velvet", 8}};
+  for (const auto& [name, total] : paper_total) {
+    const Fabric f = preset(name);
+    const auto n = paper_tangent_samples(f);
+    EXPECT_EQ(n[0] + n[1], total) << name;
+    for (int j = 0; j < 2; ++j) {
+      const auto tilts = f.threads[j].curve.sample_tilts(8);
+      const bool straight = std::all_of(tilts.begin(), tilts.end(), [&](double a) { return a == tilts.front(); });
+      if (straight) EXPECT_EQ(n[j], 1) << name << " thread " << j;
+    }
+  }
+  const Fabric satin = preset("polyester_satin_charmeuse");
+  const TangentProbe p = small_probe();
+  const auto split = paper_tangent_samples(satin);
+  const double e_split = tangent_sample_error(satin, split, {16, 16}, p);
+  const double e_even = tangent_sample_error(satin, {8, 8}, {16, 16}, p);
+  std::printf("satin %d+%d: probe error %.4f; 8+8: %.4f\n", split[0], split[1], e_split, e_even);
+  EXPECT_LT(e_split, 0.5 * e_even);
 }

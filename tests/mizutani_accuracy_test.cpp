@@ -38,7 +38,7 @@ const Baked& baked(const std::string& name) {
   if (!slot) {
     slot = std::make_unique<Baked>();
     slot->fabric = load_fabric_preset(name, WEFT_SOURCE_ASSETS "/fabrics");
-    slot->settings.tangent_samples = paper_tangent_samples(name);
+    slot->settings.tangent_samples = paper_tangent_samples(slot->fabric);
     slot->settings.xi_resolution = slot->settings.wo_resolution = slot->settings.wi_resolution = 24;
     slot->settings.lambda_levels = 5;
     slot->tables = bake_weighting_tables(slot->fabric, slot->settings);

@@ -57,7 +57,7 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
   const Fabric fabric = load_fabric_preset(GetParam(), WEFT_SOURCE_ASSETS "/fabrics");
   // Small tables: parity does not need accurate ones, only the same ones on both sides.
   BakeSettings s;
-  s.tangent_samples = paper_tangent_samples(fabric.name);
+  s.tangent_samples = paper_tangent_samples(fabric);
   s.xi_resolution = s.wo_resolution = s.wi_resolution = 12;
   s.lambda_levels = 3;
   const WeightingTables tables = bake_weighting_tables(fabric, s);

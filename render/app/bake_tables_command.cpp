@@ -67,7 +67,7 @@ int run_bake_tables(const BakeTablesArgs& a) {
     throw UsageError("--target-error: must be in (0, 1), got " + std::to_string(a.target_error));
   const Fabric fabric = load_fabric_preset(a.fabric, assets_dir() / "fabrics");
   BakeSettings settings;
-  settings.tangent_samples = paper_tangent_samples(fabric.name);
+  settings.tangent_samples = paper_tangent_samples(fabric);
   std::vector<SelectionRow> rows;
   ProgressBar bar;
   const auto start = std::chrono::steady_clock::now();

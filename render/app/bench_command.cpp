@@ -553,7 +553,7 @@ int run_bench(BenchArgs a) {
     };
     std::string paper_samples;
     for (const auto& [name, f] : c.fabrics) {
-      const auto n = paper_tangent_samples(f.name);
+      const auto n = paper_tangent_samples(f);
       paper_samples += (paper_samples.empty() ? "" : ", ") + std::to_string(n[0]) + "+" + std::to_string(n[1]);
     }
     knob_sweep("tangent samples per thread", "sweep_tangent_samples.csv", paper_samples, texts(a.sweep_tangent_samples),

@@ -32,7 +32,7 @@ struct EvalArgs {
 // settings (tangent samples of its Table 1), then evaluates Eq. 8–13 unoccluded.
 int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
   BakeSettings settings;
-  settings.tangent_samples = paper_tangent_samples(fabric.name);
+  settings.tangent_samples = paper_tangent_samples(fabric);
   const auto t0 = std::chrono::steady_clock::now();
   const WeightingTables tables = bake_weighting_tables(fabric, settings);
   const auto t1 = std::chrono::steady_clock::now();
@@ -53,7 +53,7 @@ int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const 
 // seed 000 Eq. 10), the azimuthal table T_m (Eq. 14), then Eq. 10–16 without visibility.
 int run_mizutani(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
   BakeSettings settings;
-  settings.tangent_samples = paper_tangent_samples(fabric.name);
+  settings.tangent_samples = paper_tangent_samples(fabric);
   const auto t0 = std::chrono::steady_clock::now();
   const WeightingTables tables = bake_weighting_tables(fabric, settings);
   const AzimuthalTable azimuthal = bake_azimuthal_table();

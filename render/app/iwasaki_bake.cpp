@@ -25,7 +25,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     if (o.material != Material::cloth || out.tables.count(o.fabric)) continue;
     const Fabric& fabric = fabrics.at(o.fabric);
     BakeSettings settings;
-    settings.tangent_samples = paper_tangent_samples(fabric.name);  // the paper's settings by default
+    settings.tangent_samples = paper_tangent_samples(fabric);  // the paper's settings by default
     if (opt.target_error > 0) {
       ProgressBar bar("settings " + o.fabric);
       const SelectionResult sel = select_bake_settings(fabric, opt.target_error, settings, [&](double f, std::string_view) {

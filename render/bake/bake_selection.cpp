@@ -1,5 +1,6 @@
 #include "bake/bake_selection.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -135,14 +136,21 @@ Choice select_lambda_levels(const Fabric& fabric, const BakeSettings& base, doub
   return c;
 }
 
-std::array<int, 2> paper_tangent_samples(const std::string& name) {
-  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-  if (starts("linen")) return {3, 3};
-  if (starts("polyester")) return {8, 8};
-  if (starts("silk_shot")) return {5, 5};
-  if (starts("silk")) return {5, 5};
-  if (starts("velvet")) return {4, 4};
-  return {3, 3};
+std::array<int, 2> paper_tangent_samples(const Fabric& fabric) {
+  auto starts = [&](const char* prefix) { return fabric.name.rfind(prefix, 0) == 0; };
+  int total = 6;  // linen, and any fabric the paper does not list
+  if (starts("polyester")) total = 16;
+  else if (starts("silk")) total = 10;  // crepe de chine and shot
+  else if (starts("velvet")) total = 8;
+  auto straight = [&](int j) {
+    const auto& o = fabric.threads[j].curve.offsets_deg();
+    return std::all_of(o.begin(), o.end(), [&](double x) { return x == o.front(); });
+  };
+  const bool s0 = straight(0), s1 = straight(1);
+  if (s0 && s1) return {1, 1};
+  if (s1) return {total - 1, 1};
+  if (s0) return {1, total - 1};
+  return {total / 2, total - total / 2};
 }
 
 SelectionResult select_bake_settings(const Fabric& fabric, double target, const BakeSettings& base,

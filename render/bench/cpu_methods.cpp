@@ -39,7 +39,7 @@ TableBsdf table_bsdf(const Fabric& fabric) {
   auto& t = cache[fabric.name];
   if (!t) {
     BakeSettings s;
-    s.tangent_samples = paper_tangent_samples(fabric.name);
+    s.tangent_samples = paper_tangent_samples(fabric);
     s.xi_resolution = s.wo_resolution = s.wi_resolution = kStressTableGrid;
     t = std::make_unique<WeightingTables>(bake_weighting_tables(fabric, s));
   }

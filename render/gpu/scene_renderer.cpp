@@ -105,7 +105,7 @@ struct SceneRenderer::Object {
 // Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
 // baked for; knob edits keep them (the tables depend on the curves, not on A or γ).
 std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) const {
-  return std::make_unique<ClothBsdf>(fabric, paper_tangent_samples(fabric.name));
+  return std::make_unique<ClothBsdf>(fabric, paper_tangent_samples(fabric));
 }
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
@@ -137,7 +137,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
       if (method == Method::mizutani) {
         obj->bsdf = mizutani_cloth(fabrics[cloth]);
         // Seed 001's W is seed 000's: a bundle's tables serve when baked for the same samples.
-        const auto samples = paper_tangent_samples(fabrics[cloth].name);
+        const auto samples = paper_tangent_samples(fabrics[cloth]);
         const WeightingTables* from_bundle = nullptr;
         if (iwasaki)
           if (auto t = iwasaki->tables.find(fabrics[cloth].name); t != iwasaki->tables.end() && t->second.tangent_samples == samples)
