@@ -21,8 +21,8 @@ static std::string read(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-TEST(Scene, AllFourLoadWithClothFramesFromUVs) {
-  EXPECT_EQ(list_scene_presets(kDir), (std::vector<std::string>{"curtain", "drape", "pillow", "swatch"}));
+TEST(Scene, AllFiveLoadWithClothFramesFromUVs) {
+  EXPECT_EQ(list_scene_presets(kDir), (std::vector<std::string>{"curtain", "drape", "pillow", "swatch", "teapot"}));
   for (const auto& name : list_scene_presets(kDir)) {
     const Scene s = load_scene_preset(name, kDir);
     EXPECT_EQ(s.name, name);

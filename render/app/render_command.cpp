@@ -246,7 +246,7 @@ int run_render(const RenderArgs& a) {
 CommandAction add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* sub = app.add_subcommand("render", "Render one frame of a showroom scene to EXR (+ tone-mapped PNG)");
-  sub->add_option("--scene", a->scene, "Scene name (assets/scenes/NAME.json): swatch, pillow, drape, curtain")
+  sub->add_option("--scene", a->scene, "Scene name (assets/scenes/NAME.json): swatch, pillow, drape, teapot, curtain")
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: the scene's)");
   sub->add_option("--env", a->env, "Environment map name (default: the scene's)");

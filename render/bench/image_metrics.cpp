@@ -23,16 +23,29 @@ void check(const Image& a, const Image& b, const std::vector<PixelKind>& kinds) 
 
 ClothError cloth_error(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds) {
   check(method, reference, kinds);
-  ClothError e;
-  const double mean = cloth_mean(reference, kinds, &e.cloth_pixels);
-  double se = 0.0;
-  for (size_t i = 0; i < kinds.size(); ++i)
-    if (kinds[i] == PixelKind::cloth) {
+  std::vector<bool> cloth(kinds.size());
+  for (size_t i = 0; i < kinds.size(); ++i) cloth[i] = kinds[i] == PixelKind::cloth;
+  const MaskedError m = masked_error(method, reference, cloth);
+  return {m.relative_rmse, m.pixels};
+}
+
+MaskedError masked_error(const Image& method, const Image& reference, const std::vector<bool>& mask) {
+  if (method.width != reference.width || method.height != reference.height || mask.size() != reference.pixels.size())
+    throw std::invalid_argument("masked_error: images or mask of different sizes");
+  MaskedError e;
+  double se = 0.0, sum_r = 0.0, sum_x = 0.0;
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) {
       const glm::dvec3 d = method.pixels[i] - reference.pixels[i];
       se += glm::dot(d, d);
+      sum_r += reference.pixels[i].r + reference.pixels[i].g + reference.pixels[i].b;
+      sum_x += method.pixels[i].r + method.pixels[i].g + method.pixels[i].b;
+      ++e.pixels;
     }
-  if (e.cloth_pixels == 0 || mean <= 0.0) return e;
-  e.relative_rmse = std::sqrt(se / (3.0 * e.cloth_pixels)) / mean;
+  if (e.pixels == 0 || sum_r <= 0.0) return e;
+  const double mean = sum_r / (3.0 * e.pixels);
+  e.relative_rmse = std::sqrt(se / (3.0 * e.pixels)) / mean;
+  e.brightness_ratio = sum_x / sum_r;
   return e;
 }
 

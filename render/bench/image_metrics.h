@@ -15,6 +15,14 @@ struct ClothError {
 // Images of equal size; `kinds` from the reference. Throws std::invalid_argument on a size mismatch.
 ClothError cloth_error(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds);
 
+// The same error over any set of pixels (e.g. a shadow, bench/shadow_mask.h), normalised by the
+// reference's mean over that set; brightness_ratio = mean(x)/mean(r) there (> 1: too light).
+struct MaskedError {
+  double relative_rmse = 0.0, brightness_ratio = 0.0;
+  size_t pixels = 0;
+};
+MaskedError masked_error(const Image& method, const Image& reference, const std::vector<bool>& mask);
+
 // |x−r| / mean(r) per cloth pixel as a colour ramp (black 0 → red 0.5 → yellow ≥ 1), grey
 // for other pixels: an sRGB-ready image (values in [0, 1]) for write_rgb8_png.
 Image error_map(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds);

@@ -6,8 +6,8 @@
 // counts non-finite and negative values, and optionally measures the relative RMSE against
 // the canonical model integrated by quadrature (reference/sg_quadrature.h; for `thin`, its
 // own reference: (1 − α)·canonical + reference/thin_quadrature.h).
-// Not covered here: the thin-occluder case (scene visibility; the scene bench's teapot on
-// `drape`): iwasaki runs here without visibility.
+// Not covered here: the thin-occluder case (scene visibility): the bench measures it on the
+// `teapot` scene's images (bench/shadow_mask.h); iwasaki runs here without visibility.
 #include <string>
 #include <vector>
 
