@@ -7,6 +7,14 @@
 
 namespace weft::gpu {
 
+const char* fullscreen_triangle_vs() {
+  return R"(#version 300 es
+void main() {
+  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
+  gl_Position = vec4(p, 0.0, 1.0);
+})";
+}
+
 namespace {
 
 // Shader info logs name lines as "0:LINE:"; quote that line of the source beside the log.

@@ -7,6 +7,10 @@
 
 namespace weft::gpu {
 
+// Vertex shader of a fullscreen pass: one triangle covering the viewport, drawn with
+// glDrawArrays(GL_TRIANGLES, 0, 3) and no attributes.
+const char* fullscreen_triangle_vs();
+
 class GlProgram {
 public:
   GlProgram(const std::string& vertex_source, const std::string& fragment_source);

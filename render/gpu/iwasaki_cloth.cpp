@@ -7,6 +7,7 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/fabric_uniforms.h"
+#include "gpu/vertex_pass.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -19,9 +20,12 @@ std::string source(std::initializer_list<std::string_view> parts) {
   return s;
 }
 
+// Per pixel: the cloth's own draw. Per vertex: the fragment pass over the vertex texels
+// (vertex_pass.h); the draw that interpolates its results is draw_program_.
 GlProgram make_program(IwasakiCloth::Evaluation e) {
   if (e == IwasakiCloth::Evaluation::per_vertex)
-    return GlProgram(source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
+    return GlProgram(fullscreen_triangle_vs(),
+                     source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
   return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 
@@ -35,6 +39,7 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 
 struct IwasakiCloth::Object {
   GpuMesh mesh;
+  std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
   std::unique_ptr<ClothBsdf> bsdf;
   const WeightingTablesTexture* tables = nullptr;
   // Occluded objects: the bundle's PCA and the mesh (vertex frames), and the per-(vertex, SG)
@@ -47,6 +52,8 @@ struct IwasakiCloth::Object {
 
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
     : data_(std::move(data)), evaluation_(evaluation), program_(make_program(evaluation)) {
+  if (evaluation_ == Evaluation::per_vertex)
+    draw_program_ = std::make_unique<GlProgram>(source({"iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
@@ -64,24 +71,22 @@ const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
 size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
   const auto vis = data_->visibility.find(scene_index);
   std::unique_ptr<Object> o;
-  if (vis == data_->visibility.end()) {
+  const bool per_vertex = evaluation_ == Evaluation::per_vertex;
+  if (vis == data_->visibility.end() || per_vertex) {
     o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
-  } else {
+    if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
+  }
+  if (vis != data_->visibility.end()) {
     if (vis->second.vertex_count() != mesh.positions.size())
       throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
                      std::to_string(vis->second.vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
     if (!kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
-    std::vector<glm::vec3> corners, bary;
-    if (evaluation_ == Evaluation::per_vertex) {  // each vertex reads its own SDF grid, weight 1
-      corners.resize(mesh.positions.size());
-      for (size_t i = 0; i < corners.size(); ++i) corners[i] = glm::vec3(float(i));
-      bary.assign(mesh.positions.size(), glm::vec3(1, 0, 0));
-      o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
-    } else {  // drawn de-indexed: every corner carries the triangle's three vertices
+    if (!per_vertex) {  // drawn de-indexed: every corner carries the triangle's three vertices
+      std::vector<glm::vec3> corners, bary;
       o = std::make_unique<Object>(Object{GpuMesh(deindexed(mesh, corners, bary)), nullptr, nullptr, nullptr});
+      o->mesh.add_attribute(4, corners);
+      o->mesh.add_attribute(5, bary);
     }
-    o->mesh.add_attribute(4, corners);
-    o->mesh.add_attribute(5, bary);
     o->visibility = &vis->second;
     o->source = &mesh;
     o->sg_visibility = std::make_unique<SgVisibilityTexture>();
@@ -149,6 +154,14 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   if (kappa_) kappa_->bind(program_, 3);
   if (!o.sg_visibility) glUniform1i(program_.uniform("u_sg_visibility"), 2);
   if (!kappa_) glUniform1i(program_.uniform("u_kappa"), 3);
+  if (!o.pass) {
+    o.mesh.draw();
+    return;
+  }
+  o.pass->run(program_, 4);
+  draw_program_->use();
+  glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  o.pass->bind_result(*draw_program_, 0);
   o.mesh.draw();
 }
 

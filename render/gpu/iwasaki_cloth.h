@@ -1,9 +1,10 @@
 #pragma once
-// Cloth drawn with seed 000's method (shaders/iwasaki.glsl, called from iwasaki.frag or iwasaki_vertex.vert) from a bundle's baked
-// data: per fabric the weighting-table textures, per occluded object the SDF atlas and a
-// de-indexed mesh, κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
+// Cloth drawn with seed 000's method (shaders/iwasaki.glsl, called from iwasaki.frag or iwasaki_vertex_pass.frag) from a bundle's baked
+// data: per fabric the weighting-table textures, per occluded object the per-SG visibility
+// (and, per pixel, a de-indexed mesh), κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
 // cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
-// interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in the vertex stage).
+// interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in a fragment pass with one texel
+// per vertex, vertex_pass.h).
 #include <map>
 #include <memory>
 #include <string>
@@ -37,7 +38,8 @@ private:
   const WeightingTablesTexture& tables_for(const Fabric& fabric);
   std::shared_ptr<const IwasakiBundleData> data_;
   Evaluation evaluation_;
-  GlProgram program_;
+  GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
+  std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
   std::unique_ptr<KappaTexture> kappa_;
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;

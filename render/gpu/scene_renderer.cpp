@@ -47,11 +47,6 @@ std::string program_source(const std::vector<std::string_view>& parts) {
   return s;
 }
 
-const char* kFullscreenVs = R"(#version 300 es
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-  gl_Position = vec4(p, 0.0, 1.0);
-})";
 }  // namespace
 
 Method parse_method(const std::string& name) {
@@ -124,7 +119,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   if (!iwasaki_) cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
   if (info(method).see_through)
     background_program_ =
-        std::make_unique<GlProgram>(kFullscreenVs, program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
+        std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -289,7 +284,7 @@ Image read_linear_image(int width, int height) {
   return img;
 }
 
-ToneMapper::ToneMapper() : program_(kFullscreenVs, shader_preamble() + std::string(shaders::source("tonemap.frag"))) {}
+ToneMapper::ToneMapper() : program_(fullscreen_triangle_vs(), shader_preamble() + std::string(shaders::source("tonemap.frag"))) {}
 
 void ToneMapper::draw(GLuint linear_texture, float exposure) const {
   program_.use();

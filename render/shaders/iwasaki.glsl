@@ -7,7 +7,8 @@
 // The same steps as render/methods/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
 // them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) and erf.glsl
 // before it.
-// Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex.vert).
+// Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
+// fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
 #define MAX_SGS 40
 #define MAX_TABLES 512
 const float HALF_PI = 1.57079632679490;

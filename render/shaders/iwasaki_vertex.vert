@@ -1,16 +1,13 @@
-// Method `iwasaki_vertex`: seed 000 evaluated once per mesh vertex (iwasaki.glsl) and the
-// radiance interpolated across each triangle (Gouraud). Cheap where pixels far outnumber
-// vertices; blurs what varies faster than the mesh (sharp highlights, shadow edges). The
-// vertex's own SDF grid, weight 1: a_corners = (i, i, i), a_bary = (1, 0, 0).
+// Method `iwasaki_vertex`, step 2: seed 000's radiance at each mesh vertex, computed by the
+// fragment pass iwasaki_vertex_pass.frag (texel (i mod W, i div W) for vertex i), interpolated
+// across each triangle (Gouraud). Cheap where pixels far outnumber vertices; blurs what varies
+// faster than the mesh (sharp highlights, shadow edges).
 layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec3 a_warp;
-layout(location = 3) in vec3 a_colour;
-layout(location = 4) in vec3 a_corners;
-layout(location = 5) in vec3 a_bary;
 uniform mat4 u_view_projection;
+uniform highp sampler2D u_vertex_radiance;
+uniform int u_vertex_width;
 out vec3 v_radiance;
 void main() {
-  v_radiance = iwasaki_radiance(a_position, a_normal, a_warp, ivec3(a_corners + 0.5), a_bary);
+  v_radiance = texelFetch(u_vertex_radiance, ivec2(gl_VertexID % u_vertex_width, gl_VertexID / u_vertex_width), 0).rgb;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
