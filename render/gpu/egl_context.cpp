@@ -2,7 +2,9 @@
 
 #include <GLES3/gl3.h>
 
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace weft::gpu {
@@ -157,6 +159,14 @@ bool EglContext::has_gl_extension(const char* name) const {
   for (GLint i = 0; i < n; ++i)
     if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i)), name) == 0) return true;
   return false;
+}
+
+void check_gl(const char* what) {
+  if (const GLenum e = glGetError(); e != GL_NO_ERROR) {
+    char code[16];
+    std::snprintf(code, sizeof code, "%04x", e);
+    throw GpuError(std::string(what) + ": GL error 0x" + code);
+  }
 }
 
 }  // namespace weft::gpu

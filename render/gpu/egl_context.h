@@ -18,6 +18,9 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// Throws GpuError "<what>: GL error 0x…" when the GL error flag is set (after uploads).
+void check_gl(const char* what);
+
 class EglContext {
 public:
   // Headless: no window system, no display. Throws GpuError saying what is missing.

@@ -38,6 +38,7 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 }  // namespace
 
 struct IwasakiCloth::Object {
+  explicit Object(GpuMesh m) : mesh(std::move(m)) {}
   GpuMesh mesh;
   std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
   std::unique_ptr<ClothBsdf> bsdf;
@@ -69,25 +70,25 @@ const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
 }
 
 size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
-  const auto vis = data_->visibility.find(scene_index);
-  std::unique_ptr<Object> o;
+  const auto found = data_->visibility.find(scene_index);
+  const ObjectVisibility* vis = found == data_->visibility.end() ? nullptr : &found->second;
+  if (vis && vis->vertex_count() != mesh.positions.size())
+    throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
+                   std::to_string(vis->vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
+  if (vis && !kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
   const bool per_vertex = evaluation_ == Evaluation::per_vertex;
-  if (vis == data_->visibility.end() || per_vertex) {
-    o = std::make_unique<Object>(Object{GpuMesh(mesh), nullptr, nullptr, nullptr});
-    if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
+  std::unique_ptr<Object> o;
+  if (vis && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices
+    std::vector<glm::vec3> corners, bary;
+    o = std::make_unique<Object>(GpuMesh(deindexed(mesh, corners, bary)));
+    o->mesh.add_attribute(4, corners);
+    o->mesh.add_attribute(5, bary);
+  } else {
+    o = std::make_unique<Object>(GpuMesh(mesh));
   }
-  if (vis != data_->visibility.end()) {
-    if (vis->second.vertex_count() != mesh.positions.size())
-      throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
-                     std::to_string(vis->second.vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
-    if (!kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
-    if (!per_vertex) {  // drawn de-indexed: every corner carries the triangle's three vertices
-      std::vector<glm::vec3> corners, bary;
-      o = std::make_unique<Object>(Object{GpuMesh(deindexed(mesh, corners, bary)), nullptr, nullptr, nullptr});
-      o->mesh.add_attribute(4, corners);
-      o->mesh.add_attribute(5, bary);
-    }
-    o->visibility = &vis->second;
+  if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
+  if (vis) {
+    o->visibility = vis;
     o->source = &mesh;
     o->sg_visibility = std::make_unique<SgVisibilityTexture>();
   }

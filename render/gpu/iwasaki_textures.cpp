@@ -1,7 +1,6 @@
 #include "gpu/iwasaki_textures.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -25,14 +24,6 @@ void linear_clamped(GLenum target) {
   glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-}
-void check(const char* what) {
-  if (const GLenum e = glGetError(); e != GL_NO_ERROR)
-    throw GpuError(std::string(what) + ": GL error 0x" + [e] {
-      char b[16];
-      std::snprintf(b, sizeof b, "%04x", e);
-      return std::string(b);
-    }());
 }
 }  // namespace
 
@@ -73,7 +64,7 @@ WeightingTablesTexture::WeightingTablesTexture(const WeightingTables& t) : table
   };
   upload(u_, t.xi_grid.n, true);
   upload(v_, t.wo_grid.n, false);
-  check("uploading the weighting tables");
+  check_gl("uploading the weighting tables");
 }
 
 void WeightingTablesTexture::bind(const GlProgram& p, int unit) const {
@@ -113,7 +104,7 @@ void SgVisibilityTexture::upload(const SgVisibility& vis) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  check("uploading the per-SG visibility");
+  check_gl("uploading the per-SG visibility");
 }
 
 void SgVisibilityTexture::bind(const GlProgram& p, int unit) const {
@@ -130,7 +121,7 @@ KappaTexture::KappaTexture(const SigmoidGainTable& t) : spec_(t.spec()) {
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, spec_.beta_count, spec_.sigma_prime_count, spec_.sigma_l_count, 0, GL_RED,
                GL_FLOAT, t.normalized_gains().data());
   linear_clamped(GL_TEXTURE_3D);
-  check("uploading the kappa table");
+  check_gl("uploading the kappa table");
 }
 
 void KappaTexture::bind(const GlProgram& p, int unit) const {

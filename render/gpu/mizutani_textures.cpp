@@ -84,7 +84,7 @@ MizutaniTextures::MizutaniTextures(const WeightingTables& w, const AzimuthalTabl
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, s.phi_o_nodes, s.phi_k_nodes, 3 * s.lambda_nodes, 0, GL_RGBA, GL_FLOAT,
                texels.data());
-  if (glGetError() != GL_NO_ERROR) throw GpuError("mizutani: uploading the tables failed");
+  check_gl("mizutani: uploading the tables");
 }
 
 MizutaniTextures::~MizutaniTextures() {

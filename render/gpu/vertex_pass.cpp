@@ -1,7 +1,6 @@
 #include "gpu/vertex_pass.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,13 +20,6 @@ void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
-void check(const char* what) {
-  if (const GLenum e = glGetError(); e != GL_NO_ERROR) {
-    char code[16];
-    std::snprintf(code, sizeof code, "%04x", e);
-    throw GpuError(std::string(what) + ": GL error 0x" + code);
-  }
-}
 }  // namespace
 
 VertexPass::VertexPass(const TriangleMesh& mesh)
@@ -45,7 +37,7 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
   upload(normal_, mesh.normals, width_, height_);
   upload(warp_, mesh.warps, width_, height_);
   target_ = std::make_unique<OffscreenTarget>(width_, height_, /*full_float=*/true);
-  check("uploading the per-vertex pass inputs");
+  check_gl("uploading the per-vertex pass inputs");
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit) const {
