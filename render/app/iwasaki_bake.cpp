@@ -62,7 +62,8 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 
   t0 = std::chrono::steady_clock::now();
   for (size_t i = 0; i < scene.objects.size() && opt.bake_visibility; ++i) {
-    if (scene.objects[i].material != Material::cloth) continue;
+    // Every object: the cloth's for seed 000, the floor's and occluders' for their Lambertian
+    // shading under the same visibility (methods/lambert_visibility.h).
     ProgressBar bar("visibility " + scene.objects[i].name);
     SceneVisibilityStats st;
     auto v = bake_object_visibility(scene, i, opt.visibility, [&](size_t d, size_t n) {

@@ -1,7 +1,7 @@
 #pragma once
 // The seed 000 stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
-// weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded cloth
-// object, and κ when any object is occluded. Progress bars on stderr, a summary on request.
+// weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded object
+// (cloth, floor, occluders), and κ when any object is occluded. Progress bars on stderr, a summary on request.
 #include <array>
 #include <map>
 #include <string>

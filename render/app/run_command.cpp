@@ -37,6 +37,7 @@
 #include "panel/panel_config.h"
 #include "panel/simulated_panel.h"
 #include "app/kiosk_light_probe.h"
+#include "app/latest_request_worker.h"
 
 namespace weft {
 namespace {
@@ -282,6 +283,24 @@ int run_kiosk(const RunArgs& a) {
   input::AppearanceState knobs;
   uint64_t knob_version = ~0ull;
   float light_rotation = -1;
+  // Lighting changes after the first frame are prepared off the render thread; the frame keeps
+  // the light it has until the new one is ready (relight, then take() in the loop).
+  std::atomic<long> lighting_prepared{0};
+  std::atomic<double> last_prepare_ms{0};
+  LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting> lighting([&](const SgLighting& sgs) {
+    const auto t0 = Clock::now();
+    auto prepared = renderer.prepare_lighting(sgs);
+    last_prepare_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    ++lighting_prepared;
+    return prepared;
+  });
+  bool first_frame_shown = false;
+  auto relight = [&](const SgLighting& sgs) {
+    if (first_frame_shown)
+      lighting.request(sgs);
+    else
+      renderer.set_lighting(sgs);
+  };
   auto apply_knob_state = [&](const input::AppearanceState& s) {
     const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
     try {
@@ -290,14 +309,14 @@ int run_kiosk(const RunArgs& a) {
       log_line(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
     }
     if (s.env_rotation_deg != light_rotation) {
-      renderer.set_lighting(rotated_about_z(room_light, s.env_rotation_deg));
+      relight(rotated_about_z(room_light, s.env_rotation_deg));
       light_rotation = s.env_rotation_deg;
     }
   };
   auto poll_light = [&]() -> bool {
     if (!probe || !probe->acquire()) return false;
     room_light = probe->lighting();
-    renderer.set_lighting(rotated_about_z(room_light, std::max(light_rotation, 0.0f)));
+    relight(rotated_about_z(room_light, std::max(light_rotation, 0.0f)));
     return true;
   };
   auto poll_knobs = [&]() -> bool {
@@ -329,6 +348,7 @@ int run_kiosk(const RunArgs& a) {
     push_recent(since_stats, ms);
   };
   draw(0);
+  first_frame_shown = true;
   const double boot_ms = std::chrono::duration<double, std::milli>(Clock::now() - boot).count();
   const std::string where = kms ? kms->description() : "headless";
   char line[256];
@@ -365,7 +385,16 @@ int run_kiosk(const RunArgs& a) {
     const double turn = a.turntable * std::chrono::duration<double>(tick_start - loop_start).count();
     const int64_t report_ns = last_report_ns.load();
     const bool knobs_changed = poll_knobs();
-    const bool light_changed = poll_light();
+    poll_light();
+    bool light_changed = false;
+    try {
+      if (auto prepared = lighting.take()) {
+        renderer.set_lighting(*prepared);
+        light_changed = true;
+      }
+    } catch (const std::exception& e) {
+      log_line(std::string("lighting: ") + e.what() + "; keeping the light shown");
+    }
     const bool view_changed = std::abs(turn - shown_turn) > 1e-4;
     if (knobs_changed || light_changed || view_changed) {
       draw(turn);
@@ -378,9 +407,10 @@ int run_kiosk(const RunArgs& a) {
     if (a.stats_every > 0 && tick_start - last_stats >= std::chrono::duration<double>(a.stats_every)) {
       std::snprintf(line, sizeof line,
                     "stats: %ld ticks, %ld frames drawn, median %.2f ms/frame over the last %zu, RSS %ld KiB, "
-                    "%llu light-probe updates",
+                    "%llu light-probe updates, lighting prepared off-thread %ld times (last %.0f ms)",
                     ticks, drawn, median(since_stats), since_stats.size(), rss_kib(),
-                    static_cast<unsigned long long>(probe ? probe->updates() : 0));
+                    static_cast<unsigned long long>(probe ? probe->updates() : 0), lighting_prepared.load(),
+                    last_prepare_ms.load());
       log_line(line);
       last_stats = tick_start;
       since_stats.clear();

@@ -160,7 +160,7 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     if (o.resolution < 2 || o.resolution > 1024 || o.terms < 0 || o.terms > 1024)
       throw bad(r, VI, "entry '" + key + "': resolution or terms out of range");
     const auto vc = vertex_counts.find(object);
-    if (vc == vertex_counts.end()) throw bad(r, VI, "entry '" + key + "': no such cloth object in the scene");
+    if (vc == vertex_counts.end()) throw bad(r, VI, "entry '" + key + "': no such object in the scene");
     const size_t cells = size_t(o.resolution) * o.resolution;
     o.mean = floats(r, iwasaki_section::vis(object, "pca_mean"), cells);
     o.basis = floats(r, iwasaki_section::vis(object, "pca_basis"), cells * o.terms);

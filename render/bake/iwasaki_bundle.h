@@ -1,7 +1,7 @@
 #pragma once
 // Seed 000's baked data in a bundle (BUNDLE_FORMAT.md, "Seed 000 sections"): the weighting
 // tables T of each baked fabric (SVD factors), the per-vertex visibility SDF of each occluded
-// cloth object as PCA (mean, basis, coefficients), and the sigmoid gain table κ. Written by
+// object (cloth, floor, occluder) as PCA (mean, basis, coefficients), and the sigmoid gain table κ. Written by
 // `weft bake` beside the scene sections, read by `weft run` / `weft render --method iwasaki`.
 #include <map>
 #include <optional>
@@ -26,7 +26,7 @@ std::string vis(size_t object, const char* part);         // "vis/<i>/pca_mean" 
                                                           // "pca_coeffs" [vertices, terms]
 }  // namespace iwasaki_section
 
-// One cloth object's visibility: d_v = mean + basis · c_v on a resolution² grid over (θ, φ) of
+// One object's visibility: d_v = mean + basis · c_v on a resolution² grid over (θ, φ) of
 // the vertex's thread-1 frame (render/bake/visibility.md).
 struct ObjectVisibility {
   int resolution = 0;                // cells = resolution², row-major [θ][φ]

@@ -1,5 +1,6 @@
 #pragma once
-// Seed 000 §3.2's visibility bake for a whole scene: for every vertex of a cloth object, binary
+// Seed 000 §3.2's visibility bake for a whole scene: for every vertex of an object (cloth, floor,
+// occluder), binary
 // visibility over its hemisphere by ray casting against the scene (Embree), the signed distance
 // function d(θ, φ) (visibility_sdf.h), and PCA over the object's vertices (visibility_pca.h).
 // An object none of whose rays is blocked by anything stores nothing: it is unoccluded.
@@ -28,7 +29,7 @@ struct SceneVisibilityStats {
   double seconds = 0;
 };
 
-// Bakes object `object` (a cloth mesh with warps). Empty when no ray is blocked.
+// Bakes object `object` (any mesh with warps: finish_mesh gives every mesh its frames). Empty when no ray is blocked.
 // `progress(done, total)` counts vertices.
 std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_t object,
                                                        const SceneVisibilityOptions& options,

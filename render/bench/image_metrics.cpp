@@ -7,12 +7,11 @@
 namespace weft::bench {
 
 namespace {
-double cloth_mean(const Image& r, const std::vector<PixelKind>& kinds, size_t* count) {
+double cloth_mean(const Image& r, const std::vector<PixelKind>& kinds) {
   double sum = 0.0;
   size_t n = 0;
   for (size_t i = 0; i < kinds.size(); ++i)
     if (kinds[i] == PixelKind::cloth) sum += r.pixels[i].r + r.pixels[i].g + r.pixels[i].b, ++n;
-  if (count) *count = n;
   return n ? sum / (3.0 * n) : 0.0;
 }
 void check(const Image& a, const Image& b, const std::vector<PixelKind>& kinds) {
@@ -51,7 +50,7 @@ MaskedError masked_error(const Image& method, const Image& reference, const std:
 
 Image error_map(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds) {
   check(method, reference, kinds);
-  const double mean = cloth_mean(reference, kinds, nullptr);
+  const double mean = cloth_mean(reference, kinds);
   Image m(reference.width, reference.height);
   for (size_t i = 0; i < kinds.size(); ++i) {
     if (kinds[i] != PixelKind::cloth || mean <= 0.0) {

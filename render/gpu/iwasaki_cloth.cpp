@@ -29,6 +29,14 @@ GlProgram make_program(IwasakiCloth::Evaluation e) {
   return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 
+// The SGs a draw shades with: a fit's empty lobes (zero amplitude) do no work.
+SgLighting shaded(const SgLighting& sgs) {
+  SgLighting out;
+  for (const auto& g : sgs)
+    if (std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0) out.push_back(g);
+  return out;
+}
+
 bool same_lighting(const SgLighting& a, const SgLighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
@@ -97,6 +105,22 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   return objects_.size() - 1;
 }
 
+std::optional<SgVisibility> IwasakiCloth::visibility_for(size_t handle, const SgLighting& sgs) const {
+  const Object& o = *objects_.at(handle);
+  if (!o.visibility) return std::nullopt;
+  return SgVisibility::compute(*o.visibility, *o.source, shaded(sgs));
+}
+
+void IwasakiCloth::set_visibility(size_t handle, const SgLighting& sgs, const SgVisibility& values) {
+  Object& o = *objects_.at(handle);
+  if (!o.visibility) return;
+  const SgLighting drawn = shaded(sgs);
+  if (values.vertices != o.visibility->vertex_count() || values.sgs != int(drawn.size()))
+    throw GpuError("method iwasaki: visibility computed for another object or lighting");
+  o.sg_visibility->upload(values);
+  o.computed_for = drawn;
+}
+
 bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->visibility != nullptr; }
 
 void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
@@ -123,10 +147,8 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
   std::vector<float> axes, amplitudes, sigmas, level_w;
   std::vector<GLint> levels;
-  SgLighting drawn;
-  for (const auto& g : sgs) {
-    if (!(std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0)) continue;  // a fit's empty lobe: no work
-    drawn.push_back(g);
+  const SgLighting drawn = shaded(sgs);
+  for (const auto& g : drawn) {
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
     sigmas.push_back(float(sg_bandwidth(g.sharpness)));

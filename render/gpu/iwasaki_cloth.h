@@ -7,6 +7,7 @@
 // per vertex, vertex_pass.h).
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "gpu/gl_program.h"
 #include "gpu/gpu_mesh.h"
 #include "gpu/iwasaki_textures.h"
+#include "methods/iwasaki_visibility.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
@@ -30,7 +32,13 @@ public:
   // Scene object `scene_index` (cloth); returns the handle draw() takes.
   size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric);
   void set_fabric(size_t handle, const Fabric& fabric);
+  // draw() computes the object's per-(vertex, SG) visibility itself when the lighting's axes or
+  // sharpnesses changed since it was last set; a kiosk computes it off the render thread instead:
+  // visibility_for is safe on any thread (it reads only what add_object fixed), set_visibility
+  // uploads its result (GL thread). Both take the lighting as given to draw().
   void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) const;
+  std::optional<SgVisibility> visibility_for(size_t handle, const SgLighting& sgs) const;  // empty: unoccluded
+  void set_visibility(size_t handle, const SgLighting& sgs, const SgVisibility& values);
   bool has_visibility(size_t handle) const;
 
 private:

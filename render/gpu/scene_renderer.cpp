@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 #include "gpu/egl_context.h"
@@ -10,6 +11,7 @@
 #include "gpu/fabric_uniforms.h"
 #include "gpu/method_uniforms.h"
 #include "gpu/mizutani_textures.h"
+#include "methods/lambert_visibility.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -95,6 +97,7 @@ struct SceneRenderer::Object {
   }
   std::unique_ptr<MizutaniTextures> mizutani;  // cloth under Method::mizutani
   size_t iwasaki = 0;                           // handle in iwasaki_ (Method::iwasaki(_vertex) cloth)
+  const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
 };
 
 // Method::mizutani runs with the tangent samples of seed 000 Table 1, which its tables are
@@ -105,7 +108,7 @@ std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) c
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
                              std::shared_ptr<const IwasakiBundleData> iwasaki)
-    : method_(method), tangent_samples_(tangent_samples) {
+    : method_(method), bundle_(iwasaki), tangent_samples_(tangent_samples) {
   if (uses_seed000_tables(method))
     iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki), method == Method::iwasaki_vertex
                                                                       ? IwasakiCloth::Evaluation::per_vertex
@@ -124,7 +127,16 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}, nullptr, 0});
+    auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}, nullptr, 0, nullptr});
+    if (o.material != Material::cloth && bundle_) {
+      const auto v = bundle_->visibility.find(i);
+      if (v != bundle_->visibility.end()) {
+        if (v->second.vertex_count() != o.mesh.positions.size() || o.mesh.warps.size() != o.mesh.positions.size())
+          throw GpuError("the visibility of object '" + o.name + "' does not fit its mesh");
+        if (!bundle_->kappa) throw GpuError("visibility without a kappa table");
+        obj->lambert_visibility = &v->second;
+      }
+    }
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->set(fabrics[cloth], tangent_samples_);
@@ -165,21 +177,49 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
 }
 
-void SceneRenderer::set_lighting(const SgLighting& sgs) {
+SceneRenderer::PreparedLighting SceneRenderer::prepare_lighting(const SgLighting& sgs) const {
   if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
-  sgs_ = sgs;
-  // Lambertian surfaces: SG irradiance per vertex, once per lighting change.
-  for (auto& o : objects_) {
-    if (o->bsdf) continue;
-    const auto& m = o->source->mesh;
-    std::vector<glm::vec3> e(m.positions.size());
-    for (size_t i = 0; i < e.size(); ++i) {
-      glm::dvec3 sum(0.0);
-      for (const auto& g : sgs_) sum += irradiance(g, m.normals[i]);
-      e[i] = glm::vec3(sum);
+  PreparedLighting out;
+  out.sgs = sgs;
+  out.irradiance.resize(objects_.size());
+  out.cloth.resize(objects_.size());
+  const SigmoidGainTable* kappa = bundle_ && bundle_->kappa ? &*bundle_->kappa : nullptr;
+  for (size_t k = 0; k < objects_.size(); ++k) {
+    const Object& o = *objects_[k];
+    if (o.source->material == Material::cloth) {
+      if (iwasaki_) out.cloth[k] = iwasaki_->visibility_for(o.iwasaki, sgs);
+      continue;
     }
-    o->mesh.set_vertex_colours(e);
+    const auto& m = o.source->mesh;
+    std::optional<SgVisibility> vis;
+    if (o.lambert_visibility) vis = SgVisibility::compute(*o.lambert_visibility, m, sgs);
+    std::vector<glm::vec3>& e = out.irradiance[k];
+    e.resize(m.positions.size());
+    for (size_t i = 0; i < e.size(); ++i) {
+      const SurfaceFrame f = vis ? SurfaceFrame::from_normal_warp(m.normals[i], m.warps[i]) : SurfaceFrame{m.normals[i], {}, {}};
+      e[i] = glm::vec3(lambert_irradiance(sgs, f, vis ? &*vis : nullptr, i, kappa));
+    }
   }
+  return out;
+}
+
+void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
+  if (lighting.irradiance.size() != objects_.size() || lighting.cloth.size() != objects_.size())
+    throw GpuError("lighting prepared for another scene");
+  sgs_ = lighting.sgs;
+  for (size_t k = 0; k < objects_.size(); ++k) {
+    Object& o = *objects_[k];
+    if (o.source->material != Material::cloth)
+      o.mesh.set_vertex_colours(lighting.irradiance[k]);
+    else if (iwasaki_ && lighting.cloth[k])
+      iwasaki_->set_visibility(o.iwasaki, sgs_, *lighting.cloth[k]);
+  }
+}
+
+void SceneRenderer::set_lighting(const SgLighting& sgs) { set_lighting(prepare_lighting(sgs)); }
+
+size_t SceneRenderer::shadowed_lambertian_objects() const {
+  return size_t(std::count_if(objects_.begin(), objects_.end(), [](const auto& o) { return o->lambert_visibility != nullptr; }));
 }
 
 void SceneRenderer::draw(const Camera& camera, int width, int height) {

@@ -1,8 +1,10 @@
 #pragma once
 // Draws a showroom scene with one runtime method into a linear float target: cloth with the
-// method's shader, Lambertian surfaces with their SG irradiance (computed per vertex on the
-// CPU whenever the lighting changes, not per pixel per frame).
+// method's shader, Lambertian surfaces (floor, occluders) with their SG irradiance, shadowed by
+// the bundle's baked visibility when it has theirs (computed per vertex on the CPU whenever the
+// lighting changes, not per pixel per frame).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,7 +54,21 @@ public:
                 std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
 
-  void set_lighting(const SgLighting& sgs);
+  // A lighting change's CPU work: each Lambertian object's per-vertex irradiance (with the
+  // bundle's visibility where it has one: methods/lambert_visibility.h) and each occluded cloth's
+  // per-(vertex, SG) visibility. prepare_lighting reads only what the constructor fixed, so it may
+  // run on another thread while this renderer draws (the kiosk does: a moving probe or the
+  // rotation knob must not stall frames); set_lighting(PreparedLighting) uploads it (GL thread).
+  struct PreparedLighting {
+    SgLighting sgs;
+    std::vector<std::vector<glm::vec3>> irradiance;     // per object; empty for cloth
+    std::vector<std::optional<SgVisibility>> cloth;      // per object; set for occluded seed 000 cloth
+  };
+  PreparedLighting prepare_lighting(const SgLighting& sgs) const;  // throws GpuError for > 40 SGs
+  void set_lighting(const PreparedLighting& lighting);
+  void set_lighting(const SgLighting& sgs);  // both steps at once
+  // Lambertian objects shaded with the bundle's visibility (tests, logs).
+  size_t shadowed_lambertian_objects() const;
   // Knob edits: new thread albedo / gloss for a cloth object, no re-bake.
   void set_fabric(size_t cloth_index, const Fabric& fabric);
   // Renders into the currently bound framebuffer of size width × height.
@@ -64,6 +80,7 @@ private:
   std::unique_ptr<GlProgram> cloth_program_, lambert_program_, background_program_;
   Method method_;
   std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki(_vertex) only
+  std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
   SgLighting sgs_;
   int tangent_samples_;
   // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).

@@ -89,10 +89,11 @@ void compute_vertex_normals(TriangleMesh& mesh) {
 }
 
 void compute_warp_directions(TriangleMesh& mesh) {
-  if (mesh.uvs.size() != mesh.positions.size() || mesh.normals.size() != mesh.positions.size())
-    throw std::logic_error("compute_warp_directions: needs UVs and normals");
+  if (mesh.normals.size() != mesh.positions.size() || (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()))
+    throw std::logic_error("compute_warp_directions: needs normals (and UVs for every vertex, if any)");
   std::vector<glm::dvec3> dpdu(mesh.positions.size(), glm::dvec3(0.0));
   for (const auto& t : mesh.triangles) {
+    if (mesh.uvs.empty()) break;  // no UVs: every vertex takes the fixed tangent below
     const glm::dvec3 e1 = mesh.positions[t[1]] - mesh.positions[t[0]];
     const glm::dvec3 e2 = mesh.positions[t[2]] - mesh.positions[t[0]];
     const glm::dvec2 d1 = mesh.uvs[t[1]] - mesh.uvs[t[0]], d2 = mesh.uvs[t[2]] - mesh.uvs[t[0]];
@@ -109,7 +110,8 @@ void compute_warp_directions(TriangleMesh& mesh) {
     const glm::dvec3& n = mesh.normals[i];
     glm::dvec3 w = dpdu[i] - glm::dot(dpdu[i], n) * n;
     double l = glm::length(w);
-    if (!(l > 1e-12)) {  // no usable dP/du here: any tangent keeps the frame valid
+    if (!(l > 1e-12)) {  // no usable dP/du here: any tangent keeps the frame valid (the visibility
+                         // bake and its runtime lookup both read the frame from these warps)
       w = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
       l = glm::length(w);
     }
@@ -125,7 +127,7 @@ MeshRepairReport finish_mesh(TriangleMesh& mesh, bool is_cloth, const std::strin
     if (!(l > 0.0)) throw MeshError("mesh '" + name + "': a vertex normal has zero length");
     n /= l;
   }
-  if (!mesh.uvs.empty()) compute_warp_directions(mesh);
+  compute_warp_directions(mesh);
   return report;
 }
 

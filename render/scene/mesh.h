@@ -15,7 +15,7 @@ struct TriangleMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // per vertex, unit; filled by finish_mesh when empty
   std::vector<glm::dvec2> uvs;      // per vertex; required for cloth
-  std::vector<glm::dvec3> warps;    // per vertex, unit, ⟂ normal; filled by finish_mesh for cloth
+  std::vector<glm::dvec3> warps;    // per vertex, unit, ⟂ normal; filled by finish_mesh
   std::vector<std::array<uint32_t, 3>> triangles;
 };
 
@@ -41,10 +41,12 @@ MeshRepairReport repair_mesh(TriangleMesh& mesh, bool needs_uvs, const std::stri
 // Area-weighted vertex normals (consistently oriented input assumed).
 void compute_vertex_normals(TriangleMesh& mesh);
 // Warp field: per triangle dP/du from its UVs, accumulated per vertex by area, then
-// orthogonalised against the vertex normal (Gram–Schmidt) and normalised. Requires UVs/normals.
+// orthogonalised against the vertex normal (Gram–Schmidt) and normalised. Requires normals; a
+// mesh without UVs (occluders, floors) gets a fixed tangent, (1,0,0) × n (or (0,1,0) × n near ±x):
+// it only has to give every vertex a frame, which the visibility bake and its lookup share.
 void compute_warp_directions(TriangleMesh& mesh);
 
-// repair_mesh, then normals (if absent) and warps (if UVs present). Returns the repair report.
+// repair_mesh, then normals (if absent) and warps. Returns the repair report.
 MeshRepairReport finish_mesh(TriangleMesh& mesh, bool is_cloth, const std::string& name);
 
 // Merges vertices closer than `tolerance` (and, when UVs exist, with equal UVs), remapping

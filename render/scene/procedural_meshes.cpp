@@ -47,6 +47,45 @@ TriangleMesh quad_mesh(double size_x, double size_y) {
   return m;
 }
 
+std::vector<double> graded_axis(double size, double fine_size, double spacing, double growth) {
+  const double half = 0.5 * size, fine_half = std::min(0.5 * fine_size, half);
+  std::vector<double> right;  // ticks > 0 up to the edge, the fine centre's first
+  const int fine_cells = std::max(1, int(std::ceil(fine_half / spacing - 1e-9)));
+  for (int i = 1; i <= fine_cells; ++i) right.push_back(fine_half * i / fine_cells);
+  double step = fine_half / fine_cells;
+  while (right.back() < half) {
+    step *= growth;
+    const double next = right.back() + step;
+    // The last cell ends at the edge; one that would be under half a step is merged.
+    if (next >= half || half - next < 0.5 * step * growth) {
+      right.push_back(half);
+      break;
+    }
+    right.push_back(next);
+  }
+  std::vector<double> axis;
+  for (auto it = right.rbegin(); it != right.rend(); ++it) axis.push_back(-*it);
+  axis.push_back(0.0);
+  axis.insert(axis.end(), right.begin(), right.end());
+  return axis;
+}
+
+TriangleMesh graded_quad_mesh(double size_x, double size_y, double fine_size, double spacing, double growth) {
+  const std::vector<double> xs = graded_axis(size_x, fine_size, spacing, growth);
+  const std::vector<double> ys = graded_axis(size_y, fine_size, spacing, growth);
+  TriangleMesh m;
+  for (double y : ys)
+    for (double x : xs) m.positions.emplace_back(x, y, 0.0);
+  const auto nx = uint32_t(xs.size());
+  for (uint32_t j = 0; j + 1 < ys.size(); ++j)
+    for (uint32_t i = 0; i + 1 < nx; ++i) {
+      const uint32_t a = j * nx + i;
+      m.triangles.push_back({a, a + 1, a + nx + 1});
+      m.triangles.push_back({a, a + nx + 1, a + nx});
+    }
+  return m;
+}
+
 TriangleMesh pillow_mesh(double size_x, double size_y, double height, double wrinkle, int resolution) {
   // (σ,τ) ∈ [−1,1]²; f = ((1−σ²)(1−τ²))^0.45 is the stuffing profile, 0 on the seam.
   const double half = 0.5 * height;

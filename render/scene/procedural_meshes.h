@@ -4,6 +4,7 @@
 // warp; occluders carry none.
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 #include "scene/mesh.h"
 
@@ -18,6 +19,13 @@ TriangleMesh parametric_grid(int nu, int nv, const std::function<glm::dvec3(doub
 TriangleMesh swatch_mesh(double size, int resolution);
 // A rectangle in the z = 0 plane, normal +z (floors).
 TriangleMesh quad_mesh(double size_x, double size_y);
+// The same rectangle tessellated for per-vertex lighting: a `fine_size`² centre (clipped to
+// the rectangle) in cells of at most `spacing`, then cells growing by `growth` per step out to the
+// edges. The floor's shadows are shaded per vertex, so they need vertices where the objects
+// stand, and a 40 m floor needs few anywhere else.
+TriangleMesh graded_quad_mesh(double size_x, double size_y, double fine_size, double spacing, double growth);
+// Ticks of one axis of graded_quad_mesh, symmetric about 0, from −size/2 to size/2.
+std::vector<double> graded_axis(double size, double fine_size, double spacing, double growth);
 // A puffy pillow resting on z = 0: a `size_x`×`size_y` cushion `height` tall, seams pinched
 // inward, soft wrinkles running in from the seams; top and bottom sheets share the seam.
 TriangleMesh pillow_mesh(double size_x, double size_y, double height, double wrinkle, int resolution);

@@ -68,7 +68,15 @@ TriangleMesh generate_mesh(const json& m, const std::string& where, const std::f
   if (gen == "swatch") {
     mesh = swatch_mesh(num("size", 1.0, 1e-3, 1e3), res(16));
   } else if (gen == "quad") {
-    mesh = quad_mesh(num("size_x", 10.0, 1e-3, 1e4), num("size_y", 10.0, 1e-3, 1e4));
+    const double sx = num("size_x", 10.0, 1e-3, 1e4), sy = num("size_y", 10.0, 1e-3, 1e4);
+    if (m.contains("fine_size")) {  // graded for per-vertex shadows (procedural_meshes.h)
+      const double fine = num("fine_size", 1.0, 1e-3, 1e4), spacing = num("fine_spacing", 0.05, 1e-3, 1e3);
+      if (std::min(fine, std::max(sx, sy)) / spacing > 512)
+        throw SceneError(where + ": fine_size / fine_spacing gives over 512 cells per side");
+      mesh = graded_quad_mesh(sx, sy, fine, spacing, num("growth", 1.3, 1.01, 4.0));
+    } else {
+      mesh = quad_mesh(sx, sy);
+    }
   } else if (gen == "pillow") {
     mesh = pillow_mesh(num("size_x", 1.0, 1e-3, 1e3), num("size_y", 1.0, 1e-3, 1e3), num("height", 0.3, 1e-3, 1e3),
                        num("wrinkle", 0.02, 0.0, 1e2), res(40));

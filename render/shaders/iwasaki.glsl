@@ -169,9 +169,13 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       float sigma_k = u_sg_sigma[k];
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
-      vec3 vis_k = u_visibility ? bary.x * sg_visibility(corners.x, k) + bary.y * sg_visibility(corners.y, k) +
-                                      bary.z * sg_visibility(corners.z, k)
-                                : vec3(0.0);
+      vec3 vis_k = vec3(0.0);
+      if (u_visibility) {
+        vis_k = bary.x * sg_visibility(corners.x, k);
+        // Per vertex the weights are (1, 0, 0): the other corners cost two fetches for nothing.
+        if (bary.y != 0.0 || bary.z != 0.0)
+          vis_k += bary.y * sg_visibility(corners.y, k) + bary.z * sg_visibility(corners.z, k);
+      }
       for (int j = 0; j < 2; ++j) {
         Thread p = u_threads[j];
         int count = p.samples;
