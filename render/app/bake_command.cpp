@@ -29,6 +29,7 @@ struct BakeArgs {
   bool no_tables = false;
   double target_error = 0.0;
   int sdf_resolution = 128;  // the paper's
+  int lambertian_sdf_resolution = 64;
   int grid = 0;
   std::vector<int> samples;
 };
@@ -41,6 +42,7 @@ int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   constexpr int kSteps = 5;
   if (a.sdf_resolution % 2) throw UsageError("--sdf-resolution: must be even");
+  if (a.lambertian_sdf_resolution % 2) throw UsageError("--floor-sdf-resolution: must be even");
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   try {
@@ -98,6 +100,7 @@ int run_bake(const BakeArgs& a) {
     IwasakiBakeOptions opt;
     opt.target_error = a.target_error;
     opt.visibility.resolution = a.sdf_resolution;
+    opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.grid;
     if (!a.samples.empty()) {
       if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
@@ -154,6 +157,10 @@ CommandAction add_bake_command(CLI::App& app) {
                   "Choose tangent samples, sharpness levels and SVD ranks for this error (0: the paper's settings)")
       ->check(CLI::Range(0.0, 0.5));
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
+      ->check(CLI::Range(8, 256))
+      ->capture_default_str();
+  sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution,
+                  "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
       ->check(CLI::Range(8, 256))
       ->capture_default_str();
   sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")

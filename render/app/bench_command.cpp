@@ -90,6 +90,7 @@ struct BenchArgs {
   std::vector<int> sweep_tangent_samples;  // per thread
   std::vector<double> sweep_svd_errors;
   std::vector<int> sweep_sdf_resolutions;
+  std::vector<int> sweep_sdf_supersamples;  // visibility rays per SDF cell side (the paper: 512² → 128², 4)
 };
 
 struct SweepRow {
@@ -193,6 +194,7 @@ std::string command_line(const BenchArgs& a, bool quick) {
   if (!a.sweep_tangent_samples.empty()) c << " --sweep-tangent-samples " << joined_numbers(a.sweep_tangent_samples);
   if (!a.sweep_svd_errors.empty()) c << " --sweep-svd-error " << joined_numbers(a.sweep_svd_errors);
   if (!a.sweep_sdf_resolutions.empty()) c << " --sweep-sdf-resolution " << joined_numbers(a.sweep_sdf_resolutions);
+  if (!a.sweep_sdf_supersamples.empty()) c << " --sweep-sdf-supersample " << joined_numbers(a.sweep_sdf_supersamples);
   c << " --out " << a.out;
   return c.str();
 }
@@ -232,6 +234,8 @@ int run_bench(BenchArgs a) {
     if (!(e > 0.0 && e < 1.0)) throw UsageError("--sweep-svd-error: each must be within (0, 1)");
   for (int r : a.sweep_sdf_resolutions)
     if (r < 4 || r > 128) throw UsageError("--sweep-sdf-resolution: each must be within 4..128");
+  for (int r : a.sweep_sdf_supersamples)
+    if (r < 1 || r > 4) throw UsageError("--sweep-sdf-supersample: each must be within 1..4");
 
   // iwasaki draws from seed 000 tables: baked in memory, once per scene, fabric set and
   // setting (small grids with --quick; the paper's 48 otherwise, minutes each on two cores).
@@ -528,7 +532,8 @@ int run_bench(BenchArgs a) {
   std::vector<KnobSweep> knob_sweeps;
   std::string knob_case;
   KnobRow knob_default;
-  if (!a.sweep_tangent_samples.empty() || !a.sweep_svd_errors.empty() || !a.sweep_sdf_resolutions.empty()) {
+  if (!a.sweep_tangent_samples.empty() || !a.sweep_svd_errors.empty() || !a.sweep_sdf_resolutions.empty() ||
+      !a.sweep_sdf_supersamples.empty()) {
     const Case c = make_case(a.scenes.front(), "scene", "scene");
     knob_case = c.scene_name + " / " + c.fabric_label + " / " + c.env;
     const LadderEntry iw{"iwasaki", {}, false};
@@ -602,6 +607,9 @@ int run_bench(BenchArgs a) {
     knob_sweep("SDF resolution", "sweep_sdf_resolution.csv", std::to_string(paper_bake().visibility.resolution),
                texts(a.sweep_sdf_resolutions),
                [&](size_t i, IwasakiBakeOptions& o) { o.visibility.resolution = a.sweep_sdf_resolutions[i]; }, false);
+    knob_sweep("SDF supersampling (rays per cell side)", "sweep_sdf_supersample.csv",
+               std::to_string(paper_bake().visibility.supersample), texts(a.sweep_sdf_supersamples),
+               [&](size_t i, IwasakiBakeOptions& o) { o.visibility.supersample = a.sweep_sdf_supersamples[i]; }, false);
   }
   // Stability table: every CPU method × stress case, against the reference.
   struct StabilityCell {
@@ -864,6 +872,9 @@ CommandAction add_bench_command(CLI::App& app) {
       ->delimiter(',');
   sub->add_option("--sweep-sdf-resolution", a->sweep_sdf_resolutions,
                   "iwasaki visibility SDF resolutions to sweep (e.g. 8,16,32,64; needs an occluded first scene)")
+      ->delimiter(',');
+  sub->add_option("--sweep-sdf-supersample", a->sweep_sdf_supersamples,
+                  "iwasaki visibility rays per SDF cell side to sweep (e.g. 1,2,4; the paper samples 512² for 128²)")
       ->delimiter(',');
   return [a] { return run_bench(*a); };
 }

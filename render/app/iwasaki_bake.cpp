@@ -66,7 +66,9 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     // shading under the same visibility (methods/lambert_visibility.h).
     ProgressBar bar("visibility " + scene.objects[i].name);
     SceneVisibilityStats st;
-    auto v = bake_object_visibility(scene, i, opt.visibility, [&](size_t d, size_t n) {
+    SceneVisibilityOptions vo = opt.visibility;
+    if (scene.objects[i].material != Material::cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
+    auto v = bake_object_visibility(scene, i, vo, [&](size_t d, size_t n) {
       if (!opt.quiet) bar(0.95 * double(d) / double(n));
     }, &st);
     if (!opt.quiet) {
@@ -74,7 +76,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
       if (v)
         std::fprintf(stderr, "  %s: %zu vertices, %d² SDF, %.1f %% of rays blocked, PCA %d terms (RMS %.4f rad, max %.3f rad), "
                      "%.2f MB, %.1f s\n",
-                     scene.objects[i].name.c_str(), st.vertices, opt.visibility.resolution, 100 * st.blocked_share, v->terms,
+                     scene.objects[i].name.c_str(), st.vertices, vo.resolution, 100 * st.blocked_share, v->terms,
                      v->rms_error, v->max_error,
                      4e-6 * double(v->mean.size() + v->basis.size() + v->coefficients.size()), st.seconds);
       else
