@@ -77,13 +77,21 @@ const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
   return *tables_.emplace(fabric.name, std::make_unique<WeightingTablesTexture>(t->second)).first->second;
 }
 
+const ObjectVisibility* checked_visibility(const IwasakiBundleData& data, size_t scene_index, const TriangleMesh& mesh) {
+  const auto found = data.visibility.find(scene_index);
+  if (found == data.visibility.end()) return nullptr;
+  const ObjectVisibility& vis = found->second;
+  const std::string object = "the visibility of object " + std::to_string(scene_index);
+  if (vis.vertex_count() != mesh.positions.size())
+    throw GpuError(object + " has " + std::to_string(vis.vertex_count()) + " vertices, the mesh " +
+                   std::to_string(mesh.positions.size()));
+  if (mesh.warps.size() != mesh.positions.size()) throw GpuError(object + ": its mesh has no per-vertex frames (warps)");
+  if (!data.kappa) throw GpuError(object + " comes without a kappa table");
+  return &vis;
+}
+
 size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
-  const auto found = data_->visibility.find(scene_index);
-  const ObjectVisibility* vis = found == data_->visibility.end() ? nullptr : &found->second;
-  if (vis && vis->vertex_count() != mesh.positions.size())
-    throw GpuError("method iwasaki: the visibility of object " + std::to_string(scene_index) + " has " +
-                   std::to_string(vis->vertex_count()) + " vertices, the mesh " + std::to_string(mesh.positions.size()));
-  if (vis && !kappa_) throw GpuError("method iwasaki: visibility without a kappa table");
+  const ObjectVisibility* vis = checked_visibility(*data_, scene_index, mesh);
   const bool per_vertex = evaluation_ == Evaluation::per_vertex;
   std::unique_ptr<Object> o;
   if (vis && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices

@@ -24,6 +24,12 @@
 
 namespace weft::gpu {
 
+// The bundle's visibility of scene object `scene_index` (null: unoccluded), checked against
+// the mesh it was baked for (vertex count, per-vertex frames) and the κ table it needs; throws
+// GpuError naming the object. The cloth (IwasakiCloth) and the floors and occluders
+// (SceneRenderer) both take theirs through this.
+const ObjectVisibility* checked_visibility(const IwasakiBundleData& data, size_t scene_index, const TriangleMesh& mesh);
+
 class IwasakiCloth {
 public:
   enum class Evaluation { per_pixel, per_vertex };

@@ -128,15 +128,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     auto obj = std::make_unique<Object>(Object{&o, GpuMesh(o.mesh), nullptr, {}, {}, {}, nullptr, 0, nullptr});
-    if (o.material != Material::cloth && bundle_) {
-      const auto v = bundle_->visibility.find(i);
-      if (v != bundle_->visibility.end()) {
-        if (v->second.vertex_count() != o.mesh.positions.size() || o.mesh.warps.size() != o.mesh.positions.size())
-          throw GpuError("the visibility of object '" + o.name + "' does not fit its mesh");
-        if (!bundle_->kappa) throw GpuError("visibility without a kappa table");
-        obj->lambert_visibility = &v->second;
-      }
-    }
+    if (o.material != Material::cloth && bundle_) obj->lambert_visibility = checked_visibility(*bundle_, i, o.mesh);
     if (o.material == Material::cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->set(fabrics[cloth], tangent_samples_);

@@ -73,16 +73,12 @@ std::vector<double> graded_axis(double size, double fine_size, double spacing, d
 TriangleMesh graded_quad_mesh(double size_x, double size_y, double fine_size, double spacing, double growth) {
   const std::vector<double> xs = graded_axis(size_x, fine_size, spacing, growth);
   const std::vector<double> ys = graded_axis(size_y, fine_size, spacing, growth);
-  TriangleMesh m;
-  for (double y : ys)
-    for (double x : xs) m.positions.emplace_back(x, y, 0.0);
-  const auto nx = uint32_t(xs.size());
-  for (uint32_t j = 0; j + 1 < ys.size(); ++j)
-    for (uint32_t i = 0; i + 1 < nx; ++i) {
-      const uint32_t a = j * nx + i;
-      m.triangles.push_back({a, a + 1, a + nx + 1});
-      m.triangles.push_back({a, a + nx + 1, a + nx});
-    }
+  const int nu = int(xs.size()) - 1, nv = int(ys.size()) - 1;
+  // parametric_grid's (s, t) = (i/nu, j/nv): back to the tick indices.
+  TriangleMesh m = parametric_grid(nu, nv, [&](double s, double t) {
+    return dvec3(xs[size_t(std::lround(s * nu))], ys[size_t(std::lround(t * nv))], 0.0);
+  });
+  m.uvs.clear();  // a floor, as quad_mesh
   return m;
 }
 
