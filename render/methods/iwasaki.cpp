@@ -28,6 +28,22 @@ struct LinearSdf {
   double d = 0, d_dtheta = 0, d_dphi = 0, theta = 0;
 };
 
+// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13). V' is the
+// horizon's alone without an SDF; with one (whose bake counts everything below the horizon as
+// occluded, so its nearest boundary may be the horizon itself) the smaller of the two ratios:
+// the visible set lies inside both, and a product would count the horizon twice.
+double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, double horizon,
+                     const LinearSdf& sdf, const IwasakiVisibility* vis) {
+  const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
+  if (!sdf.on) return open * horizon;
+  const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
+  const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
+                              : linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
+  return open * std::min(h, horizon);
+}
+
+}  // namespace
+
 // The surface's own horizon as a visibility boundary in a sample frame. Eq. 9's T averages W over
 // the lobe's part above the surface (W = 0 below it), so the shading factor must also integrate
 // only there; the [−π/2, π/2]² square of Eq. 13 is the *sample's* hemisphere, which a tilted
@@ -46,22 +62,6 @@ double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double
   const double h_dphi = ct * (cp * b_n - sp * np_n);
   return linear_visibility_ratio(sigma_l, sigma_p, h, h_dtheta, h_dphi);
 }
-
-// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13). V' is the
-// horizon's alone without an SDF; with one (whose bake counts everything below the horizon as
-// occluded, so its nearest boundary may be the horizon itself) the smaller of the two ratios:
-// the visible set lies inside both, and a product would count the horizon twice.
-double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, double horizon,
-                     const LinearSdf& sdf, const IwasakiVisibility* vis) {
-  const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
-  if (!sdf.on) return open * horizon;
-  const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
-  const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
-                              : linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
-  return open * std::min(h, horizon);
-}
-
-}  // namespace
 
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,

@@ -37,6 +37,11 @@ struct IwasakiTerms {
 
 // `bsdf` supplies the thread parameters (A, γ_s, γ_v, η, k_d: the knobs) and the tangent
 // samples, which must be those the tables were baked for.
+// H of the surface's own horizon (h = ω·n linearised at (θ, φ) of sample frame `tf`) for a lobe
+// of widths σ_l, σ' there: the closed form of Eq. 12 for that straight boundary (iwasaki.cpp).
+// Also the horizon the Lambertian floors divide out (lambert_visibility.h).
+double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l, double sigma_p);
+
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,
                               const IwasakiVisibility* visibility = nullptr);

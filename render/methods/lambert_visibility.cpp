@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/circular_gaussian.h"
+#include "methods/iwasaki.h"
 
 namespace weft {
 
@@ -31,10 +32,7 @@ double lambert_visible_share(const SphericalGaussian& g, const SurfaceFrame& fra
                    sdf_at_axis.z * wrap_angle(peak.phi_k - axis.phi_k);
   const double h_sdf = kappa ? kappa->h(peak.sigma_k, sp, d, sdf_at_axis.y, sdf_at_axis.z)
                              : linear_visibility_ratio(peak.sigma_k, sp, d, sdf_at_axis.y, sdf_at_axis.z);
-  // The horizon h(θ, φ) = ω·n = cos θ cos φ, linearised at the peak.
-  const double ct = std::cos(peak.theta_k), st = std::sin(peak.theta_k);
-  const double cp = std::cos(peak.phi_k), spp = std::sin(peak.phi_k);
-  const double h_horizon = linear_visibility_ratio(peak.sigma_k, sp, ct * cp, -st * cp, -ct * spp);
+  const double h_horizon = horizon_ratio(vertex_frame, frame.n, peak.theta_k, peak.phi_k, peak.sigma_k, sp);
   if (!(h_horizon > 1e-6)) return 1.0;  // the whole lobe under the surface: the cosine already cut it
   return std::clamp(h_sdf / h_horizon, 0.0, 1.0);
 }
