@@ -269,6 +269,8 @@ TEST(KnobStateFile, CorruptFilesFallBackToThePresetAndSayWhy) {
       {flip(good, "\"hue_steps\": 4", "\"hue_steps\": 5"), "checksum mismatch"},  // bit rot
       {flip(good, "weft-knobs", "something"), "not a weft knob state file"},
       {"[1,2,3]", "not a weft knob state file"},
+      {"{\"format\": [1], \"checksum\": \"0\"}", "not a weft knob state file"},  // fuzzer find
+      {"{\"format\": 7}", "not a weft knob state file"},
   };
   for (const auto& [text, reason] : cases) {
     std::ofstream(file, std::ios::binary | std::ios::trunc) << text;

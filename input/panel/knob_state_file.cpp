@@ -36,6 +36,13 @@ int steps(const nlohmann::json& j, const char* key) {
   return static_cast<int>(v);
 }
 
+// A text field, or "" when absent or of another type: json::value() would throw json's own
+// type_error for {"format": [1]}, which no caller expects (found by the panel_config fuzzer).
+std::string text_field(const nlohmann::ordered_json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
 bool fsync_path(const std::filesystem::path& p, int flags, std::string& why) {
   const int fd = ::open(p.c_str(), flags);
   if (fd < 0) {
@@ -73,7 +80,7 @@ KnobPositions parse_knob_state(const std::string& text, const std::vector<Preset
   } catch (const nlohmann::json::exception& e) {
     throw KnobStateError(std::string("not valid JSON (") + e.what() + ")");
   }
-  if (!j.is_object() || j.value("format", "") != "weft-knobs") throw KnobStateError("not a weft knob state file");
+  if (!j.is_object() || text_field(j, "format") != "weft-knobs") throw KnobStateError("not a weft knob state file");
   if (!j.contains("version") || j["version"] != kVersion)
     throw KnobStateError("unsupported version " + (j.contains("version") ? j["version"].dump() : std::string("(none)")));
   if (!j.contains("checksum") || !j["checksum"].is_string()) throw KnobStateError("checksum missing");
@@ -82,12 +89,12 @@ KnobPositions parse_knob_state(const std::string& text, const std::vector<Preset
   if (fnv1a64(j.dump()) != stored) throw KnobStateError("checksum mismatch (file damaged)");
 
   KnobPositions p;
-  const std::string preset = j.value("preset", "");
+  const std::string preset = text_field(j, "preset");
   bool found = false;
   for (size_t i = 0; i < presets.size(); ++i)
     if (presets[i].name == preset) p.preset = static_cast<uint32_t>(i), found = true;
   if (!found) throw KnobStateError("fabric preset '" + preset + "' is not installed");
-  const std::string selection = j.value("selection", "");
+  const std::string selection = text_field(j, "selection");
   found = false;
   for (int i = 0; i < 3; ++i)
     if (selection == kSelectionNames[i]) p.selection = static_cast<ThreadSelection>(i), found = true;
