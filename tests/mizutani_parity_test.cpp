@@ -68,6 +68,7 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
 
   GlProgram program(kVs, shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
                              std::string(shaders::source("microcylinder.glsl")) +
+                             std::string(shaders::source("hemisphere_grid.glsl")) +
                              std::string(shaders::source("mizutani.glsl")) + kFs);
   upload_fabric(program, bsdf);
   const MizutaniTextures textures(tables, azimuthal);

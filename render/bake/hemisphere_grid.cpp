@@ -61,14 +61,36 @@ glm::dvec2 square_from_hemisphere(glm::dvec3 w) {
   return glm::clamp(glm::dvec2(a, b), glm::dvec2(-1.0), glm::dvec2(1.0));
 }
 
+// A ring of the concentric square sits at disk radius r = max(|s_x|, |s_y|) = √(1 − z); the node
+// square puts it at ρ with r = ρ·(b − (b − 1)ρ), b = 2 − a·π/4, so dθ/dρ is a·π/2 at the horizon
+// (θ = 2·asin(r/√2) has dθ/dr = 2 there). Only the ring moves: s_y/s_x is kept. Square roots
+// only, no asin: the GLSL twin must agree to float precision, and GPU asin is an approximation.
+namespace {
+constexpr double kRingB = 2.0 - kNodeRingHorizonSpacing * kQuarterPi;
+}
+
+glm::dvec3 hemisphere_from_node_square(glm::dvec2 s) {
+  s = glm::clamp(s, glm::dvec2(-1.0), glm::dvec2(1.0));
+  const double rho = std::max(std::abs(s.x), std::abs(s.y));
+  return hemisphere_from_square(s * (kRingB - (kRingB - 1.0) * rho));  // r/ρ
+}
+
+glm::dvec2 node_square_from_hemisphere(glm::dvec3 w) {
+  const glm::dvec2 s = square_from_hemisphere(w);
+  const double r = std::max(std::abs(s.x), std::abs(s.y));
+  // ρ/r from the smaller root of (b − 1)ρ² − bρ + r = 0, without cancellation at r → 0.
+  const double rho_over_r = 2.0 / (kRingB + std::sqrt(std::max(0.0, kRingB * kRingB - 4.0 * (kRingB - 1.0) * r)));
+  return glm::clamp(s * rho_over_r, glm::dvec2(-1.0), glm::dvec2(1.0));
+}
+
 glm::dvec3 HemisphereNodeGrid::node(int index) const {
   const int i = index % n, j = index / n;
   const double h = 2.0 / (n - 1);
-  return hemisphere_from_square({-1.0 + h * i, -1.0 + h * j});
+  return hemisphere_from_node_square({-1.0 + h * i, -1.0 + h * j});
 }
 
 BilinearTap HemisphereNodeGrid::tap(const glm::dvec3& w) const {
-  const glm::dvec2 s = square_from_hemisphere(w);
+  const glm::dvec2 s = node_square_from_hemisphere(w);
   const double x = (s.x + 1.0) * 0.5 * (n - 1), y = (s.y + 1.0) * 0.5 * (n - 1);
   const int i0 = std::clamp(static_cast<int>(std::floor(x)), 0, n - 2);
   const int j0 = std::clamp(static_cast<int>(std::floor(y)), 0, n - 2);

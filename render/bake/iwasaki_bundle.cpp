@@ -55,6 +55,7 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
                      {"tangent_samples", {t.tangent_samples[0], t.tangent_samples[1]}},
                      {"tilts", t.tilts},
                      {"sample_table", t.sample_table},
+                     {"node_grid", kNodeGridId},
                      {"xi_resolution", t.xi_grid.n},
                      {"wo_resolution", t.wo_grid.n},
                      {"lambdas", t.lambdas},
@@ -101,6 +102,11 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
       const int id = j.at("id").get<int>();
       u_name = iwasaki_section::table(id, "u");
       v_name = iwasaki_section::table(id, "v");
+      // Tables are values at the node grid's directions: on another grid they would be read wrong.
+      const std::string grid = j.contains("node_grid") ? j.at("node_grid").get<std::string>() : "equal-area (before 2026-12)";
+      if (grid != kNodeGridId)
+        throw bad(r, TI, "fabric '" + preset + "': tables baked on node grid '" + grid + "', this build reads '" +
+                             kNodeGridId + "': re-bake (weft bake)");
       t.tangent_samples = {j.at("tangent_samples").at(0).get<int>(), j.at("tangent_samples").at(1).get<int>()};
       t.tilts = j.at("tilts").get<std::vector<double>>();
       t.sample_table = j.at("sample_table").get<std::vector<int>>();

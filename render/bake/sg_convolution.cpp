@@ -46,31 +46,12 @@ SgKernel sg_kernel(const HemisphereNodeGrid& grid, std::span<const glm::dvec3> x
   k.rows = static_cast<int>(xi.size());
   k.cols = grid.size();
   k.g.assign(size_t(k.rows) * k.cols, 0.0f);
-  const int qn = quad.n, n = grid.n;
   std::vector<glm::dvec3> wq(quad.size());
   for (int i = 0; i < quad.size(); ++i) wq[i] = quad.centre(i);
-  // Bilinear taps of each quadrature cell centre among the sample cell centres.
-  struct Tap {
-    int index[4];
-    float weight[4];
-  };
-  std::vector<Tap> taps(quad.size());
-  for (int c = 0; c < quad.size(); ++c) {
-    Tap& tap = taps[c];
-    auto axis = [&](int q, int& i0, int& i1, float& f) {
-      // Node i sits at i/(n − 1) on [0, 1]; quadrature centre q at (q + ½)/qn.
-      const double x = (q + 0.5) / qn * (n - 1);
-      i0 = std::min(static_cast<int>(x), n - 2);
-      i1 = i0 + 1;
-      f = static_cast<float>(x - i0);
-    };
-    int x0, x1, y0, y1;
-    float fx, fy;
-    axis(c % qn, x0, x1, fx);
-    axis(c / qn, y0, y1, fy);
-    tap = {{y0 * n + x0, y0 * n + x1, y1 * n + x0, y1 * n + x1},
-           {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy}};
-  }
+  // Bilinear taps of each quadrature cell centre among the ω_i nodes, through the node grid's own
+  // square (not the cells': the two squares differ, hemisphere_grid.h).
+  std::vector<BilinearTap> taps(quad.size());
+  for (int c = 0; c < quad.size(); ++c) taps[c] = grid.tap(wq[c]);
 #pragma omp parallel
   {
     std::vector<double> row(k.cols);

@@ -25,8 +25,8 @@ std::string source(std::initializer_list<std::string_view> parts) {
 GlProgram make_program(IwasakiCloth::Evaluation e) {
   if (e == IwasakiCloth::Evaluation::per_vertex)
     return GlProgram(fullscreen_triangle_vs(),
-                     source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
-  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "iwasaki.glsl", "iwasaki.frag"}));
+                     source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
+  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 
 // The SGs a draw shades with: a fit's empty lobes (zero amplitude) do no work.

@@ -31,7 +31,7 @@ const std::vector<MethodInfo>& method_table() {
       {Method::sheen, "sheen", {"erf.glsl", "sg_lighting.glsl", "sheen.glsl", "sheen.frag"}, false},
       {Method::mdfrot, "mdfrot", {"erf.glsl", "sg_lighting.glsl", "mdfrot.glsl", "mdfrot.frag"}, false},
       {Method::thin, "thin", {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl", "thin.frag"}, true},
-      {Method::mizutani, "mizutani", {"microcylinder.glsl", "mizutani.glsl", "mizutani.frag"}, false},
+      {Method::mizutani, "mizutani", {"microcylinder.glsl", "hemisphere_grid.glsl", "mizutani.glsl", "mizutani.frag"}, false},
       {Method::iwasaki, "iwasaki", {}, false},  // its own programs: gpu/iwasaki_cloth.h
       {Method::iwasaki_vertex, "iwasaki_vertex", {}, false},
   };

@@ -5,14 +5,13 @@
 //   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
 //   and the surface's horizon as a second linear boundary (closed-form H, the smaller one wins).
 // The same steps as render/methods/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
-// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric) and erf.glsl
-// before it.
+// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric), erf.glsl and
+// hemisphere_grid.glsl before it.
 // Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
 // fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
 #define MAX_SGS 40
 #define MAX_TABLES 512
 const float HALF_PI = 1.57079632679490;
-const float QUARTER_PI = 0.78539816339745;
 
 uniform vec3 u_eye;
 uniform int u_sg_count;
@@ -37,33 +36,6 @@ uniform highp sampler3D u_kappa;      // κ·s over (β, σ', σ_l) as x, y, z
 uniform vec3 u_kappa_n;               // nodes along σ_l, σ', β
 uniform vec2 u_kappa_sigma;           // σ range (min, max)
 
-// --- hemisphere_grid.cpp's square_from_hemisphere (concentric map), for a unit vector.
-vec2 square_from_hemisphere(vec3 w) {
-  if (w.z < 0.0) {
-    float h = length(w.xy);
-    if (h == 0.0) return vec2(1.0, 0.0);
-    w = vec3(w.xy / h, 0.0);
-  }
-  float r = length(w.xy) / sqrt(1.0 + w.z);  // = √(1 − z) for unit w, without cancellation at the zenith
-  if (r == 0.0) return vec2(0.0);
-  float phi = atan(w.y, w.x);
-  if (phi < -QUARTER_PI) phi += 2.0 * PI;
-  float a, b;
-  if (phi < QUARTER_PI) {
-    a = r;
-    b = phi * a / QUARTER_PI;
-  } else if (phi < 3.0 * QUARTER_PI) {
-    b = r;
-    a = -(phi - 2.0 * QUARTER_PI) * b / QUARTER_PI;
-  } else if (phi < 5.0 * QUARTER_PI) {
-    a = -r;
-    b = (phi - PI) * a / QUARTER_PI;
-  } else {
-    b = -r;
-    a = -(phi - 6.0 * QUARTER_PI) * b / QUARTER_PI;
-  }
-  return clamp(vec2(a, b), -1.0, 1.0);
-}
 // Node grid of n nodes: node i at texel centre (i + ½)/n, s = −1 + 2i/(n−1).
 vec2 node_texcoord(vec2 s, float n) { return s * (0.5 * (n - 1.0) / n) + 0.5; }
 
@@ -162,10 +134,10 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
   vec3 wo_local = vec3(dot(wo, u), dot(wo, v), dot(wo, n));
   vec3 surface = vec3(0.0), volume = vec3(0.0);
   if (wo_local.z > 0.0) {
-    vec2 wo_tc = node_texcoord(square_from_hemisphere(normalize(wo_local)), u_wo_n);
+    vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
     for (int k = 0; k < u_sg_count; ++k) {
       vec3 xi = u_sg_axis[k];
-      vec2 xi_tc = node_texcoord(square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
+      vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       float sigma_k = u_sg_sigma[k];
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];

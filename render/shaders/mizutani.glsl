@@ -1,7 +1,7 @@
 // Method `mizutani` (seed 001, DESIGN.md §4) in GLSL ES 3.0: the twin of
 // render/methods/mizutani.cpp, term by term (the comments there give the equations);
-// tests/mizutani_parity_test.cpp pins the two together. Needs microcylinder.glsl first
-// (threads, tilts, fiber_angles) and MAX_SGS defined.
+// tests/mizutani_parity_test.cpp pins the two together. Needs microcylinder.glsl and
+// hemisphere_grid.glsl first (threads, tilts, fiber_angles; the table grids) and MAX_SGS defined.
 #define MAX_W_TABLES 256
 #define MAX_W_LEVELS 16
 #define THETA_SEGMENTS 6
@@ -82,31 +82,9 @@ void azimuthal_values(float phi_o, float phi_k, float lp, out vec4 t0, out vec4 
   t0 *= z, t1 *= z, t2 *= z;
 }
 
-// Hemisphere → square (render/bake/hemisphere_grid.cpp: concentric + Lambert equal-area).
-vec2 square_from_hemisphere(vec3 w) {
-  w = normalize(w);
-  if (w.z < 0.0) {
-    float h = length(w.xy);
-    if (h == 0.0) return vec2(1.0, 0.0);
-    w = vec3(w.xy / h, 0.0);
-  }
-  // r² = 1 − z = (x² + y²)/(1 + z): the second form keeps float precision near the zenith.
-  float r = length(w.xy) / sqrt(1.0 + w.z);
-  if (r == 0.0) return vec2(0.0);
-  const float Q = 0.25 * PI;
-  float phi = atan(w.y, w.x);
-  if (phi < -Q) phi += 2.0 * PI;
-  vec2 s;
-  if (phi < Q) s = vec2(r, phi * r / Q);
-  else if (phi < 3.0 * Q) s = vec2(-(phi - 2.0 * Q) * r / Q, r);
-  else if (phi < 5.0 * Q) s = vec2(-r, (phi - PI) * -r / Q);
-  else s = vec2(-(phi - 6.0 * Q) * -r / Q, -r);
-  return clamp(s, vec2(-1.0), vec2(1.0));
-}
-
 // Bilinear taps on an n×n node grid: first index (the others are +1, +n, +n+1) and fractions.
 void grid_tap(vec3 w, int n, out int k, out vec2 f) {
-  vec2 s = (square_from_hemisphere(w) + 1.0) * 0.5 * float(n - 1);
+  vec2 s = (node_square_from_hemisphere(normalize(w)) + 1.0) * 0.5 * float(n - 1);
   ivec2 i0 = clamp(ivec2(floor(s)), ivec2(0), ivec2(n - 2));
   f = clamp(s - vec2(i0), 0.0, 1.0);
   k = i0.y * n + i0.x;
