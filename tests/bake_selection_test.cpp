@@ -84,7 +84,9 @@ TEST(PaperTangentSamples, StraightThreadKeepsOneAndTheTotalIsThePapers) {
     for (int j = 0; j < 2; ++j) {
       const auto tilts = f.threads[j].curve.sample_tilts(8);
       const bool straight = std::all_of(tilts.begin(), tilts.end(), [&](double a) { return a == tilts.front(); });
-      if (straight) EXPECT_EQ(n[j], 1) << name << " thread " << j;
+      if (straight) {
+        EXPECT_EQ(n[j], 1) << name << " thread " << j;
+      }
     }
   }
   const Fabric satin = preset("polyester_satin_charmeuse");

@@ -6,7 +6,8 @@
 // followed by Lambert's equal-area disk→hemisphere map (z = 1 − r², xy scaled by √(2 − r²)).
 // Both maps preserve area, so every cell of an N×N grid on the square covers the same solid
 // angle 2π/N², and the square is continuous across the whole hemisphere (no seam, no pole),
-// which is what bilinear interpolation needs.
+// which is what bilinear interpolation needs. The node grids move the square's rings (below);
+// continuity stays, equal area does not (nothing integrates over nodes).
 //
 // Two kinds of grid on that square:
 //  - a node grid (tables): N×N nodes at s = −1 + 2·i/(N−1), so the horizon is on the border;
