@@ -41,7 +41,7 @@ struct BilinearTap {
 };
 
 // The node grids' ring spacing at the horizon relative to equal-angle rings (see above). The
-// GLSL twin is NODE_RING_A in shaders/hemisphere_grid.glsl; the parity tests pin the two.
+// GLSL twin is NODE_RING_B (= 2 − a·π/4) in shaders/hemisphere_grid.glsl; the parity tests pin the two.
 inline constexpr double kNodeRingHorizonSpacing = 0.6;
 // Names that grid in a bundle's table index (bake/T "node_grid"): tables baked on another are refused.
 inline constexpr const char* kNodeGridId = "concentric rings a=0.6";
