@@ -76,7 +76,7 @@ TEST(HemisphereGrid, SquareRoundTripAndEqualArea) {
 // step a times the equal-angle step (the equal-area square's is 1.25×; hemisphere_grid.h says why).
 TEST(HemisphereGrid, NodeRingsAreDensestAtTheHorizon) {
   expect_round_trip(hemisphere_from_node_square, node_square_from_hemisphere, 5);
-  const double a = kNodeRingHorizonSpacing, pi = std::acos(-1.0);
+  const double a = kNodeRingHorizonSpacing, pi = kPi;
   for (double rho : {0.05, 0.3, 0.7, 0.95, 1.0})
     for (glm::dvec2 dir : {glm::dvec2(1, 0), glm::dvec2(0, -1), glm::dvec2(1, 1)}) {
       const double b = 2 - a * pi / 4, r = rho * (b - (b - 1) * rho);

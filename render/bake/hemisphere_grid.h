@@ -45,6 +45,7 @@ struct BilinearTap {
 inline constexpr double kNodeRingHorizonSpacing = 0.6;
 // Names that grid in a bundle's table index (bake/T "node_grid"): tables baked on another are refused.
 inline constexpr const char* kNodeGridId = "concentric rings a=0.6";
+static_assert(kNodeRingHorizonSpacing == 0.6, "a new ring spacing is a new grid: change kNodeGridId with it");
 // Node-grid square [−1,1]² ↔ unit direction (z ≥ 0; below the horizon as square_from_hemisphere).
 glm::dvec3 hemisphere_from_node_square(glm::dvec2 s);
 glm::dvec2 node_square_from_hemisphere(glm::dvec3 w);
