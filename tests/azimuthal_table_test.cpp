@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 
 using namespace weft;
 constexpr double kPi = std::numbers::pi;

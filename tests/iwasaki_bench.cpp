@@ -19,7 +19,7 @@
 #include <sstream>
 
 #include "app/gpu_render.h"
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "bundle/bundle_reader.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"

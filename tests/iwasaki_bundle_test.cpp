@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "bake/iwasaki_bundle.h"
+#include "bake/iwasaki_bundle_writer.h"
 #include "bake/weighting_bake.h"
 #include "core/fabric.h"
 

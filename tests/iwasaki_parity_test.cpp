@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "bake/scene_visibility.h"
+#include "bake/sigmoid_gain.h"
 #include "bake/weighting_bake.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
@@ -75,7 +76,7 @@ void check_parity(const Case& c, gpu::Method method) {
   SigmoidGainTableSpec ks;
   ks.sigma_l_count = ks.sigma_prime_count = 5;
   ks.beta_count = 9;
-  if (c.expect_visibility) data->kappa = SigmoidGainTable::fit(ks);
+  if (c.expect_visibility) data->kappa = fit_sigmoid_gain_table(ks);
 
   const int w = 80, h = 60;
   const SgLighting sgs = test_lights();

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "bake/scene_visibility.h"
+#include "bake/sigmoid_gain.h"
 #include "gpu/egl_context.h"
 #include "gpu/offscreen_target.h"
 #include "gpu/scene_renderer.h"
@@ -97,7 +98,7 @@ TEST(LambertVisibility, FloorShadowMatchesRayCastQuadrature) {
   const auto vis = bake_object_visibility(scene, floor, opt);
   ASSERT_TRUE(vis.has_value());
   const SgVisibility at_axes = SgVisibility::compute(*vis, mesh, kLights);
-  const SigmoidGainTable kappa = SigmoidGainTable::fit(SigmoidGainTableSpec{});
+  const SigmoidGainTable kappa = fit_sigmoid_gain_table(SigmoidGainTableSpec{});
 
   const RayScene rays(scene);
   double sq_shadowed = 0, sq_open = 0, sum_ref = 0;
@@ -140,7 +141,7 @@ TEST(LambertVisibility, SceneRendererShadesTheFloorWithTheBundlesVisibility) {
   SigmoidGainTableSpec ks;
   ks.sigma_l_count = ks.sigma_prime_count = 5;
   ks.beta_count = 9;
-  data->kappa = SigmoidGainTable::fit(ks);
+  data->kappa = fit_sigmoid_gain_table(ks);
 
   const int w = 96, h = 72;
   gpu::EglContext ctx = gpu::EglContext::headless();

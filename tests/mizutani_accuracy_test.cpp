@@ -8,7 +8,7 @@
 #include <map>
 #include <memory>
 
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"

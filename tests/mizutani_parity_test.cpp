@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"

@@ -179,7 +179,7 @@ TEST(VisibilityBench, SigmoidGainTableFit) {
   if (const char* full = std::getenv("WEFT_BENCH_PAPER_KAPPA"); full && std::atoi(full))
     spec.sigma_l_count = 32, spec.sigma_prime_count = 32, spec.beta_count = 64;
   auto t0 = Clock::now();
-  const SigmoidGainTable table = SigmoidGainTable::fit(spec);
+  const SigmoidGainTable table = fit_sigmoid_gain_table(spec);
   const double t_fit = seconds_since(t0);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);

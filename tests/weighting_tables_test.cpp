@@ -8,7 +8,7 @@
 #include <map>
 #include <random>
 
-#include "bake/hemisphere_grid.h"
+#include "runtime/hemisphere_grid.h"
 #include "bake/low_rank.h"
 #include "bake/sg_convolution.h"
 #include "bake/weighting_bake.h"

@@ -11,7 +11,7 @@
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 

@@ -23,7 +23,7 @@
 #include "app/gpu_render.h"
 #include "app/iwasaki_bake.h"
 #include "bake/bake_selection.h"
-#include "bake/weighting_tables.h"
+#include "runtime/weighting_tables.h"
 #include "bench/chart.h"
 #include "bench/image_metrics.h"
 #include "bench/reference_cache.h"

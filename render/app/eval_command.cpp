@@ -11,7 +11,7 @@
 #include "core/cloth_bsdf.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 #include "methods/iwasaki.h"
 #include "methods/mizutani.h"
 #include "reference/sg_quadrature.h"

@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "image/image.h"

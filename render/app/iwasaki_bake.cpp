@@ -5,6 +5,7 @@
 
 #include "app/progress_bar.h"
 #include "bake/bake_selection.h"
+#include "bake/sigmoid_gain.h"
 #include "bake/weighting_bake.h"
 
 namespace weft {
@@ -90,7 +91,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   if (!out.visibility.empty()) {
     t0 = std::chrono::steady_clock::now();
     ProgressBar bar("kappa table");
-    out.kappa = SigmoidGainTable::fit(SigmoidGainTableSpec{}, [&](int d, int n) {
+    out.kappa = fit_sigmoid_gain_table(SigmoidGainTableSpec{}, [&](int d, int n) {
       if (!opt.quiet) bar(double(d) / n);
     });
     rep.kappa_s = since(t0);

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "bake/scene_visibility.h"
 #include "core/fabric.h"
 #include "scene/scene.h"

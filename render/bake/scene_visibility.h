@@ -7,7 +7,7 @@
 #include <functional>
 #include <optional>
 
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "bake/visibility_pca.h"
 #include "scene/scene.h"
 

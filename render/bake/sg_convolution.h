@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "bake/hemisphere_grid.h"
+#include "runtime/hemisphere_grid.h"
 #include "core/cloth_bsdf.h"
 
 namespace weft {

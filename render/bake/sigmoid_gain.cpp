@@ -50,12 +50,6 @@ double support_half_width(double sigma) {
 
 }  // namespace
 
-double gaussian_spread(double sigma_l, double sigma_prime, double grad_theta, double grad_phi) {
-  const double len2 = grad_theta * grad_theta + grad_phi * grad_phi;
-  return std::sqrt(0.5 * (sigma_l * sigma_l * grad_theta * grad_theta +
-                          sigma_prime * sigma_prime * grad_phi * grad_phi) / len2);
-}
-
 double integrate_circular_gaussian(double a, double b, double mu, double sigma) {
   check_sigma(sigma);
   const double reach = support_half_width(sigma);
@@ -235,30 +229,17 @@ SigmoidFit fit_sigmoid_gain(const CircularGaussianCdf& theta_cdf,
   return fit;
 }
 
-double SigmoidGainTable::sigma_l_at(int i) const {
-  const int n = spec_.sigma_l_count;
-  return spec_.sigma_min * std::pow(spec_.sigma_max / spec_.sigma_min, n > 1 ? double(i) / (n - 1) : 0.0);
-}
-double SigmoidGainTable::sigma_prime_at(int j) const {
-  const int n = spec_.sigma_prime_count;
-  return spec_.sigma_min * std::pow(spec_.sigma_max / spec_.sigma_min, n > 1 ? double(j) / (n - 1) : 0.0);
-}
-double SigmoidGainTable::beta_at(int k) const {
-  const int n = spec_.beta_count;
-  return n > 1 ? kHalfPi * k / (n - 1) : 0.0;
-}
-
-SigmoidGainTable SigmoidGainTable::fit(const SigmoidGainTableSpec& spec,
-                                       const std::function<void(int, int)>& progress) {
+SigmoidGainTable fit_sigmoid_gain_table(const SigmoidGainTableSpec& spec,
+                                        const std::function<void(int, int)>& progress) {
   if (spec.sigma_l_count < 2 || spec.sigma_prime_count < 2 || spec.beta_count < 2 ||
       spec.sigma_l_count * spec.sigma_prime_count * spec.beta_count > (1 << 22))
     throw std::invalid_argument("sigmoid gain table: each axis needs 2+ samples, 4M cells at most");
   if (!(spec.sigma_min > 0) || !(spec.sigma_max > spec.sigma_min) || !std::isfinite(spec.sigma_max))
     throw std::invalid_argument("sigmoid gain table: need 0 < sigma_min < sigma_max");
-  SigmoidGainTable table;
-  table.spec_ = spec;
   const int nl = spec.sigma_l_count, np = spec.sigma_prime_count, nb = spec.beta_count;
-  table.kappa_.resize(size_t(nl) * np * nb);
+  // A placeholder table of unit gains gives the axes' node positions.
+  const SigmoidGainTable table = SigmoidGainTable::from_gains(spec, std::vector<float>(size_t(nl) * np * nb, 1.0f), 0.0);
+  std::vector<float> gains(size_t(nl) * np * nb);
   std::vector<CircularGaussianCdf> cdf_l, cdf_p;
   for (int i = 0; i < nl; ++i) cdf_l.emplace_back(table.sigma_l_at(i));
   for (int j = 0; j < np; ++j) cdf_p.emplace_back(table.sigma_prime_at(j));
@@ -270,7 +251,7 @@ SigmoidGainTable SigmoidGainTable::fit(const SigmoidGainTableSpec& spec,
       for (int k = 0; k < nb; ++k) {
         const SigmoidFit f = fit_sigmoid_gain(cdf_l[i], cdf_p[j], table.beta_at(k));
         const double beta = table.beta_at(k);
-        table.kappa_[(size_t(i) * np + j) * nb + k] =
+        gains[(size_t(i) * np + j) * nb + k] =
             float(f.kappa * gaussian_spread(table.sigma_l_at(i), table.sigma_prime_at(j),
                                             std::cos(beta), std::sin(beta)));
         worst = std::max(worst, f.max_error);
@@ -280,66 +261,7 @@ SigmoidGainTable SigmoidGainTable::fit(const SigmoidGainTableSpec& spec,
         progress(++done, nl * np);
       }
     }
-  table.max_fit_error_ = worst;
-  return table;
-}
-
-SigmoidGainTable SigmoidGainTable::from_gains(const SigmoidGainTableSpec& spec, std::vector<float> gains,
-                                              double max_fit_error) {
-  if (spec.sigma_l_count < 2 || spec.sigma_prime_count < 2 || spec.beta_count < 2 ||
-      !(spec.sigma_min > 0 && spec.sigma_max > spec.sigma_min))
-    throw std::invalid_argument("sigmoid gain table: bad spec");
-  if (gains.size() != size_t(spec.sigma_l_count) * spec.sigma_prime_count * spec.beta_count)
-    throw std::invalid_argument("sigmoid gain table: " + std::to_string(gains.size()) + " gains for a " +
-                                std::to_string(spec.sigma_l_count) + "x" + std::to_string(spec.sigma_prime_count) +
-                                "x" + std::to_string(spec.beta_count) + " table");
-  for (float g : gains)
-    if (!(std::isfinite(g) && g > 0)) throw std::invalid_argument("sigmoid gain table: non-finite or non-positive gain");
-  SigmoidGainTable t;
-  t.spec_ = spec;
-  t.kappa_ = std::move(gains);
-  t.max_fit_error_ = max_fit_error;
-  return t;
-}
-
-double SigmoidGainTable::kappa(double sigma_l, double sigma_prime, double grad_theta,
-                               double grad_phi) const {
-  const double log_range = std::log(spec_.sigma_max / spec_.sigma_min);
-  auto axis = [&](double sigma, int n) {
-    const double u = std::log(std::clamp(sigma, spec_.sigma_min, spec_.sigma_max) / spec_.sigma_min) /
-                     log_range * (n - 1);
-    return std::clamp(u, 0.0, double(n - 1));
-  };
-  const double beta = std::atan2(std::abs(grad_phi), std::abs(grad_theta));
-  const double u[3] = {axis(sigma_l, spec_.sigma_l_count), axis(sigma_prime, spec_.sigma_prime_count),
-                       std::clamp(beta / kHalfPi * (spec_.beta_count - 1), 0.0, double(spec_.beta_count - 1))};
-  const int n[3] = {spec_.sigma_l_count, spec_.sigma_prime_count, spec_.beta_count};
-  int i0[3];
-  double t[3];
-  for (int a = 0; a < 3; ++a) {
-    i0[a] = std::min(int(u[a]), n[a] - 2);
-    t[a] = u[a] - i0[a];
-  }
-  double normalized = 0;
-  for (int c = 0; c < 8; ++c) {
-    double w = 1;
-    int idx[3];
-    for (int a = 0; a < 3; ++a) {
-      const int bit = (c >> a) & 1;
-      idx[a] = i0[a] + bit;
-      w *= bit ? t[a] : 1 - t[a];
-    }
-    if (w == 0) continue;
-    normalized += w * double(kappa_[(size_t(idx[0]) * n[1] + idx[1]) * n[2] + idx[2]]);
-  }
-  return normalized / gaussian_spread(sigma_l, sigma_prime, grad_theta, grad_phi);
-}
-
-double SigmoidGainTable::h(double sigma_l, double sigma_prime, double d, double grad_theta,
-                           double grad_phi) const {
-  const double len = std::hypot(grad_theta, grad_phi);
-  if (len == 0) return d > 0 ? 1.0 : (d < 0 ? 0.0 : 0.5);
-  return sigmoid(kappa(sigma_l, sigma_prime, grad_theta, grad_phi), d / len);
+  return SigmoidGainTable::from_gains(spec, std::move(gains), worst);
 }
 
 Eq12Errors eq12_half_plane_errors(double sigma_l, double sigma_prime, int n) {

@@ -9,12 +9,16 @@
 // core's linear_visibility_ratio is H for untruncated Gaussians, the limit this file's exact H
 // (truncated circular Gaussians, what the paper fits its sigmoid to) tends to for narrow lobes.
 //
+// The table and its lookup, what the runtime reads, are in runtime/sigmoid_gain_table.h.
+//
 // H is computed here by quadrature that is exact to ~1e−9: one axis is integrated with
 // Gauss–Legendre panels, the other in closed form through a tabulated cumulative integral of
 // g^c (cubic Hermite on 4096 intervals, using the exact derivative g^c).
 #include <cmath>
 #include <functional>
 #include <vector>
+
+#include "runtime/sigmoid_gain_table.h"
 
 namespace weft {
 
@@ -54,14 +58,6 @@ double triple_product_linear_visibility(double theta_l, double phi_k, double sig
 double circular_gaussian_pair_quadrature(double theta_l, double phi_k, double sigma_l,
                                        double sigma_prime);
 
-// s = sqrt((σ_l²·∂d/∂θ² + σ'²·∂d/∂φ²) / (2|∇d|²)): the standard deviation along ∇d of
-// g(θ;0,σ_l)·g(φ;0,σ') (each Gaussian exp(−x²/σ²) has variance σ²/2). Without truncation
-// H = Φ(d/(|∇d|·s)), so κ ≈ 1.702/s; the table stores κ·s.
-double gaussian_spread(double sigma_l, double sigma_prime, double grad_theta, double grad_phi);
-
-// The sigmoid of Eq. 14.
-inline double sigmoid(double kappa, double d) { return 1.0 / (1.0 + std::exp(-kappa * d)); }
-
 // Least-squares gain for one (σ_l, σ', gradient direction β): minimises
 // Σ (sigmoid(κ d_i) − H(d_i))² over d_i uniform in [−4s, 4s], s the Gaussian spread of the
 // product along ∇d. Reports the max |sigmoid − H| over d ∈ [−π, π] (dense).
@@ -73,52 +69,10 @@ struct SigmoidFit {
 SigmoidFit fit_sigmoid_gain(const CircularGaussianCdf& theta_cdf,
                             const CircularGaussianCdf& phi_cdf, double beta);
 
-// The 3D table κ(σ_l, σ'_l, β), β = atan2(|∂d/∂φ|, |∂d/∂θ|) ∈ [0, π/2]: H depends on the
-// gradient only through its direction up to the sign of each component (g^c is even and the
-// domain symmetric), and on its length only as d/|∇d|. σ axes are logarithmic.
-struct SigmoidGainTableSpec {
-  // Paper: 32 × 32 × 64. Measured here (2-core VM): 8×8×33 keeps the interpolated sigmoid
-  // within 0.0097 of H at random off-node arguments; β is the axis that needs samples.
-  int sigma_l_count = 12, sigma_prime_count = 12, beta_count = 33;
-  // The paper's σ range is 1/(16√2)..1/√2; σ_l of a sharp lobe can be smaller. Above ~0.75
-  // the square [−π/2, π/2] truncates g^c so much that no sigmoid stays within 0.01 of H
-  // (measured: 0.0099 at σ = 0.75, 0.022 at σ = 1), so the table stops at 1/√2.
-  double sigma_min = 1.0 / 64, sigma_max = 0.70710678118654752;
-};
-class SigmoidGainTable {
- public:
-  // Fits every cell (OpenMP over cells). `progress(done, total)` may be empty.
-  static SigmoidGainTable fit(const SigmoidGainTableSpec& spec,
-                              const std::function<void(int, int)>& progress = {});
-  // A table read back from storage (a bundle): the spec and its normalised gains, as
-  // normalized_gains() gave them. Throws std::invalid_argument on a size mismatch or a
-  // non-finite or non-positive gain.
-  static SigmoidGainTable from_gains(const SigmoidGainTableSpec& spec, std::vector<float> gains,
-                                     double max_fit_error);
-  // κ at any (σ_l, σ', ∇d): trilinear interpolation of the normalised gain κ·s in
-  // (log σ_l, log σ', β), divided by s(σ_l, σ', ∇d) of the actual arguments (gaussian_spread).
-  // κ·s stays near 1.70 everywhere (the logistic–probit constant; it drifts only where the
-  // square truncates wide Gaussians), so interpolating it is far more accurate than
-  // interpolating κ, which changes by 30× across β when σ_l ≪ σ'. σ outside the table is
-  // clamped to its range for κ·s only.
-  double kappa(double sigma_l, double sigma_prime, double grad_theta, double grad_phi) const;
-  // Eq. 14 with ∇d folded in: 1 / (1 + exp(−κ · d / |∇d|)).
-  double h(double sigma_l, double sigma_prime, double d, double grad_theta,
-           double grad_phi) const;
-
-  const SigmoidGainTableSpec& spec() const { return spec_; }
-  // The stored normalised gains κ·s, [σ_l][σ'][β] row-major (what a GPU texture holds).
-  const std::vector<float>& normalized_gains() const { return kappa_; }
-  double max_fit_error() const { return max_fit_error_; }      // worst cell, at its nodes
-  double sigma_l_at(int i) const;
-  double sigma_prime_at(int j) const;
-  double beta_at(int k) const;
-
- private:
-  SigmoidGainTableSpec spec_;
-  std::vector<float> kappa_;
-  double max_fit_error_ = 0;
-};
+// The table κ(σ_l, σ'_l, β) of runtime/sigmoid_gain_table.h, every cell fitted (OpenMP over
+// cells). `progress(done, total)` may be empty. Throws std::invalid_argument on a bad spec.
+SigmoidGainTable fit_sigmoid_gain_table(const SigmoidGainTableSpec& spec,
+                                        const std::function<void(int, int)>& progress = {});
 
 // Seed 000's error analysis of Eq. 12 with the half-plane visibility V = [θ > 0]: RMSE over
 // means (θ_l, φ_k) on an n × n grid of cell centres in [−π/2, π/2]² between the true I and

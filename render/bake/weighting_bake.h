@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "bake/weighting_tables.h"
+#include "runtime/weighting_tables.h"
 #include "core/fabric.h"
 
 namespace weft {

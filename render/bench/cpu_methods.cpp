@@ -4,7 +4,7 @@
 #include <memory>
 #include <mutex>
 
-#include "bake/azimuthal_table.h"
+#include "bake/azimuthal_bake.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 #include "methods/iwasaki.h"

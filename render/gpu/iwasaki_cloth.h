@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 #include "gpu/gl_program.h"

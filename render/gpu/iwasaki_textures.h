@@ -8,8 +8,8 @@
 
 #include <vector>
 
-#include "bake/sigmoid_gain.h"
-#include "bake/weighting_tables.h"
+#include "runtime/sigmoid_gain_table.h"
+#include "runtime/weighting_tables.h"
 #include "gpu/gl_program.h"
 #include "methods/iwasaki_visibility.h"
 #include "scene/mesh.h"

@@ -5,8 +5,8 @@
 #include <span>
 #include <vector>
 
-#include "bake/azimuthal_table.h"
-#include "bake/weighting_tables.h"
+#include "runtime/azimuthal_table.h"
+#include "runtime/weighting_tables.h"
 #include "core/spherical_gaussian.h"
 #include "gpu/gl_program.h"
 

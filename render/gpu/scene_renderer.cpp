@@ -6,12 +6,11 @@
 #include <stdexcept>
 
 #include "gpu/egl_context.h"
-#include "bake/bake_selection.h"
-#include "bake/weighting_bake.h"
 #include "gpu/fabric_uniforms.h"
 #include "gpu/method_uniforms.h"
 #include "gpu/mizutani_textures.h"
 #include "methods/lambert_visibility.h"
+#include "runtime/paper_tangent_samples.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -107,7 +106,8 @@ std::unique_ptr<ClothBsdf> SceneRenderer::mizutani_cloth(const Fabric& fabric) c
 }
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
-                             std::shared_ptr<const IwasakiBundleData> iwasaki)
+                             std::shared_ptr<const IwasakiBundleData> iwasaki,
+                             const MizutaniTableSource& mizutani_tables)
     : method_(method), bundle_(iwasaki), tangent_samples_(tangent_samples) {
   if (uses_seed000_tables(method))
     iwasaki_ = std::make_unique<IwasakiCloth>(std::move(iwasaki), method == Method::iwasaki_vertex
@@ -117,7 +117,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   if (method == Method::mizutani) {  // its light arrays are sized at compile time
     fragment = program_source({}) + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
                fragment.substr(program_source({}).size());
-    azimuthal_ = std::make_unique<AzimuthalTable>(bake_azimuthal_table());
+    if (!mizutani_tables.azimuthal) throw GpuError("mizutani: no azimuthal table (baked offline: weft render, weft bench)");
+    azimuthal_ = std::make_unique<AzimuthalTable>(mizutani_tables.azimuthal());
   }
   if (!iwasaki_) cloth_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), fragment);
   if (info(method).see_through)
@@ -144,9 +145,9 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
         if (from_bundle) {
           obj->mizutani = std::make_unique<MizutaniTextures>(*from_bundle, *azimuthal_);
         } else {
-          BakeSettings settings;
-          settings.tangent_samples = samples;
-          obj->mizutani = std::make_unique<MizutaniTextures>(bake_weighting_tables(fabrics[cloth], settings), *azimuthal_);
+          if (!mizutani_tables.weighting)
+            throw GpuError("mizutani: no weighting tables for " + fabrics[cloth].name + " (baked offline: weft render, weft bench)");
+          obj->mizutani = std::make_unique<MizutaniTextures>(mizutani_tables.weighting(fabrics[cloth], samples), *azimuthal_);
         }
       }
       ++cloth;

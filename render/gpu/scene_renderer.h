@@ -3,12 +3,13 @@
 // method's shader, Lambertian surfaces (floor, occluders) with their SG irradiance, shadowed by
 // the bundle's baked visibility when it has theirs (computed per vertex on the CPU whenever the
 // lighting changes, not per pixel per frame).
+#include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "bake/azimuthal_table.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 #include "methods/mdfrot.h"
@@ -17,6 +18,8 @@
 #include "gpu/gl_program.h"
 #include "gpu/gpu_mesh.h"
 #include "gpu/iwasaki_cloth.h"
+#include "runtime/azimuthal_table.h"
+#include "runtime/weighting_tables.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -31,27 +34,38 @@ enum class Method {
   thin,
   iwasaki,   // seed 000 per pixel: needs the bundle's tables (IwasakiBundleData)
   iwasaki_vertex,  // seed 000 per vertex, radiance interpolated: same tables, a fraction of the cost
-  mizutani,  // seed 001: the bundle's weighting tables, or bakes them (paper's tangent samples) at construction
+  mizutani,  // seed 001: the bundle's weighting tables, or the caller's (MizutaniTableSource) at construction
 };
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
 std::vector<std::string> method_names();
 // Seed 000's tables (a bundle's IwasakiBundleData): iwasaki and iwasaki_vertex cannot draw
-// without them; mizutani also reads their W tables when given (else it bakes its own).
+// without them; mizutani also reads their W tables when given (else the caller bakes them).
 bool uses_seed000_tables(Method method);
 bool reads_seed000_tables(Method method);
 // The same by name; false for names that are no GPU method.
 bool uses_seed000_tables(const std::string& method_name);
 bool reads_seed000_tables(const std::string& method_name);
 
+// Method::mizutani's tables where the bundle has none: the azimuthal table always, and the W
+// tables of a fabric the bundle did not bake for the paper's tangent samples. Computing them is
+// baking (render/bake: a minute on two cores), which stays out of the kiosk's executable, so the
+// renderer takes it from its caller: the offline commands pass the baker (app/gpu_render.cpp);
+// without one, Method::mizutani throws GpuError.
+struct MizutaniTableSource {
+  std::function<AzimuthalTable()> azimuthal;
+  std::function<WeightingTables(const Fabric& fabric, std::array<int, 2> tangent_samples)> weighting;
+};
+
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
   // Method::iwasaki(_vertex) draws cloth from `iwasaki` (a bundle's seed 000 tables; required);
   // Method::mizutani takes its W tables from there when they were baked for the paper's samples
-  // (else it bakes them, a minute on two cores).
+  // (else from `mizutani_tables`).
   SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
-                std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
+                std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr,
+                const MizutaniTableSource& mizutani_tables = {});
   ~SceneRenderer();
 
   // A lighting change's CPU work: each Lambertian object's per-vertex irradiance (with the

@@ -10,8 +10,8 @@
 #include <functional>
 #include <span>
 
-#include "bake/sigmoid_gain.h"
-#include "bake/weighting_tables.h"
+#include "runtime/sigmoid_gain_table.h"
+#include "runtime/weighting_tables.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 

@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "bake/visibility_sdf.h"
 
 namespace weft {
 

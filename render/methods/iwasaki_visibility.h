@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bake/iwasaki_bundle.h"
+#include "runtime/iwasaki_bundle.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
 #include "scene/mesh.h"

@@ -17,7 +17,7 @@
 // 4.1 %, without dividing out the horizon 2.5 %.
 #include <span>
 
-#include "bake/sigmoid_gain.h"
+#include "runtime/sigmoid_gain_table.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
 #include "methods/iwasaki_visibility.h"

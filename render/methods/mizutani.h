@@ -13,7 +13,7 @@
 //  - Fresnel by Schlick, F_r ≈ F_0 + (1−F_0)(1 − cosθ_d·x)⁵ with x = cos(φ_d/2), expanded in
 //    powers of x (Eq. 12–13); the volume lobe's F = (1−F_r)² is the square of that polynomial
 //    (powers 2..10). Each power x^m integrates against g^c(φ_i) into the table T_m(φ_o,φ_k,σ'_k)
-//    (Eq. 14, render/bake/azimuthal_table.h);
+//    (Eq. 14, render/runtime/azimuthal_table.h);
 //  - the θ_i integral ∫ g(θ_i;θ_l,σ_l) h(θ_i) dθ_i, g^c replaced by the Gaussian g, with
 //    h = cos²θ_i/cos²θ_d · Σ C_m(θ_d) T_m(σ'_k(θ_i)) (Eq. 16; the volume lobe divides h by
 //    cosθ_i + cosθ_o) linear on 6 equal segments of [−π/2, π/2], each segment in closed form.
@@ -22,8 +22,8 @@
 // The GLSL twin is render/shaders/mizutani.frag; tests/mizutani_parity_test.cpp pins them.
 #include <span>
 
-#include "bake/azimuthal_table.h"
-#include "bake/weighting_tables.h"
+#include "runtime/azimuthal_table.h"
+#include "runtime/weighting_tables.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 

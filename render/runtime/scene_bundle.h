@@ -1,13 +1,13 @@
 #pragma once
 // The scene part of a bundle (BUNDLE_FORMAT.md, "Scene bundle sections"): meshes, materials,
-// fabric parameters, camera and default SGs, written by `weft bake` and read back by `weft run`.
+// fabric parameters, camera and default SGs, written by `weft bake` (render/bake/scene_bundle_writer.h)
+// and read back here for `weft run`.
 // Tables baked by other stages (T, SDF/PCA, κ, T_l) go beside these under their own names.
 #include <filesystem>
 #include <map>
 #include <string>
 
 #include "bundle/bundle_reader.h"
-#include "bundle/bundle_writer.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "scene/scene.h"
@@ -21,15 +21,6 @@ inline constexpr const char* kSgs = "lighting/sgs";       // json: weft-sg-set
 inline constexpr const char* kFabrics = "fabrics";         // json: {preset: fabric file object, ...}
 std::string mesh(size_t object, const char* attribute);   // "mesh/<i>/<attribute>"
 }  // namespace scene_section
-
-struct SceneBundleInput {
-  Scene scene;                                  // meshes already finished (normals, warps)
-  std::map<std::string, std::string> fabrics;   // preset name → fabric JSON text (as on disk)
-  SgLighting sgs;                               // default lighting
-};
-
-// Adds the scene sections to `writer` (which may also receive other stages' tables).
-void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& input);
 
 struct SceneBundle {
   Scene scene;

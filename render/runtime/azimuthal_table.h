@@ -15,7 +15,8 @@
 // and varies far less with λ' than T itself; value() multiplies Z back. Axes: φ_o nodes over
 // [−π/2, π/2], φ_k nodes over [−π, π], λ' nodes uniform in log(1 + λ') over [0, lambda_max];
 // lookups are trilinear and clamp to the axes (φ_k is wrapped to (−π, π] first); past lambda_max
-// the ratio is held at the last node while Z(λ') is exact.
+// the ratio is held at the last node while Z(λ') is exact. The table is computed offline
+// (render/bake/azimuthal_bake.h); this is what the runtime reads.
 #include <cstddef>
 #include <vector>
 
@@ -46,11 +47,5 @@ struct AzimuthalTable {
 
 // Z(λ') = ∫_{−π}^{π} exp(λ'(cos x − 1)) dx = 2π·e^{−λ'}·I_0(λ'), stable for any λ' ≥ 0.
 double circular_gaussian_full_integral(double lambda_prime);
-
-AzimuthalTable bake_azimuthal_table(const AzimuthalTableSettings& settings = {});
-
-// Worst |interpolated − integral| / Z(λ') at the centres of every `stride`-th cell (the
-// farthest points from the nodes), powers 1, 6 and 10, by the bake's own quadrature.
-double azimuthal_interpolation_error(const AzimuthalTable& table, int stride = 4);
 
 }  // namespace weft

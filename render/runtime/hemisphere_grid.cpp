@@ -1,4 +1,4 @@
-#include "bake/hemisphere_grid.h"
+#include "runtime/hemisphere_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -18,7 +18,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/hemisphere_grid.h"
+#include "runtime/hemisphere_grid.h"
 
 namespace weft {
 

@@ -1,4 +1,4 @@
-#include "bake/weighting_tables.h"
+#include "runtime/weighting_tables.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
-// weft-panel-sim: turns a script of knob motions into the exact HID reports the panel sends.
+#include "sim/panel_sim_cli.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -8,9 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "panel/panel_config.h"
 #include "sim/panel_simulator.h"
-#include "sim/uhid_panel.h"
 
 namespace {
 
@@ -89,7 +88,7 @@ int play_on_uhid(const weft::sim::SimResult& result, const std::string& uhid_pat
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int weft::sim::panel_sim_main(int argc, char** argv, const PanelConfigReader& read_panel_config) {
   std::string format = "hex", path = "-";
   bool edges_only = false, uhid = false;
   std::string uhid_path = "/dev/uhid", panel_config;
@@ -155,18 +154,9 @@ int main(int argc, char** argv) {
   id.vendor_id = weft::firmware::kPanelVendorId;
   id.product_id = weft::firmware::kPanelProductId;
   if (!panel_config.empty()) {
-    std::ifstream f(panel_config);
-    if (!f) {
-      std::fprintf(stderr, "weft-panel-sim: cannot open panel config '%s'\n", panel_config.c_str());
-      return 2;
-    }
-    std::stringstream json;
-    json << f.rdbuf();
     try {
-      const auto config = weft::input::parse_panel_config(json.str(), panel_config);
-      id.vendor_id = config.hid.vendor_id;
-      id.product_id = config.hid.product_id;
-    } catch (const weft::input::PanelConfigError& e) {
+      id = read_panel_config(panel_config);
+    } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "weft-panel-sim: %s\n", e.what());
       return 2;
     }
