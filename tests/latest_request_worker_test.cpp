@@ -1,4 +1,4 @@
-// LatestRequestWorker (render/app/latest_request_worker.h): the kiosk prepares lighting changes
+// LatestRequestWorker (render/kiosk/latest_request_worker.h): the kiosk prepares lighting changes
 // off the render thread, one at a time, and only the newest queued request is worth doing.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/latest_request_worker.h"
+#include "kiosk/latest_request_worker.h"
 
 using weft::LatestRequestWorker;
 

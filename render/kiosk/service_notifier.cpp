@@ -1,4 +1,4 @@
-#include "app/service_notifier.h"
+#include "kiosk/service_notifier.h"
 
 #include <systemd/sd-daemon.h>
 

@@ -21,7 +21,7 @@ class MockProbeSource;
 
 class KioskLightProbe {
 public:
-  // Throws UsageError for a malformed spec or an unreadable mock map.
+  // Throws KioskConfigError for a malformed spec or an unreadable mock map.
   KioskLightProbe(const std::string& spec, double switch_s, SgLighting stored, LightProbeUpdater::Log log);
   ~KioskLightProbe();
   KioskLightProbe(const KioskLightProbe&) = delete;

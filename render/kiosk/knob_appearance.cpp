@@ -1,4 +1,4 @@
-#include "app/knob_appearance.h"
+#include "kiosk/knob_appearance.h"
 
 namespace weft {
 

@@ -1,8 +1,8 @@
-#include "app/kiosk_light_probe.h"
+#include "kiosk/kiosk_light_probe.h"
 
 #include <sstream>
 
-#include "app/cli_parse.h"
+#include "kiosk/kiosk_config_error.h"
 #include "camera/libcamera_probe_source.h"
 #include "camera/mock_probe_source.h"
 
@@ -19,11 +19,11 @@ KioskLightProbe::KioskLightProbe(const std::string& spec, double switch_s, SgLig
       try {
         maps_.push_back(load_env_map(file, NonFinitePolicy::clamp));
       } catch (const EnvMapError& e) {
-        throw UsageError(std::string("--probe mock: ") + e.what());
+        throw KioskConfigError(std::string("--probe mock: ") + e.what());
       }
     }
-    if (maps_.empty()) throw UsageError("--probe mock: needs at least one EXR map, e.g. mock:studio.exr");
-    if (maps_.size() > 1 && !(switch_s > 0)) throw UsageError("--probe-switch: must be > 0 seconds with several maps");
+    if (maps_.empty()) throw KioskConfigError("--probe mock: needs at least one EXR map, e.g. mock:studio.exr");
+    if (maps_.size() > 1 && !(switch_s > 0)) throw KioskConfigError("--probe-switch: must be > 0 seconds with several maps");
     MockCameraOptions mock;
     mock.ball = config.ball;
     mock.calibration = config.calibration;
@@ -37,7 +37,7 @@ KioskLightProbe::KioskLightProbe(const std::string& spec, double switch_s, SgLig
     config.ball = MirrorBall{lc.width / 2.0, lc.height / 2.0, 0.95 * lc.height / 2.0};
     source = std::make_unique<LibcameraProbeSource>(lc);
   } else {
-    throw UsageError("--probe: expected none, camera[:ID] or mock:MAP.exr[,MAP.exr...], got '" + spec + "'");
+    throw KioskConfigError("--probe: expected none, camera[:ID] or mock:MAP.exr[,MAP.exr...], got '" + spec + "'");
   }
   probe_ = std::make_unique<LightProbe>(std::move(source), config, std::move(stored), std::move(log));
   probe_->start();
