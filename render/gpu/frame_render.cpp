@@ -1,4 +1,4 @@
-#include "app/gpu_render.h"
+#include "gpu/frame_render.h"
 
 #include <algorithm>
 #include <chrono>
