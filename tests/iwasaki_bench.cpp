@@ -18,7 +18,7 @@
 #include <memory>
 #include <sstream>
 
-#include "app/gpu_render.h"
+#include "frame/frame_render.h"
 #include "runtime/iwasaki_bundle.h"
 #include "bundle/bundle_reader.h"
 #include "core/fabric.h"

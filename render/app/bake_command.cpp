@@ -3,16 +3,14 @@
 // visibility PCA for occluded cloth, κ).
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <sstream>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
-#include "app/iwasaki_bake.h"
-#include "bake/iwasaki_bundle_writer.h"
+#include "app/progress_bar.h"
+#include "bake/bundle_fabrics.h"
+#include "bake/scene_bake.h"
 #include "bake/scene_bundle_writer.h"
 #include "bundle/bundle_writer.h"
 #include "lighting/env_map.h"
@@ -54,21 +52,11 @@ int run_bake(const BakeArgs& a) {
     for (auto& o : in.scene.objects)
       if (o.material == Material::cloth) o.fabric = a.fabric;
   progress(2, kSteps, "fabrics");
-  for (const auto& o : in.scene.objects) {
-    if (o.material != Material::cloth || in.fabrics.count(o.fabric)) continue;
-    const auto dir = assets_dir() / "fabrics";
-    try {
-      load_fabric_preset(o.fabric, dir);  // validates; throws naming the known presets
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--fabric: ") + e.what());
-    }
-    in.fabrics.emplace(o.fabric, read_argument_file((dir / (o.fabric + ".json")).string(), "fabric"));
+  try {
+    in.fabrics = bundle_fabric_texts(in.scene, assets_dir() / "fabrics", a.only_scene_fabrics);
+  } catch (const BundleFabricError& e) {
+    throw UsageError(e.what());
   }
-  // Every preset goes in (a few hundred bytes each): the fabric knob selects among them.
-  if (!a.only_scene_fabrics)
-    for (const auto& name : list_fabric_presets(assets_dir() / "fabrics"))
-      if (!in.fabrics.count(name))
-        in.fabrics.emplace(name, read_argument_file((assets_dir() / "fabrics" / (name + ".json")).string(), "fabric"));
   std::string lighting;
   if (!a.sgs_file.empty()) {
     progress(3, kSteps, "SGs from " + a.sgs_file);
@@ -89,15 +77,11 @@ int run_bake(const BakeArgs& a) {
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
   add_scene_sections(writer, in);
-  IwasakiBakeReport tables_report;
   std::string tables_line = "no seed 000 tables (--no-tables)";
   if (!a.no_tables) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
-    std::map<std::string, Fabric> fabrics;
-    for (const auto& o : in.scene.objects)
-      if (o.material == Material::cloth && !fabrics.count(o.fabric))
-        fabrics.emplace(o.fabric, parse_fabric(in.fabrics.at(o.fabric), o.fabric));
     IwasakiBakeOptions opt;
+    opt.progress = open_progress_bar;
     opt.target_error = a.target_error;
     opt.visibility.resolution = a.sdf_resolution;
     opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
@@ -107,18 +91,11 @@ int run_bake(const BakeArgs& a) {
         throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
       opt.tangent_samples = {a.samples[0], a.samples[1]};
     }
-    IwasakiBundleData data;
     try {
-      data = bake_iwasaki(in.scene, fabrics, opt, &tables_report);
+      tables_line = add_baked_sections(writer, in.scene, in.fabrics, opt);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
-    add_iwasaki_sections(writer, data);
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
-                  data.tables.size(), tables_report.tables_s, data.visibility.size(), tables_report.visibility_s,
-                  tables_report.kappa_s);
-    tables_line = buf;
   }
   progress(5, kSteps, "writing " + a.out);
   const auto bytes = writer.to_bytes();

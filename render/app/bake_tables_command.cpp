@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <unistd.h>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "app/stage_progress_bar.h"
 #include "bake/azimuthal_bake.h"
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
@@ -39,29 +39,6 @@ struct BakeTablesArgs {
   int wi_resolution = 0;
 };
 
-// One line, redrawn in place on a terminal; on a log only every 10 %.
-class ProgressBar {
-public:
-  void operator()(double f, std::string_view stage) {
-    const int pct = static_cast<int>(f * 100.0 + 0.5);
-    if (pct == last_ && stage == stage_) return;
-    const bool tty = isatty(STDERR_FILENO);
-    if (!tty && pct / 10 == last_ / 10 && stage == stage_) return;
-    last_ = pct;
-    stage_ = std::string(stage);
-    const int width = 30, filled = pct * width / 100;
-    std::string bar(filled, '#');
-    bar.resize(width, '.');
-    std::fprintf(stderr, tty ? "\r[%s] %3d%%  %-40s" : "[%s] %3d%%  %s\n", bar.c_str(), pct, stage_.c_str());
-    if (pct >= 100 && tty) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  }
-
-private:
-  int last_ = -1;
-  std::string stage_;
-};
-
 int run_bake_tables(const BakeTablesArgs& a) {
   if (a.target_error < 0.0 || a.target_error >= 1.0 || !std::isfinite(a.target_error))
     throw UsageError("--target-error: must be in (0, 1), got " + std::to_string(a.target_error));
@@ -69,7 +46,7 @@ int run_bake_tables(const BakeTablesArgs& a) {
   BakeSettings settings;
   settings.tangent_samples = paper_tangent_samples(fabric);
   std::vector<SelectionRow> rows;
-  ProgressBar bar;
+  StageProgressBar bar;
   const auto start = std::chrono::steady_clock::now();
   if (a.target_error > 0.0) {
     std::cerr << "weft bake-tables: choosing settings for target error " << a.target_error << "\n";

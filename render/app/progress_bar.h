@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace weft {
@@ -34,5 +36,11 @@ private:
   int last_ = -1;
   bool terminal_ = isatty(fileno(stderr)) != 0;
 };
+
+// A bar for one stage, as the bakers' per-stage progress callbacks (bake/scene_bake.h) open them.
+inline std::function<void(double)> open_progress_bar(const std::string& label) {
+  auto bar = std::make_shared<ProgressBar>(label);
+  return [bar](double fraction) { (*bar)(fraction); };
+}
 
 }  // namespace weft

@@ -1,4 +1,4 @@
-#include "app/gpu_render.h"
+#include "frame/frame_render.h"
 
 #include <algorithm>
 #include <chrono>

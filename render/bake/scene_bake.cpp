@@ -1,10 +1,10 @@
-#include "app/iwasaki_bake.h"
+#include "bake/scene_bake.h"
 
 #include <chrono>
 #include <cstdio>
 
-#include "app/progress_bar.h"
 #include "bake/bake_selection.h"
+#include "bake/iwasaki_bundle_writer.h"
 #include "bake/sigmoid_gain.h"
 #include "bake/weighting_bake.h"
 
@@ -13,6 +13,11 @@ namespace weft {
 namespace {
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+// The stage's progress display, or one that shows nothing.
+std::function<void(double)> open_stage(const IwasakiBakeOptions& opt, const std::string& stage) {
+  if (opt.progress) return opt.progress(stage);
+  return [](double) {};
 }
 }  // namespace
 
@@ -28,7 +33,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     BakeSettings settings;
     settings.tangent_samples = paper_tangent_samples(fabric);  // the paper's settings by default
     if (opt.target_error > 0) {
-      ProgressBar bar("settings " + o.fabric);
+      auto bar = open_stage(opt, "settings " + o.fabric);
       const SelectionResult sel = select_bake_settings(fabric, opt.target_error, settings, [&](double f, std::string_view) {
         if (!opt.quiet) bar(f);
       });
@@ -43,7 +48,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     if (opt.tangent_samples[0] > 0 && opt.tangent_samples[1] > 0) settings.tangent_samples = opt.tangent_samples;
     if (opt.svd_error > 0) settings.svd_error = opt.svd_error;
     settings.validate();
-    ProgressBar bar("T tables " + o.fabric);
+    auto bar = open_stage(opt, "T tables " + o.fabric);
     WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {
       if (!opt.quiet) bar(f);
     });
@@ -65,7 +70,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   for (size_t i = 0; i < scene.objects.size() && opt.bake_visibility; ++i) {
     // Every object: the cloth's for seed 000, the floor's and occluders' for their Lambertian
     // shading under the same visibility (methods/lambert_visibility.h).
-    ProgressBar bar("visibility " + scene.objects[i].name);
+    auto bar = open_stage(opt, "visibility " + scene.objects[i].name);
     SceneVisibilityStats st;
     SceneVisibilityOptions vo = opt.visibility;
     if (scene.objects[i].material != Material::cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
@@ -90,7 +95,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 
   if (!out.visibility.empty()) {
     t0 = std::chrono::steady_clock::now();
-    ProgressBar bar("kappa table");
+    auto bar = open_stage(opt, "kappa table");
     out.kappa = fit_sigmoid_gain_table(SigmoidGainTableSpec{}, [&](int d, int n) {
       if (!opt.quiet) bar(double(d) / n);
     });
@@ -102,6 +107,21 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   }
   if (report) *report = rep;
   return out;
+}
+
+std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
+                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& opt) {
+  std::map<std::string, Fabric> fabrics;
+  for (const auto& o : scene.objects)
+    if (o.material == Material::cloth && !fabrics.count(o.fabric))
+      fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
+  IwasakiBakeReport report;
+  const IwasakiBundleData data = bake_iwasaki(scene, fabrics, opt, &report);
+  add_iwasaki_sections(writer, data);
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
+                data.tables.size(), report.tables_s, data.visibility.size(), report.visibility_s, report.kappa_s);
+  return buf;
 }
 
 }  // namespace weft

@@ -1,17 +1,24 @@
 #pragma once
 // The seed 000 stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
 // weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded object
-// (cloth, floor, occluders), and κ when any object is occluded. Progress bars on stderr, a summary on request.
+// (cloth, floor, occluders), and κ when any object is occluded. Progress goes to the caller's
+// display per stage; a summary of each stage on stderr unless quiet.
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 
 #include "runtime/iwasaki_bundle.h"
 #include "bake/scene_visibility.h"
+#include "bundle/bundle_writer.h"
 #include "core/fabric.h"
 #include "scene/scene.h"
 
 namespace weft {
+
+// Opens the progress display of one stage ("T tables linen_plain") when the stage starts; the
+// returned function is then called with the fraction of the stage done (1.0 at its end).
+using StageProgress = std::function<std::function<void(double)>(const std::string& stage)>;
 
 struct IwasakiBakeOptions {
   double target_error = 0.0;  // > 0: bake_selection picks the table settings (and prints its table)
@@ -22,7 +29,8 @@ struct IwasakiBakeOptions {
   bool bake_tables = true;      // weighting tables for each cloth fabric
   bool bake_visibility = true;  // per-object visibility, and κ when any object is occluded
   SceneVisibilityOptions visibility;
-  bool quiet = false;         // no progress bars or summary
+  bool quiet = false;         // no progress or summary
+  StageProgress progress;     // none: no progress shown
 };
 
 struct IwasakiBakeReport {
@@ -32,5 +40,11 @@ struct IwasakiBakeReport {
 // `fabrics`: preset → fabric for every cloth object's preset.
 IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                                const IwasakiBakeOptions& options, IwasakiBakeReport* report = nullptr);
+
+// `weft bake`'s seed 000 sections: bakes for the scene's cloth fabrics (parsed from the fabric
+// texts the bundle stores, preset → JSON) and adds the sections to `writer`. Returns the
+// summary line: "tables for N fabric(s) T s, visibility for M object(s) V s, kappa K s".
+std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
+                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& options);
 
 }  // namespace weft

@@ -1,5 +1,6 @@
 #pragma once
-// `weft render` for the runtime methods: one headless GLES frame, read back as linear radiance.
+// One headless GLES frame of a scene with a runtime method, read back as linear radiance, and
+// the median frame time (`weft render` and `weft bench` draw their GPU frames with this).
 #include <map>
 #include <memory>
 #include <string>

@@ -1,0 +1,47 @@
+#include "bench/bench_case.h"
+
+#include <filesystem>
+
+#include "bench/number_text.h"
+#include "lighting/env_map.h"
+#include "lighting/sg_fit.h"
+
+namespace weft::bench {
+
+Case make_case(const BenchOptions& a, const std::string& scene_name, const std::string& fabric_arg,
+               const std::string& env_arg) {
+  Case c;
+  c.scene_name = scene_name;
+  try {
+    c.scene = load_scene_preset(scene_name, a.assets / "scenes");
+  } catch (const SceneError& e) {
+    throw InvalidOption(e.what());
+  }
+  for (auto& o : c.scene.objects)
+    if (o.material == Material::cloth) {
+      if (fabric_arg != "scene") o.fabric = fabric_arg;
+      if (!c.fabrics.count(o.fabric)) c.fabrics.emplace(o.fabric, load_fabric_preset(o.fabric, a.assets / "fabrics"));
+    }
+  c.fabric_label = fabric_arg == "scene" ? c.fabrics.begin()->first : fabric_arg;
+  c.env = env_arg == "scene" ? c.scene.environment : env_arg;
+  const auto env_file = a.assets / "envmaps" / (c.env + ".exr");
+  if (!std::filesystem::exists(env_file)) throw InvalidOption("--envs: no environment map " + env_file.string());
+  const EnvMap map = load_env_map(env_file, NonFinitePolicy::clamp, nullptr);
+  SgFitOptions fit;
+  fit.count = a.sg_count;
+  c.sgs = fit_sgs(map, fit);
+  c.tag = scene_name + "_" + c.fabric_label + "_" + c.env;
+  if (scene_name == kThinOccluderScene)
+    c.shadow = std::make_shared<ShadowMask>(sun_shadow_mask(c.scene, c.sgs, a.width, a.height));
+  return c;
+}
+
+std::string thin_occluder_text(const Case& c) {
+  const auto& sun = c.shadow->sun;
+  return "`" + c.env + "` (its brightest SG: axis (" + fmt(sun.axis.x, 2) + ", " + fmt(sun.axis.y, 2) + ", " +
+         fmt(sun.axis.z, 2) + "), λ = " + fmt(sun.sharpness) + "; on " + c.fabric_label + ", " +
+         std::to_string(c.shadow->shadow_pixels) + " cloth pixels in its shadow, " +
+         std::to_string(c.shadow->band_pixels) + " beside it)";
+}
+
+}  // namespace weft::bench

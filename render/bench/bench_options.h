@@ -1,0 +1,51 @@
+#pragma once
+// What `weft bench` measures, as its flags set it (defaults are the flags' defaults), the
+// settings --quick puts in place, the checks of the ranges, and the command that regenerates a run.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace weft::bench {
+
+// A setting out of range or naming nothing (an unknown scene, method or map): bad input, exit 2.
+class InvalidOption : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct BenchOptions {
+  bool quick = false;
+  std::string out = "bench-out";
+  std::string cache;  // default: <out>/reference-cache
+  std::filesystem::path assets;  // scenes/, fabrics/, envmaps/
+  std::vector<std::string> scenes{"swatch", "pillow", "drape", "teapot", "curtain"};
+  std::vector<std::string> fabrics{"scene"};
+  std::vector<std::string> envs{"scene"};
+  std::vector<std::string> methods;  // empty: all available
+  int speed_width = 640, speed_height = 480, speed_frames = 20;
+  int width = 320, height = 240;
+  int sg_grid = 8, tangent_samples = 16, sg_count = 10;
+  int stress_points = 24;
+  bool no_stability = false;
+  int bake_grid = 0;           // iwasaki tables' ξ/ω grids n×n; 0: the paper's 48 (12 with --quick)
+  double target_error = 0.05;  // > 0: an `iwasaki (target E)` row baked by bake_selection.h
+  // Cost-knob sweep: SG counts fitted to the first scene's own map, accuracy against the
+  // reference lit by the map itself (so the fit's error counts), speed over 5 frames.
+  std::vector<int> sweep_sg_counts;
+  // iwasaki's bake knobs, one at a time from the paper-default bundle, on the first scene with
+  // its own fabric and map, against the main rows' reference (same SGs).
+  std::vector<int> sweep_tangent_samples;  // per thread
+  std::vector<double> sweep_svd_errors;
+  std::vector<int> sweep_sdf_resolutions;
+  std::vector<int> sweep_sdf_supersamples;  // visibility rays per SDF cell side (the paper: 512² → 128², 4)
+};
+
+// With `quick`: the smoke run's scene, sizes and sweeps in place of the defaults.
+void apply_quick(BenchOptions& o);
+// Throws InvalidOption naming the flag whose value is out of range.
+void validate(const BenchOptions& o);
+// The command that regenerates this run, every setting spelled out.
+std::string command_line(const BenchOptions& o);
+
+}  // namespace weft::bench

@@ -1,0 +1,114 @@
+#include "bench/bench_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "bench/bench_case.h"
+#include "bench/bench_results.h"
+#include "bench/knob_sweeps.h"
+#include "bench/ladder.h"
+#include "bench/number_text.h"
+#include "bench/reference_set.h"
+#include "bench/report.h"
+#include "bench/row_measure.h"
+#include "bench/stability.h"
+#include "bench/stopwatch.h"
+#include "bench/table_bakes.h"
+#include "gpu/scene_renderer.h"
+
+namespace weft::bench {
+
+namespace {
+
+// The iwasaki row baked with the settings `weft bake --target-error` picks ("model no more
+// than a scene needs"), next to the paper-default row of the same case.
+Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, TableBakes& bakes,
+                     RowMeasure& measure, const std::string& label) {
+  IwasakiBakeOptions o = bakes.paper_options();
+  o.target_error = a.target_error;
+  const auto bundle = bakes.bake(TableBakes::key(c.scene, c.fabrics) + " target " + fmt(a.target_error), c.scene,
+                                 c.fabrics, o);
+  Row r = measure.measure(c, m, label, "iwasaki_target", bundle);
+  r.note = "bake_selection.h at error target " + fmt(a.target_error);
+  return r;
+}
+
+// Speed and accuracy rows: every method on every scene × fabric × environment (with the
+// target-error row after each iwasaki row).
+void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, TableBakes& bakes, RowMeasure& measure,
+                 BenchResults& res) {
+  for (const auto& scene_name : a.scenes) {
+    for (const auto& fabric_arg : a.fabrics) {
+      for (const auto& env_arg : a.envs) {
+        const Case c = make_case(a, scene_name, fabric_arg, env_arg);
+        if (c.shadow && res.thin_occluder_case.empty()) res.thin_occluder_case = thin_occluder_text(c);
+        for (const auto& m : run) {
+          if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
+          res.rows.push_back(measure.measure(c, m, m.name, m.name, bakes.tables_for(m.name, c.scene, c.fabrics)));
+          if (m.name == "iwasaki" && a.target_error > 0)
+            res.rows.push_back(target_error_row(a, c, m, bakes, measure, res.target_label));
+        }
+      }
+    }
+  }
+}
+
+// Stability table: every CPU method × stress case, against the canonical model.
+std::vector<StabilityCell> stability_cells(const BenchOptions& a) {
+  std::vector<StabilityCell> cells;
+  if (a.no_stability || a.stress_points <= 0) return cells;
+  const auto cases = stress_cases(a.assets / "fabrics", a.stress_points);
+  std::vector<std::vector<glm::dvec3>> refs;
+  for (const auto& c : cases) refs.push_back(stress_reference(c));
+  for (const auto& m : cpu_methods())
+    for (size_t i = 0; i < cases.size(); ++i)
+      cells.push_back({m.name, cases[i].name, cases[i].notes, run_stress(m, cases[i], &refs[i])});
+  return cells;
+}
+
+}  // namespace
+
+int run_bench(BenchOptions a) {
+  apply_quick(a);
+  validate(a);
+  const auto available = gpu::method_names();
+  const bool has_iwasaki = std::find(available.begin(), available.end(), "iwasaki") != available.end();
+  const LadderRun ladder_run = select_methods(available, a.methods);
+  const auto& run = ladder_run.run;
+
+  BenchResults res;
+  res.missing = ladder_run.missing;
+  res.run_iwasaki = std::any_of(run.begin(), run.end(), [](const LadderEntry& e) { return e.name == "iwasaki"; });
+  res.target_label = "iwasaki (target " + fmt(a.target_error) + ")";
+
+  const std::filesystem::path out(a.out);
+  const std::filesystem::path cache = a.cache.empty() ? out / "reference-cache" : std::filesystem::path(a.cache);
+  std::filesystem::create_directories(out / "images");
+  const auto t_start = std::chrono::steady_clock::now();
+  TableBakes bakes(a);
+  ReferenceSet references(a, cache);
+  RowMeasure measure(a, out, references);
+  res.paper_sdf_resolution = bakes.paper_options().visibility.resolution;
+
+  ladder_rows(a, run, bakes, measure, res);
+  res.renderer = measure.renderer();
+  sweep_sg_counts(a, run, bakes, references, out, res);
+  sweep_bake_knobs(a, has_iwasaki, bakes, references, out, res);
+  res.stability = stability_cells(a);
+  res.seconds = seconds_since(t_start);
+  res.reference_seconds = references.render_seconds();
+  res.references_rendered = references.rendered();
+  res.references_cached = references.cached();
+
+  write_results_csv(out, a, res);
+  write_chart(out, a, res);
+  write_report_md(out, a, res);
+  std::cout << "{\"out\":\"" << a.out << "\",\"rows\":" << res.rows.size() << ",\"seconds\":" << fmt(res.seconds, 4)
+            << ",\"csv\":\"" << (out / "results.csv").string() << "\",\"chart\":\"" << (out / "chart.png").string()
+            << "\",\"report\":\"" << (out / "report.md").string() << "\"}\n";
+  return 0;
+}
+
+}  // namespace weft::bench

@@ -1,0 +1,95 @@
+#include "frame/frame_inputs.h"
+
+#include <chrono>
+#include <iostream>
+
+#include "runtime/scene_bundle.h"
+#include "bundle/bundle_reader.h"
+#include "lighting/sg_fit.h"
+#include "lighting/sg_set_io.h"
+#include "reference/environment_samples.h"
+
+namespace weft {
+
+FrameInputs load_frame_inputs(const FrameInputOptions& a) {
+  FrameInputs in;
+  try {
+    in.scene = load_scene_preset(a.scene, a.assets / "scenes");
+  } catch (const SceneError& e) {
+    throw FrameInputError(e.what());
+  }
+  for (const auto& obj : in.scene.objects)
+    if (obj.repair.degenerate_triangles_dropped > 0)
+      std::cerr << "weft render: mesh " << in.scene.name << "/" << obj.name << ": dropped "
+                << obj.repair.degenerate_triangles_dropped << " degenerate triangles\n";
+  if (!a.bundle.empty()) {
+    // The bundle's scene, fabrics and seed 000 tables; the lighting still comes from the options.
+    try {
+      const auto reader = bundle::BundleReader::open(a.bundle);
+      SceneBundle sb = read_scene_bundle(reader);
+      std::map<size_t, size_t> vertices;
+      for (size_t i = 0; i < sb.scene.objects.size(); ++i) vertices[i] = sb.scene.objects[i].mesh.positions.size();
+      if (!has_iwasaki_sections(reader))
+        throw FrameInputError("--bundle: " + a.bundle + " has no seed 000 tables (weft bake without --no-tables)");
+      in.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+      in.scene = std::move(sb.scene);
+    } catch (const bundle::BundleError& e) {
+      throw FrameInputError(std::string("--bundle: ") + e.what());
+    }
+  }
+  if (!a.fabric.empty())
+    for (auto& obj : in.scene.objects)
+      if (obj.material == Material::cloth) obj.fabric = a.fabric;
+  for (const auto& obj : in.scene.objects)
+    if (obj.material == Material::cloth && !in.fabrics.count(obj.fabric))
+      in.fabrics.emplace(obj.fabric, load_fabric_preset(obj.fabric, a.assets / "fabrics"));
+  in.env = a.env.empty() ? in.scene.environment : a.env;
+
+  const auto env_file = a.assets / "envmaps" / (in.env + ".exr");
+  if (!std::filesystem::exists(env_file)) throw FrameInputError("--env: no environment map " + env_file.string());
+  EnvMapRepairs repairs;
+  try {
+    in.map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, &repairs));
+  } catch (const EnvMapError& e) {
+    throw FrameInputError(e.what());
+  }
+  if (repairs.total() > 0)
+    std::cerr << "weft render: environment " << in.env << ": clamped " << repairs.nan << " NaN, " << repairs.infinite
+              << " infinite and " << repairs.negative << " negative channel values to 0\n";
+  return in;
+}
+
+ReferenceLighting frame_lighting(const FrameInputs& in, const FrameLightingOptions& a) {
+  ReferenceLighting lighting;
+  const std::shared_ptr<EnvMap> map = in.map;
+  if (a.mode == "map") {
+    if (!a.sgs_file.empty()) throw FrameInputError("--sgs: only with --lighting sg");
+    const int base = a.map_width;
+    lighting.samples = [map, base](int level) { return environment_samples(*map, base << level); };
+    lighting.background = [map](const glm::dvec3& d) { return map->lookup(d); };
+    lighting.description = "map " + in.env + " as " + std::to_string(base) + "x" + std::to_string(base / 2) +
+                           " stratified cells";
+    return lighting;
+  }
+  if (!a.sgs_file.empty()) {
+    try {
+      lighting.sgs = load_sg_set(a.sgs_file);
+    } catch (const SgSetError& e) {
+      throw FrameInputError(std::string("--sgs: ") + e.what());
+    }
+    lighting.description = std::to_string(lighting.sgs.size()) + " SGs from " + a.sgs_file;
+  } else {
+    const auto t = std::chrono::steady_clock::now();
+    SgFitOptions fit;
+    fit.count = a.sg_count;
+    lighting.sgs = fit_sgs(*map, fit);
+    lighting.description = std::to_string(lighting.sgs.size()) + " SGs fitted to " + in.env + " (" +
+                           std::to_string(std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count())
+                               .substr(0, 4) +
+                           " s)";
+  }
+  lighting.background = [sgs = lighting.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+  return lighting;
+}
+
+}  // namespace weft
