@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "gpu/egl_context.h"
-#include "gpu/offscreen_target.h"
+#include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
 
 namespace weft {

@@ -27,7 +27,7 @@
 #include "bundle/bundle_fallback.h"
 #include "gpu/egl_context.h"
 #include "gpu/kms_display.h"
-#include "gpu/offscreen_target.h"
+#include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
 #include "image/image.h"
 #include "panel/gpio_knob_source.h"

@@ -8,31 +8,19 @@
 #include <string>
 #include <vector>
 
-#include "bake/azimuthal_table.h"
-#include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
-#include "methods/mdfrot.h"
-#include "methods/sheen.h"
-#include "methods/thin.h"
-#include "gpu/gl_program.h"
-#include "gpu/gpu_mesh.h"
-#include "gpu/iwasaki_cloth.h"
+#include "gl/gl_program.h"
+#include "gl/gpu_mesh.h"
 #include "image/image.h"
+#include "methods/bundle_visibility.h"
+#include "methods/cloth_method.h"
+#include "methods/registry.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
 
-// The GPU methods (DESIGN.md §4). A new one is a value here and a row in scene_renderer.cpp's
-// method table (name, fragment shader parts, whether the cloth is see-through).
-enum class Method {
-  sgpoint,
-  sheen,
-  mdfrot,
-  thin,
-  iwasaki,   // seed 000 per pixel: needs the bundle's tables (IwasakiBundleData)
-  iwasaki_vertex,  // seed 000 per vertex, radiance interpolated: same tables, a fraction of the cost
-  mizutani,  // seed 001: the bundle's weighting tables, or bakes them (paper's tangent samples) at construction
-};
+// A runtime method: an entry of the registry (methods/registry.h), which lists them all.
+using Method = const methods::RuntimeMethod&;
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
 std::string method_name(Method method);
 std::vector<std::string> method_names();
@@ -46,10 +34,10 @@ bool reads_seed000_tables(const std::string& method_name);
 
 class SceneRenderer {
 public:
-  // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object.
-  // Method::iwasaki(_vertex) draws cloth from `iwasaki` (a bundle's seed 000 tables; required);
-  // Method::mizutani takes its W tables from there when they were baked for the paper's samples
-  // (else it bakes them, a minute on two cores).
+  // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object. The
+  // method's GPU side gets `iwasaki` (a bundle's seed 000 tables): iwasaki(_vertex) need them,
+  // mizutani takes its W tables from there when they were baked for the paper's samples (else
+  // it bakes them, a minute on two cores). The bundle's visibility shades every method's floors.
   SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
                 std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr);
   ~SceneRenderer();
@@ -77,15 +65,11 @@ public:
 private:
   struct Object;
   std::vector<std::unique_ptr<Object>> objects_;
-  std::unique_ptr<GlProgram> cloth_program_, lambert_program_, background_program_;
-  Method method_;
-  std::unique_ptr<IwasakiCloth> iwasaki_;  // Method::iwasaki(_vertex) only
+  std::unique_ptr<GlProgram> lambert_program_, background_program_;
+  const methods::RuntimeMethod* method_;
+  std::unique_ptr<ClothMethod> cloth_;  // the method's GPU side: draws every cloth object
   std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
   SgLighting sgs_;
-  int tangent_samples_;
-  // Method::mizutani: the method's own tables (cloth objects hold their weighting textures).
-  std::unique_ptr<AzimuthalTable> azimuthal_;
-  std::unique_ptr<ClothBsdf> mizutani_cloth(const Fabric& fabric) const;
 };
 
 // The frame as linear radiance (row 0 at the top) from a float target of the given size.

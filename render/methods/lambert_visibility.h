@@ -20,7 +20,7 @@
 #include "bake/sigmoid_gain.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
-#include "methods/iwasaki_visibility.h"
+#include "methods/iwasaki/iwasaki_visibility.h"
 
 namespace weft {
 
