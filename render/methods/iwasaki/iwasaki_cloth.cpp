@@ -8,6 +8,7 @@
 #include "gl/gl_error.h"
 #include "methods/bundle_visibility.h"
 #include "methods/fabric_uniforms.h"
+#include "methods/program_cloth.h"
 #include "methods/iwasaki/vertex_pass.h"
 #include "shaders/embedded_shaders.h"
 
@@ -15,19 +16,14 @@ namespace weft::gpu {
 
 namespace {
 constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.glsl
-std::string source(std::initializer_list<std::string_view> parts) {
-  std::string s = shader_preamble();
-  for (auto p : parts) s += shaders::source(p);
-  return s;
-}
 
 // Per pixel: the cloth's own draw. Per vertex: the fragment pass over the vertex texels
 // (vertex_pass.h); the draw that interpolates its results is draw_program_.
 GlProgram make_program(IwasakiCloth::Evaluation e) {
   if (e == IwasakiCloth::Evaluation::per_vertex)
     return GlProgram(fullscreen_triangle_vs(),
-                     source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
-  return GlProgram(source({"iwasaki.vert"}), source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"}));
+                     program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
+  return GlProgram(program_source({"iwasaki.vert"}), program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"}));
 }
 
 // The SGs a draw shades with: a fit's empty lobes (zero amplitude) do no work.
@@ -63,7 +59,7 @@ struct IwasakiCloth::Object {
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
     : data_(std::move(data)), evaluation_(evaluation), program_(make_program(evaluation)) {
   if (evaluation_ == Evaluation::per_vertex)
-    draw_program_ = std::make_unique<GlProgram>(source({"iwasaki_vertex.vert"}), source({"iwasaki_vertex.frag"}));
+    draw_program_ = std::make_unique<GlProgram>(program_source({"iwasaki_vertex.vert"}), program_source({"iwasaki_vertex.frag"}));
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
