@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "gpu/egl_context.h"
-#include "gpu/gl_program.h"
-#include "gpu/offscreen_target.h"
+#include "gl/gl_program.h"
+#include "gl/offscreen_target.h"
 
 using namespace weft::gpu;
 

@@ -9,7 +9,7 @@
 
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"
-#include "methods/iwasaki.h"
+#include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
 
 using namespace weft;

@@ -1,7 +1,7 @@
-// Parity: shaders/iwasaki.glsl, drawn by SceneRenderer (Method::iwasaki per pixel, and
-// Method::iwasaki_vertex per vertex, interpolated) on the GL driver
+// Parity: methods/iwasaki/iwasaki.glsl, drawn by SceneRenderer (method iwasaki per pixel, and
+// iwasaki_vertex per vertex, interpolated) on the GL driver
 // (llvmpipe here) and read back, agrees with the C++ evaluation of the same approximation
-// (methods/iwasaki.cpp with iwasaki_visibility.cpp's SDF lookup and the baked κ) within 1e−3
+// (methods/iwasaki/iwasaki.cpp with iwasaki_visibility.cpp's SDF lookup and the baked κ) within 1e−3
 // relative at sample pixels. Both consume the same baked data: the weighting tables, the
 // per-(vertex, SG) SDF values reconstructed from the PCA when the lighting is set, and κ. The C++ side finds each pixel's surface
 // point by casting the pixel's camera ray (Embree), which gives the same perspective-correct
@@ -18,10 +18,11 @@
 #include "bake/weighting_bake.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
-#include "gpu/offscreen_target.h"
+#include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
-#include "methods/iwasaki.h"
-#include "methods/iwasaki_visibility.h"
+#include "methods/iwasaki/iwasaki.h"
+#include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
 
@@ -58,7 +59,7 @@ struct Case {
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, gpu::Method method) {
-  const bool per_vertex = method == gpu::Method::iwasaki_vertex;
+  const bool per_vertex = method.name == "iwasaki_vertex";
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
   size_t cloth_index = 0;
@@ -166,7 +167,7 @@ void check_parity(const Case& c, gpu::Method method) {
     }
   ::testing::Test::RecordProperty("worst_relative", std::to_string(worst));
   std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
-              method_name(method).c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
+              method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";
@@ -174,8 +175,8 @@ void check_parity(const Case& c, gpu::Method method) {
   }
 }
 
-TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), gpu::Method::iwasaki); }
-TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), gpu::Method::iwasaki_vertex); }
+TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki")); }
+TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex")); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,
                          ::testing::Values(Case{"swatch", "silk_shot", false}, Case{"pillow", "linen_plain", true},

@@ -12,13 +12,14 @@
 #include "core/cloth_bsdf.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
-#include "gpu/fabric_uniforms.h"
-#include "gpu/gl_program.h"
-#include "gpu/method_uniforms.h"
-#include "gpu/offscreen_target.h"
-#include "methods/mdfrot.h"
-#include "methods/sheen.h"
-#include "methods/thin.h"
+#include "methods/fabric_uniforms.h"
+#include "gl/gl_program.h"
+#include "gl/offscreen_target.h"
+#include "methods/mdfrot/mdfrot_method.h"
+#include "methods/registry.h"
+#include "methods/sg_lighting_uniforms.h"
+#include "methods/sheen/sheen_method.h"
+#include "methods/thin/thin_method.h"
 #include "shaders/embedded_shaders.h"
 
 using namespace weft;
@@ -81,18 +82,12 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   const ThinParams thin = thin_params(fabric);
   const SgLighting sgs = test_sgs();
 
-  std::vector<std::string_view> parts;
+  // The method's GLSL as the renderer builds it (the registry's parts), with a main of our own.
+  const std::vector<std::string_view>& parts = methods::method(method).glsl;
   std::string call;
-  if (method == "sheen") {
-    parts = {"erf.glsl", "sg_lighting.glsl", "sheen.glsl"};
-    call = "vec4(sheen_radiance(n, wo), 1.0)";
-  } else if (method == "mdfrot") {
-    parts = {"erf.glsl", "sg_lighting.glsl", "mdfrot.glsl"};
-    call = "vec4(mdfrot_radiance(n, u, wo), 1.0)";
-  } else {
-    parts = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "thin_over_sgpoint.glsl", "thin.glsl"};
-    call = "thin_radiance(n, u, wo)";
-  }
+  if (method == "sheen") call = "vec4(sheen_radiance(n, wo), 1.0)";
+  else if (method == "mdfrot") call = "vec4(mdfrot_radiance(n, u, wo), 1.0)";
+  else call = "thin_radiance(n, u, wo)";
   std::string fs = shader_preamble();
   for (auto p : parts) fs += shaders::source(p);
   std::string main_src = kFsTemplate;

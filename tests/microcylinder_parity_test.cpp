@@ -6,9 +6,9 @@
 
 #include "core/cloth_bsdf.h"
 #include "gpu/egl_context.h"
-#include "gpu/fabric_uniforms.h"
-#include "gpu/gl_program.h"
-#include "gpu/offscreen_target.h"
+#include "methods/fabric_uniforms.h"
+#include "gl/gl_program.h"
+#include "gl/offscreen_target.h"
 #include "shaders/embedded_shaders.h"
 
 using namespace weft;

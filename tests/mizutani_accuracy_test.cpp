@@ -12,7 +12,7 @@
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"
-#include "methods/mizutani.h"
+#include "methods/mizutani/mizutani.h"
 #include "reference/sg_quadrature.h"
 
 using namespace weft;

@@ -1,6 +1,6 @@
-// Parity: shaders/mizutani.glsl, run on the GL driver (llvmpipe here) and read back, agrees
-// with the C++ twin render/methods/mizutani.cpp within 1e-3 relative, per pixel, with the
-// tables uploaded by gpu/mizutani_textures (so the upload layout is pinned too).
+// Parity: methods/mizutani/mizutani.glsl, run on the GL driver (llvmpipe here) and read back, agrees
+// with the C++ twin render/methods/mizutani/mizutani.cpp within 1e-3 relative, per pixel, with the
+// tables uploaded by methods/mizutani/mizutani_textures (so the upload layout is pinned too).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -10,11 +10,12 @@
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "gpu/egl_context.h"
-#include "gpu/fabric_uniforms.h"
-#include "gpu/gl_program.h"
-#include "gpu/mizutani_textures.h"
-#include "gpu/offscreen_target.h"
-#include "methods/mizutani.h"
+#include "methods/fabric_uniforms.h"
+#include "gl/gl_program.h"
+#include "methods/mizutani/mizutani_textures.h"
+#include "gl/offscreen_target.h"
+#include "methods/mizutani/mizutani.h"
+#include "methods/registry.h"
 #include "shaders/embedded_shaders.h"
 
 using namespace weft;
@@ -66,10 +67,9 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
   const AzimuthalTable azimuthal = bake_azimuthal_table(as);
   const ClothBsdf bsdf(fabric, s.tangent_samples);
 
-  GlProgram program(kVs, shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n" +
-                             std::string(shaders::source("microcylinder.glsl")) +
-                             std::string(shaders::source("hemisphere_grid.glsl")) +
-                             std::string(shaders::source("mizutani.glsl")) + kFs);
+  std::string fs = shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n";
+  for (auto part : methods::method("mizutani").glsl) fs += shaders::source(part);  // as the renderer builds it
+  GlProgram program(kVs, fs + kFs);
   upload_fabric(program, bsdf);
   const MizutaniTextures textures(tables, azimuthal);
   textures.bind(program, 3);

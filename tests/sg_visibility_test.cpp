@@ -9,7 +9,7 @@
 
 #include "bake/scene_visibility.h"
 #include "bake/visibility_sdf.h"
-#include "methods/iwasaki_visibility.h"
+#include "methods/iwasaki/iwasaki_visibility.h"
 #include "scene/scene.h"
 
 using namespace weft;

@@ -1,11 +1,11 @@
-// The `thin` method's single scattering (methods/thin.h) against its reference with the light
+// The `thin` method's single scattering (methods/thin/thin.h) against its reference with the light
 // integrated exactly (reference/thin_quadrature.h), and that reference against a closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "methods/thin.h"
+#include "methods/thin/thin.h"
 #include "reference/thin_quadrature.h"
 
 using namespace weft;

@@ -12,8 +12,8 @@
 #include "bake/bake_selection.h"
 #include "bake/weighting_bake.h"
 #include "bake/azimuthal_bake.h"
-#include "methods/iwasaki.h"
-#include "methods/mizutani.h"
+#include "methods/iwasaki/iwasaki.h"
+#include "methods/mizutani/mizutani.h"
 #include "reference/sg_quadrature.h"
 
 namespace weft {

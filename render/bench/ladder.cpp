@@ -3,19 +3,16 @@
 #include <algorithm>
 
 #include "bench/bench_options.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
 const std::vector<LadderEntry>& ladder() {
-  static const std::vector<LadderEntry> l = {
-      {"iwasaki", {}, false},
-      {"iwasaki_vertex", {}, false},
-      {"mizutani", {}, false},
-      {"sgpoint", {}, false},
-      {"mdfrot", {}, false},
-      {"sheen", {}, false},
-      {"thin", {"curtain"}, true},
-  };
+  static const std::vector<LadderEntry> l = [] {
+    std::vector<LadderEntry> out;
+    for (const auto& e : methods::bench_ladder()) out.push_back({e.name, e.scenes, e.thin_reference});
+    return out;
+  }();
   return l;
 }
 

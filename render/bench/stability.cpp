@@ -4,7 +4,7 @@
 #include <numbers>
 #include <random>
 
-#include "methods/thin.h"
+#include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
 

@@ -3,25 +3,12 @@
 #include <algorithm>
 #include <chrono>
 
-#include "bake/azimuthal_bake.h"
-#include "bake/weighting_bake.h"
+#include "bake/table_baker.h"
 #include "gpu/egl_context.h"
-#include "gpu/offscreen_target.h"
+#include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
 
 namespace weft {
-
-namespace {
-// Method::mizutani's tables where the bundle has none, baked here (offline) as the renderer starts.
-gpu::MizutaniTableSource mizutani_baker() {
-  return {[] { return bake_azimuthal_table(); },
-          [](const Fabric& fabric, std::array<int, 2> tangent_samples) {
-            BakeSettings settings;
-            settings.tangent_samples = tangent_samples;
-            return bake_weighting_tables(fabric, settings);
-          }};
-}
-}  // namespace
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
@@ -30,7 +17,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
   std::vector<Fabric> cloth;
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
-  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), mizutani_baker());
+  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
   gpu::OffscreenTarget target(width, height);
   target.bind();

@@ -161,12 +161,4 @@ bool EglContext::has_gl_extension(const char* name) const {
   return false;
 }
 
-void check_gl(const char* what) {
-  if (const GLenum e = glGetError(); e != GL_NO_ERROR) {
-    char code[16];
-    std::snprintf(code, sizeof code, "%04x", e);
-    throw GpuError(std::string(what) + ": GL error 0x" + code);
-  }
-}
-
 }  // namespace weft::gpu

@@ -2,24 +2,17 @@
 // An OpenGL ES 3 context through EGL. Two ways in: headless (Mesa's surfaceless platform, else
 // the EGL device platform, rendering only to FBOs) and on a GBM device (the kiosk's DRM/KMS
 // scan-out, see kms_display.h).
-#include <stdexcept>
 #include <string>
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include "gl/gl_error.h"
+
 struct gbm_device;
 struct gbm_surface;
 
 namespace weft::gpu {
-
-class GpuError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
-
-// Throws GpuError "<what>: GL error 0x…" when the GL error flag is set (after uploads).
-void check_gl(const char* what);
 
 class EglContext {
 public:

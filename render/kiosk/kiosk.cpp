@@ -11,7 +11,7 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/kms_display.h"
-#include "gpu/offscreen_target.h"
+#include "gl/offscreen_target.h"
 #include "image/image.h"
 #include "kiosk/kiosk_config_error.h"
 #include "kiosk/kiosk_light_probe.h"

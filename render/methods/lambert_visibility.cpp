@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/circular_gaussian.h"
-#include "methods/iwasaki.h"
+#include "methods/iwasaki/iwasaki.h"
 
 namespace weft {
 

@@ -9,7 +9,7 @@
 
 #include <omp.h>
 
-#include "methods/thin.h"
+#include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
 

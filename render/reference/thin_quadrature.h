@@ -1,5 +1,5 @@
 #pragma once
-// Ground truth for the `thin` method's single scattering (methods/thin.h): the same optically
+// Ground truth for the `thin` method's single scattering (methods/thin/thin.h): the same optically
 // thin layer, with the light integrated exactly instead of one lobe-axis evaluation per SG:
 //   L_scatter(ω_o) = Σ_k ∫_{S²} G_k(ω) · μ₀ · K(μ, μ₀) dω,   μ₀ = |n·ω|,
 // K = K_r for ω on the viewer's side of the layer, K_t for ω behind it. Each SG is integrated
@@ -9,7 +9,7 @@
 #include <span>
 
 #include "core/spherical_gaussian.h"
-#include "methods/thin.h"
+#include "methods/thin/thin.h"
 
 namespace weft {
 

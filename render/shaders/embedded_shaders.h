@@ -1,5 +1,5 @@
 #pragma once
-// The GLSL sources in render/shaders/, compiled into the binary.
+// The GLSL sources in render/shaders/ and render/methods/<name>/, compiled into the binary.
 #include <string>
 #include <string_view>
 

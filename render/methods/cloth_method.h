@@ -1,0 +1,51 @@
+#pragma once
+// A runtime method's GPU side, as the scene renderer drives it: the cloth objects it draws, knob
+// edits, the lighting's per-object CPU work, and one object's draw. Each method implements it in
+// its folder (render/methods/<name>/) and the registry (methods/registry.h) makes it.
+#include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "runtime/iwasaki_bundle.h"
+#include "runtime/table_source.h"
+#include "core/fabric.h"
+#include "core/spherical_gaussian.h"
+#include "methods/iwasaki/iwasaki_visibility.h"
+#include "scene/mesh.h"
+
+namespace weft::gpu {
+
+// What a method's GPU side is made with.
+struct ClothMethodSetup {
+  int tangent_samples = 16;  // per thread, where the method samples the curves at will
+  // A bundle's seed 000 tables (null without); methods that need them throw GpuError without.
+  std::shared_ptr<const IwasakiBundleData> bundle;
+  // Tables no bundle holds (mizutani's): the offline commands' baker; empty in the kiosk.
+  TableSource tables;
+};
+
+class ClothMethod {
+public:
+  virtual ~ClothMethod() = default;
+  // Scene object `scene_index` (cloth), with its mesh (kept by the caller for the method's
+  // lifetime) and fabric; returns the handle the calls below take. Needs a current GLES 3 context.
+  virtual size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) = 0;
+  // A knob edit: new thread albedo / gloss, no re-bake. Throws GpuError (and changes nothing)
+  // for a fabric the method cannot show.
+  virtual void set_fabric(size_t handle, const Fabric& fabric) = 0;
+  // A lighting change's CPU work for one object: per-(vertex, SG) visibility for occluded cloth;
+  // empty when the method has none. Safe on any thread: reads only what add_object fixed.
+  virtual std::optional<SgVisibility> prepare_lighting(size_t handle, const SgLighting& sgs) const {
+    (void)handle, (void)sgs;
+    return std::nullopt;
+  }
+  // Uploads prepare_lighting's result for the lighting `sgs` (GL thread).
+  virtual void set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& prepared) {
+    (void)handle, (void)sgs, (void)prepared;
+  }
+  // Draws the object into the bound framebuffer; blending and depth writes are the caller's.
+  virtual void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) = 0;
+};
+
+}  // namespace weft::gpu

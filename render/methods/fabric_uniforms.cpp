@@ -1,0 +1,37 @@
+#include "methods/fabric_uniforms.h"
+
+#include <string>
+#include <vector>
+
+#include "gl/gl_error.h"
+
+namespace weft::gpu {
+
+std::string shader_preamble() {
+  return "#version 300 es\nprecision highp float;\nprecision highp int;\n#define MAX_TANGENT_SAMPLES " +
+         std::to_string(kMaxTangentSamples) + "\n";
+}
+
+void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
+  program.use();
+  std::vector<float> tilts(2 * kMaxTangentSamples, 0.0f);
+  for (int j = 0; j < 2; ++j) {
+    const ThreadParams& p = bsdf.fabric().threads[j];
+    const int n = bsdf.sample_count(j);
+    if (n > kMaxTangentSamples)
+      throw GpuError("thread " + std::to_string(j + 1) + " has " + std::to_string(n) + " tangent samples; the GPU takes " +
+                     std::to_string(kMaxTangentSamples));
+    const std::string t = "u_threads[" + std::to_string(j) + "].";
+    glUniform1f(program.uniform((t + "eta").c_str()), float(p.eta));
+    glUniform3f(program.uniform((t + "albedo").c_str()), float(p.albedo.r), float(p.albedo.g), float(p.albedo.b));
+    glUniform1f(program.uniform((t + "kd").c_str()), float(p.kd));
+    glUniform1f(program.uniform((t + "gamma_s").c_str()), float(p.gamma_s));
+    glUniform1f(program.uniform((t + "gamma_v").c_str()), float(p.gamma_v));
+    glUniform1f(program.uniform((t + "coverage").c_str()), float(p.coverage));
+    glUniform1i(program.uniform((t + "samples").c_str()), n);
+    for (int k = 0; k < n; ++k) tilts[j * kMaxTangentSamples + k] = float(bsdf.tilt(j, k));
+  }
+  glUniform1fv(program.uniform("u_tilts"), 2 * kMaxTangentSamples, tilts.data());
+}
+
+}  // namespace weft::gpu

@@ -1,0 +1,150 @@
+#include "methods/iwasaki/iwasaki.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/circular_gaussian.h"
+#include "core/fresnel.h"
+
+namespace weft {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// σ' of Eq. 11 at a lobe's peak, with cos θ·cos θ_k kept ≥ 1e−6: at a pole (or a peak past
+// it) σ' → ∞ and σ'·[erf − erf] tends to a finite limit, but ∞·0 would give NaN.
+double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
+  return sigma_k / std::sqrt(std::max(std::cos(theta) * std::cos(theta_k), 1e-6));
+}
+
+// The linear visibility of one (SG, tangent sample): d and ∇d looked up once, at the SG's own
+// direction (θ_k, φ_k), and carried to each lobe's peak along the plane they define. All lobes
+// peak at φ_k and near θ_k, and V' is linear anyway (Eq. 12): one SDF lookup instead of three.
+struct LinearSdf {
+  bool on = false;
+  double d = 0, d_dtheta = 0, d_dphi = 0, theta = 0;
+};
+
+// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13). V' is the
+// horizon's alone without an SDF; with one (whose bake counts everything below the horizon as
+// occluded, so its nearest boundary may be the horizon itself) the smaller of the two ratios:
+// the visible set lies inside both, and a product would count the horizon twice.
+double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, double horizon,
+                     const LinearSdf& sdf, const IwasakiVisibility* vis) {
+  const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
+  if (!sdf.on) return open * horizon;
+  const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
+  const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
+                              : linear_visibility_ratio(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi);
+  return open * std::min(h, horizon);
+}
+
+}  // namespace
+
+// The surface's own horizon as a visibility boundary in a sample frame. Eq. 9's T averages W over
+// the lobe's part above the surface (W = 0 below it), so the shading factor must also integrate
+// only there; the [−π/2, π/2]² square of Eq. 13 is the *sample's* hemisphere, which a tilted
+// sample or a lobe near the horizon pokes below the surface. The height h(θ, φ) = ω(θ, φ)·n is
+// known exactly, so its linearisation at the lobe's peak gives H in closed form
+// (linear_visibility_ratio), like Eq. 12's V' for an occluder. Measured on the flat swatch
+// (linen, 36 views, tables at grid 24): relative RMSE 10.8 % → 3.8 % under studio, whose sharp
+// lights sit a few degrees above the horizon, and 6.3 % → 3.8 % under courtyard.
+double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
+                     double sigma_p) {
+  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const double radial = cp * np_n + sp * b_n;
+  const double h = st * t_n + ct * radial;
+  const double h_dtheta = ct * t_n - st * radial;
+  const double h_dphi = ct * (cp * b_n - sp * np_n);
+  return linear_visibility_ratio(sigma_l, sigma_p, h, h_dtheta, h_dphi);
+}
+
+IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                              const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                              const IwasakiVisibility* visibility) {
+  if (tables.tangent_samples[0] != bsdf.sample_count(0) || tables.tangent_samples[1] != bsdf.sample_count(1))
+    throw std::invalid_argument("iwasaki: tables were baked for other tangent sample counts");
+  IwasakiTerms out;
+  if (glm::dot(wo, frame.n) <= 0.0) return out;
+  auto local = [&](const dvec3& w) { return dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n)); };
+  const dvec3 wo_local = local(wo);
+
+  for (size_t sg_index = 0; sg_index < sgs.size(); ++sg_index) {
+    const SphericalGaussian& g = sgs[sg_index];
+    const dvec3 xi_local = local(g.axis);
+    int s = 0;
+    for (int j = 0; j < 2; ++j) {
+      const ThreadParams& p = bsdf.fabric().threads[j];
+      const int n = bsdf.sample_count(j);
+      const double gs = seed_bandwidth_from_std_dev(p.gamma_s), gv = seed_bandwidth_from_std_dev(p.gamma_v);
+      dvec3 surf(0.0), vol(0.0);
+      for (int k = 0; k < n; ++k, ++s) {
+        const ThreadFrame tf = thread_frame(frame, j, bsdf.tilt(j, k));
+        const double T = tables.value(s, g.sharpness, xi_local, wo_local);  // Eq. 10
+        if (T <= 0.0) continue;
+        const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
+        const FiberAngles o = fiber_angles(tf, wo);
+        const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
+        LinearSdf sdf;
+        if (visibility && visibility->sdf) {
+          sdf.on = true;
+          sdf.theta = sg.theta_k;
+          visibility->sdf(int(sg_index), tf, sg.theta_k, sg.phi_k, sdf.d, sdf.d_dtheta, sdf.d_dphi);
+        }
+
+        // The smooth factors at a lobe's peak θ_i = θ_l, φ_i = φ_k. dω = cos θ dθ dφ gives the
+        // second cos θ_l beside the model's own.
+        auto smooth = [&](double theta_l, double& fresnel_r, double& geometry) {
+          const double theta_d = 0.5 * (theta_l - o.theta);
+          const double phi_d = wrap_angle(sg.phi_k - o.phi);
+          const double cos_d = std::cos(theta_d);
+          fresnel_r = fresnel_dielectric(p.eta, cos_d * std::cos(0.5 * phi_d));
+          geometry = std::cos(theta_l) * std::cos(theta_l) / std::max(cos_d * cos_d, kModelDenominatorFloor);
+          return std::cos(0.5 * phi_d);
+        };
+        // Surface lobe: g^u(θ_h; γ_s) ≈ g^c(θ_i; −θ_o, 2γ_s)/(√π γ_s), merged with the SG's.
+        {
+          const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gs));
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          double fr = 0, geo = 0;
+          const double cos_half = smooth(l.mu, fr, geo);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
+                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
+          surf += dvec3(T * l.alpha * fr * cos_half * geo * I);
+        }
+        // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
+        {
+          const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gv));
+          double fr = 0, geo = 0;
+          smooth(l.mu, fr, geo);
+          const double t = 1.0 - fr;
+          const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
+          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
+                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
+          const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
+                              std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
+
+          smooth(sg.theta_k, fr, geo);
+          const double td = 1.0 - fr;
+          const double spk = lobe_sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
+          const double Ik =
+              pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk,
+                            horizon_ratio(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
+          const double iso = p.kd * td * td * geo /
+                             std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;
+          vol += T * (lobe + iso) * p.albedo;
+        }
+      }
+      out.surface += g.amplitude * surf / double(n);
+      out.volume += g.amplitude * vol / double(n);
+    }
+  }
+  out.radiance = out.surface + out.volume;
+  return out;
+}
+
+}  // namespace weft

@@ -1,0 +1,208 @@
+// Seed 000 §3, Eq. 8–14, as one function, iwasaki_radiance(): for each SG k and tangent sample t,
+//   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids)
+//   × the circular-Gaussian product of the SG with each longitudinal lobe (Eq. 11, 13)
+//   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
+//   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
+//   and the surface's horizon as a second linear boundary (closed-form H, the smaller one wins).
+// The same steps as render/methods/iwasaki/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
+// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric), erf.glsl and
+// hemisphere_grid.glsl before it.
+// Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
+// fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
+#define MAX_SGS 40
+#define MAX_TABLES 512
+const float HALF_PI = 1.57079632679490;
+
+uniform vec3 u_eye;
+uniform int u_sg_count;
+uniform vec3 u_sg_axis[MAX_SGS];
+uniform vec3 u_sg_amplitude[MAX_SGS];
+uniform float u_sg_sigma[MAX_SGS];    // σ_k = √(2/λ_k)
+uniform ivec2 u_sg_levels[MAX_SGS];   // the two λ levels of T (WeightingTables::level_weights)
+uniform float u_sg_level_w[MAX_SGS];  // weight of the second
+
+uniform highp sampler2DArray u_t_u;   // U factors: ξ node grid, 4 ranks per layer
+uniform highp sampler2DArray u_t_v;   // V factors: ω_o node grid
+uniform ivec2 u_tables[MAX_TABLES];   // (first layer, layers) of table d·levels + l
+uniform int u_levels;
+uniform int u_sample_table[2 * MAX_TANGENT_SAMPLES];  // sample s (thread 0's, then thread 1's) → d
+uniform float u_xi_n;
+uniform float u_wo_n;
+
+uniform bool u_visibility;
+uniform highp sampler2D u_sg_visibility;  // (d, ∂d/∂θ', ∂d/∂φ') per (vertex, SG): SgVisibilityTexture
+uniform int u_sg_visibility_per_row;      // vertices per texel row
+uniform highp sampler3D u_kappa;      // κ·s over (β, σ', σ_l) as x, y, z
+uniform vec3 u_kappa_n;               // nodes along σ_l, σ', β
+uniform vec2 u_kappa_sigma;           // σ range (min, max)
+
+// Node grid of n nodes: node i at texel centre (i + ½)/n, s = −1 + 2i/(n−1).
+vec2 node_texcoord(vec2 s, float n) { return s * (0.5 * (n - 1.0) / n) + 0.5; }
+
+// Σ_r U_r(ξ)·V_r(ω_o) of table `index`.
+float table_dot(int index, vec2 xi_tc, vec2 wo_tc) {
+  ivec2 e = u_tables[index];
+  float sum = 0.0;
+  for (int l = 0; l < e.y; ++l) {
+    float layer = float(e.x + l);
+    sum += dot(texture(u_t_u, vec3(xi_tc, layer)), texture(u_t_v, vec3(wo_tc, layer)));
+  }
+  return sum;
+}
+
+// --- core/circular_gaussian.cpp
+struct Lobe { float alpha; float mu; float sigma; };
+Lobe lobe_product(Lobe a, Lobe b) {
+  float k1 = 2.0 / (a.sigma * a.sigma), k2 = 2.0 / (b.sigma * b.sigma);
+  float c = k1 * cos(a.mu) + k2 * cos(b.mu);
+  float s = k1 * sin(a.mu) + k2 * sin(b.mu);
+  float k3 = length(vec2(c, s));
+  float h = sin(0.5 * (a.mu - b.mu));
+  float denom = k3 + k1 + k2;
+  return Lobe(a.alpha * b.alpha * (denom > 0.0 ? exp(-4.0 * k1 * k2 * h * h / denom) : 1.0),
+              k3 > 0.0 ? atan(s, c) : a.mu, sqrt(2.0 / k3));
+}
+// iwasaki.cpp's lobe_sigma_prime: cos θ·cos θ_k kept ≥ 1e−6 (σ' = ∞ would make ∞·0 = NaN).
+float sigma_prime(float sigma_k, float theta, float theta_k) { return sigma_k / sqrt(max(cos(theta) * cos(theta_k), 1e-6)); }
+float pair_integral(float theta_l, float sigma_l, float phi_k, float sp) {
+  float a = erf_nr((HALF_PI - theta_l) / sigma_l) - erf_nr((-HALF_PI - theta_l) / sigma_l);
+  float b = erf_nr((HALF_PI - phi_k) / sp) - erf_nr((-HALF_PI - phi_k) / sp);
+  return 0.25 * PI * sigma_l * sp * a * b;
+}
+
+// --- methods/iwasaki_visibility.cpp: (d, ∂d/∂θ', ∂d/∂φ') of SG k blended over the corners
+// (step 2), then ∇d carried to a sample frame's (θ, φ) (step 3).
+vec3 sg_visibility(int vertex, int k) {
+  int p = u_sg_visibility_per_row;
+  return texelFetch(u_sg_visibility, ivec2((vertex - (vertex / p) * p) * u_sg_count + k, vertex / p), 0).rgb;
+}
+vec3 sdf_in_sample_frame(vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b, float theta, float phi, vec3 s) {
+  float ct = cos(theta), st = sin(theta), cp = cos(phi), sp = sin(phi);
+  vec3 radial = cp * np + sp * b;
+  vec3 w = st * t + ct * radial;
+  vec3 dw_dtheta = ct * t - st * radial;
+  vec3 dw_dphi = ct * (-sp * np + cp * b);
+  float wn = dot(w, n), wv = dot(w, v);
+  float cos2 = max(wn * wn + wv * wv, 1e-8);
+  vec3 dtheta_v = u / sqrt(cos2);
+  vec3 dphi_v = (wn * v - wv * n) / cos2;
+  return vec3(s.x, s.y * dot(dtheta_v, dw_dtheta) + s.z * dot(dphi_v, dw_dtheta),
+              s.y * dot(dtheta_v, dw_dphi) + s.z * dot(dphi_v, dw_dphi));
+}
+// --- bake/sigmoid_gain.cpp's SigmoidGainTable::h.
+float visibility_h(float sigma_l, float sp, vec3 s) {
+  float len = length(s.yz);
+  if (len == 0.0) return s.x > 0.0 ? 1.0 : (s.x < 0.0 ? 0.0 : 0.5);
+  float spread = sqrt(0.5 * (sigma_l * sigma_l * s.y * s.y + sp * sp * s.z * s.z) / (len * len));
+  float range = log(u_kappa_sigma.y / u_kappa_sigma.x);
+  float ul = clamp(log(clamp(sigma_l, u_kappa_sigma.x, u_kappa_sigma.y) / u_kappa_sigma.x) / range * (u_kappa_n.x - 1.0), 0.0, u_kappa_n.x - 1.0);
+  float up = clamp(log(clamp(sp, u_kappa_sigma.x, u_kappa_sigma.y) / u_kappa_sigma.x) / range * (u_kappa_n.y - 1.0), 0.0, u_kappa_n.y - 1.0);
+  float ub = clamp(atan(abs(s.z), abs(s.y)) / HALF_PI * (u_kappa_n.z - 1.0), 0.0, u_kappa_n.z - 1.0);
+  float g = texture(u_kappa, (vec3(ub, up, ul) + 0.5) / u_kappa_n.zyx).r;
+  return 1.0 / (1.0 + exp(-(g / spread) * s.x / len));
+}
+
+// --- iwasaki.cpp's horizon_ratio: the surface's horizon as a linear visibility boundary at the
+// lobe's peak; hz = (t·n, n'·n, b·n) of the sample frame.
+float horizon_h(float theta, float phi, float sigma_l, float sp, vec3 hz) {
+  float ct = cos(theta), st = sin(theta), cp = cos(phi), sn = sin(phi);
+  float radial = cp * hz.y + sn * hz.z;
+  float h = st * hz.x + ct * radial;
+  float spread = length(vec2((ct * hz.x - st * radial) * sigma_l, ct * (cp * hz.z - sn * hz.y) * sp));
+  if (spread == 0.0) return h > 0.0 ? 1.0 : (h < 0.0 ? 0.0 : 0.5);
+  return 0.5 * erfc_nr(-h / spread);
+}
+
+// ∫∫ g^c g^c V' of one lobe (Eq. 12–13); `sdf` = (d, ∂d/∂θ, ∂d/∂φ) looked up once per (SG,
+// sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf);
+// V' is the horizon's alone, or the smaller of the horizon's and the SDF's (iwasaki.cpp).
+float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
+  float i = pair_integral(theta_l, sigma_l, phi_k, sp);
+  float h = horizon_h(theta_l, phi_k, sigma_l, sp, hz);
+  if (!u_visibility) return i * h;
+  return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
+}
+
+// Outgoing radiance at a cloth point: `corners` are the vertices whose SDF grids are blended
+// with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per vertex).
+vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {
+  vec3 n = normalize(normal);
+  vec3 wo = normalize(u_eye - position);
+  if (dot(n, wo) < 0.0) n = -n;  // thin cloth seen from behind: shade the side facing the eye
+  vec3 u = normalize(warp - dot(warp, n) * n);
+  vec3 v = cross(n, u);
+  vec3 wo_local = vec3(dot(wo, u), dot(wo, v), dot(wo, n));
+  vec3 surface = vec3(0.0), volume = vec3(0.0);
+  if (wo_local.z > 0.0) {
+    vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
+    for (int k = 0; k < u_sg_count; ++k) {
+      vec3 xi = u_sg_axis[k];
+      vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
+      float sigma_k = u_sg_sigma[k];
+      int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
+      float lw = u_sg_level_w[k];
+      vec3 vis_k = vec3(0.0);
+      if (u_visibility) {
+        vis_k = bary.x * sg_visibility(corners.x, k);
+        // Per vertex the weights are (1, 0, 0): the other corners cost two fetches for nothing.
+        if (bary.y != 0.0 || bary.z != 0.0)
+          vis_k += bary.y * sg_visibility(corners.y, k) + bary.z * sg_visibility(corners.z, k);
+      }
+      for (int j = 0; j < 2; ++j) {
+        Thread p = u_threads[j];
+        int count = p.samples;
+        vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
+        float gs = sqrt(2.0) * p.gamma_s, gv = sqrt(2.0) * p.gamma_v;  // seed bandwidths
+        float surf = 0.0;
+        vec3 vol = vec3(0.0);
+        for (int q = 0; q < count; ++q) {
+          int d = u_sample_table[j * MAX_TANGENT_SAMPLES + q];
+          float T = 0.0;
+          if (lw < 1.0) T += (1.0 - lw) * table_dot(d * u_levels + l0, xi_tc, wo_tc);
+          if (lw > 0.0) T += lw * table_dot(d * u_levels + l1, xi_tc, wo_tc);
+          if (T <= 0.0) continue;
+          float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + q];
+          float ca = cos(alpha), sa = sin(alpha);
+          vec3 t = ca * along + sa * n, np = -sa * along + ca * n;
+          FiberAngles fk = fiber_angles(along, axis, n, alpha, xi);
+          FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
+          float theta_k = fk.theta, phi_k = fk.phi;
+          Lobe light = Lobe(1.0, theta_k, sigma_k);
+          vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
+          vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
+          float phi_d = wrap_angle(phi_k - fo.phi);
+          float cos_half = cos(0.5 * phi_d);
+          // Surface lobe.
+          {
+            Lobe l = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gs), -fo.theta, 2.0 * gs));
+            float sp = sigma_prime(sigma_k, l.mu, theta_k);
+            float cos_d = cos(0.5 * (l.mu - fo.theta));
+            float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
+            float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
+            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
+          }
+          // Volume lobe and the isotropic k_d part.
+          {
+            Lobe l = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gv), -fo.theta, 2.0 * gv));
+            float cos_d = cos(0.5 * (l.mu - fo.theta));
+            float tr = 1.0 - fresnel_dielectric(p.eta, cos_d * cos_half);
+            float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
+            float sp = sigma_prime(sigma_k, l.mu, theta_k);
+            float lobe = (1.0 - p.kd) * l.alpha * tr * tr * geo / max(cos(l.mu) + cos(fo.theta), DENOMINATOR_FLOOR) *
+                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
+            float cos_dk = cos(0.5 * (theta_k - fo.theta));
+            float tk = 1.0 - fresnel_dielectric(p.eta, cos_dk * cos_half);
+            float geok = cos(theta_k) * cos(theta_k) / max(cos_dk * cos_dk, DENOMINATOR_FLOOR);
+            float spk = sigma_prime(sigma_k, theta_k, theta_k);
+            float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
+                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz);
+            vol += T * (lobe + iso) * p.albedo;
+          }
+        }
+        surface += u_sg_amplitude[k] * surf / float(count);
+        volume += u_sg_amplitude[k] * vol / float(count);
+      }
+    }
+  }
+  return surface + volume;
+}

@@ -1,0 +1,183 @@
+#include "methods/iwasaki/iwasaki_cloth.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/gl_error.h"
+#include "methods/bundle_visibility.h"
+#include "methods/fabric_uniforms.h"
+#include "methods/program_cloth.h"
+#include "methods/iwasaki/vertex_pass.h"
+#include "shaders/embedded_shaders.h"
+
+namespace weft::gpu {
+
+namespace {
+constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.glsl
+
+// Per pixel: the cloth's own draw. Per vertex: the fragment pass over the vertex texels
+// (vertex_pass.h); the draw that interpolates its results is draw_program_.
+GlProgram make_program(IwasakiCloth::Evaluation e) {
+  if (e == IwasakiCloth::Evaluation::per_vertex)
+    return GlProgram(fullscreen_triangle_vs(),
+                     program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
+  return GlProgram(program_source({"iwasaki.vert"}), program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"}));
+}
+
+// The SGs a draw shades with: a fit's empty lobes (zero amplitude) do no work.
+SgLighting shaded(const SgLighting& sgs) {
+  SgLighting out;
+  for (const auto& g : sgs)
+    if (std::max({g.amplitude.r, g.amplitude.g, g.amplitude.b}) > 0.0) out.push_back(g);
+  return out;
+}
+
+bool same_lighting(const SgLighting& a, const SgLighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness) return false;  // amplitude: no effect on visibility
+  return true;
+}
+}  // namespace
+
+struct IwasakiCloth::Object {
+  explicit Object(GpuMesh m) : mesh(std::move(m)) {}
+  GpuMesh mesh;
+  std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
+  std::unique_ptr<ClothBsdf> bsdf;
+  const WeightingTablesTexture* tables = nullptr;
+  // Occluded objects: the bundle's PCA and the mesh (vertex frames), and the per-(vertex, SG)
+  // values for the lighting they were last computed for.
+  const ObjectVisibility* visibility = nullptr;
+  const TriangleMesh* source = nullptr;
+  std::unique_ptr<SgVisibilityTexture> sg_visibility;
+  SgLighting computed_for;
+};
+
+IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
+    : data_(std::move(data)), evaluation_(evaluation), program_(make_program(evaluation)) {
+  if (evaluation_ == Evaluation::per_vertex)
+    draw_program_ = std::make_unique<GlProgram>(program_source({"iwasaki_vertex.vert"}), program_source({"iwasaki_vertex.frag"}));
+  if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
+  if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
+}
+
+IwasakiCloth::~IwasakiCloth() = default;
+
+const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
+  auto it = tables_.find(fabric.name);
+  if (it != tables_.end()) return *it->second;
+  const auto t = data_->tables.find(fabric.name);
+  if (t == data_->tables.end()) throw GpuError("method iwasaki: no weighting tables baked for fabric '" + fabric.name + "'");
+  return *tables_.emplace(fabric.name, std::make_unique<WeightingTablesTexture>(t->second)).first->second;
+}
+
+size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) {
+  const ObjectVisibility* vis = checked_visibility(*data_, scene_index, mesh);
+  const bool per_vertex = evaluation_ == Evaluation::per_vertex;
+  std::unique_ptr<Object> o;
+  if (vis && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices
+    std::vector<glm::vec3> corners, bary;
+    o = std::make_unique<Object>(GpuMesh(deindexed(mesh, corners, bary)));
+    o->mesh.add_attribute(4, corners);
+    o->mesh.add_attribute(5, bary);
+  } else {
+    o = std::make_unique<Object>(GpuMesh(mesh));
+  }
+  if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
+  if (vis) {
+    o->visibility = vis;
+    o->source = &mesh;
+    o->sg_visibility = std::make_unique<SgVisibilityTexture>();
+  }
+  objects_.push_back(std::move(o));
+  set_fabric(objects_.size() - 1, fabric);
+  return objects_.size() - 1;
+}
+
+std::optional<SgVisibility> IwasakiCloth::prepare_lighting(size_t handle, const SgLighting& sgs) const {
+  const Object& o = *objects_.at(handle);
+  if (!o.visibility) return std::nullopt;
+  return SgVisibility::compute(*o.visibility, *o.source, shaded(sgs));
+}
+
+void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) {
+  Object& o = *objects_.at(handle);
+  if (!o.visibility) return;
+  const SgLighting drawn = shaded(sgs);
+  if (values.vertices != o.visibility->vertex_count() || values.sgs != int(drawn.size()))
+    throw GpuError("method iwasaki: visibility computed for another object or lighting");
+  o.sg_visibility->upload(values);
+  o.computed_for = drawn;
+}
+
+bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->visibility != nullptr; }
+
+void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
+  Object& o = *objects_.at(handle);
+  const WeightingTablesTexture& t = tables_for(fabric);
+  auto bsdf = std::make_unique<ClothBsdf>(fabric, t.tables().tangent_samples);
+  for (int j = 0, s = 0; j < 2; ++j)
+    for (int k = 0; k < bsdf->sample_count(j); ++k, ++s)
+      if (std::abs(bsdf->tilt(j, k) - t.tables().tilts[s]) > 1e-9)
+        throw GpuError("method iwasaki: the tables of fabric '" + fabric.name + "' were baked for other tangent samples");
+  o.bsdf = std::move(bsdf);
+  o.tables = &t;
+}
+
+void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
+  Object& o = *objects_.at(handle);
+  if (sgs.size() > kMaxSgs) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
+  program_.use();
+  glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform3f(program_.uniform("u_eye"), eye.x, eye.y, eye.z);
+  upload_fabric(program_, *o.bsdf);
+  o.tables->bind(program_, 0);
+  const WeightingTables& t = o.tables->tables();
+  // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
+  std::vector<float> axes, amplitudes, sigmas, level_w;
+  std::vector<GLint> levels;
+  const SgLighting drawn = shaded(sgs);
+  for (const auto& g : drawn) {
+    axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
+    amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
+    sigmas.push_back(float(sg_bandwidth(g.sharpness)));
+    int l0 = 0, l1 = 0;
+    double f = 0;
+    t.level_weights(g.sharpness, l0, l1, f);
+    levels.insert(levels.end(), {l0, l1});
+    level_w.push_back(float(f));
+  }
+  const int count = int(drawn.size());
+  glUniform1i(program_.uniform("u_sg_count"), count);
+  if (count > 0) {
+    glUniform3fv(program_.uniform("u_sg_axis"), count, axes.data());
+    glUniform3fv(program_.uniform("u_sg_amplitude"), count, amplitudes.data());
+    glUniform1fv(program_.uniform("u_sg_sigma"), count, sigmas.data());
+    glUniform2iv(program_.uniform("u_sg_levels"), count, levels.data());
+    glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
+  }
+  glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
+  if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
+    o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn));
+    o.computed_for = drawn;
+  }
+  // Samplers of every declared unit get a texture of their type, used or not.
+  if (o.sg_visibility) o.sg_visibility->bind(program_, 2);
+  if (kappa_) kappa_->bind(program_, 3);
+  if (!o.sg_visibility) glUniform1i(program_.uniform("u_sg_visibility"), 2);
+  if (!kappa_) glUniform1i(program_.uniform("u_kappa"), 3);
+  if (!o.pass) {
+    o.mesh.draw();
+    return;
+  }
+  o.pass->run(program_, 4);
+  draw_program_->use();
+  glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  o.pass->bind_result(*draw_program_, 0);
+  o.mesh.draw();
+}
+
+}  // namespace weft::gpu

@@ -1,0 +1,57 @@
+#pragma once
+// Methods iwasaki and iwasaki_vertex's GPU side: cloth drawn with seed 000's method (iwasaki.glsl,
+// called from iwasaki.frag or iwasaki_vertex_pass.frag) from a bundle's baked
+// data: per fabric the weighting-table textures, per occluded object the per-SG visibility
+// (and, per pixel, a de-indexed mesh), κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
+// cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
+// interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in a fragment pass with one texel
+// per vertex, vertex_pass.h).
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "runtime/iwasaki_bundle.h"
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+#include "gl/gl_program.h"
+#include "gl/gpu_mesh.h"
+#include "methods/cloth_method.h"
+#include "methods/iwasaki/iwasaki_textures.h"
+#include "methods/iwasaki/iwasaki_visibility.h"
+#include "scene/scene.h"
+
+namespace weft::gpu {
+
+class IwasakiCloth : public ClothMethod {
+public:
+  enum class Evaluation { per_pixel, per_vertex };
+  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation = Evaluation::per_pixel);
+  ~IwasakiCloth() override;
+  size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) override;
+  void set_fabric(size_t handle, const Fabric& fabric) override;
+  // draw() computes the object's per-(vertex, SG) visibility itself when the lighting's axes or
+  // sharpnesses changed since it was last set; a kiosk computes it off the render thread instead:
+  // prepare_lighting is safe on any thread (it reads only what add_object fixed), set_lighting
+  // uploads its result (GL thread). Both take the lighting as given to draw().
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) override;
+  std::optional<SgVisibility> prepare_lighting(size_t handle, const SgLighting& sgs) const override;  // empty: unoccluded
+  void set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) override;
+  bool has_visibility(size_t handle) const;
+
+private:
+  struct Object;
+  const WeightingTablesTexture& tables_for(const Fabric& fabric);
+  std::shared_ptr<const IwasakiBundleData> data_;
+  Evaluation evaluation_;
+  GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
+  std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
+  std::unique_ptr<KappaTexture> kappa_;
+  std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
+  std::vector<std::unique_ptr<Object>> objects_;
+};
+
+}  // namespace weft::gpu

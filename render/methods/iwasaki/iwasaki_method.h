@@ -1,0 +1,11 @@
+#pragma once
+// Registry entries of seed 000's method: `iwasaki` (per pixel) and `iwasaki_vertex` (per vertex,
+// radiance interpolated: same tables, a fraction of the cost). Both draw from a bundle's seed
+// 000 tables (iwasaki_cloth.h) and share one C++ twin (iwasaki.h); the bench's C++ evaluation
+// is iwasaki's, without visibility, on small tables baked in memory.
+#include "methods/runtime_method.h"
+
+namespace weft::methods {
+RuntimeMethod iwasaki_method();
+RuntimeMethod iwasaki_vertex_method();
+}  // namespace weft::methods

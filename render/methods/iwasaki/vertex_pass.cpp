@@ -1,0 +1,74 @@
+#include "methods/iwasaki/vertex_pass.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "gl/gl_error.h"
+
+namespace weft::gpu {
+
+namespace {
+constexpr int kWidth = 256;  // texels per row: small rows keep the target near square
+
+void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height) {
+  std::vector<float> texels(size_t(width) * height * 4, 0.0f);
+  for (size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < 3; ++c) texels[i * 4 + c] = float(values[i][c]);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+}  // namespace
+
+VertexPass::VertexPass(const TriangleMesh& mesh)
+    : count_(int(mesh.positions.size())),
+      width_(std::clamp(count_, 1, kWidth)),
+      height_(std::max(1, (count_ + kWidth - 1) / kWidth)) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (height_ > max_size)
+    throw GpuError("per-vertex pass: " + std::to_string(count_) + " vertices do not fit a " + std::to_string(kWidth) + "×" +
+                   std::to_string(max_size) + " texture");
+  if (mesh.normals.size() != mesh.positions.size() || mesh.warps.size() != mesh.positions.size())
+    throw GpuError("per-vertex pass: the mesh needs a normal and a warp per vertex");
+  upload(position_, mesh.positions, width_, height_);
+  upload(normal_, mesh.normals, width_, height_);
+  upload(warp_, mesh.warps, width_, height_);
+  target_ = std::make_unique<OffscreenTarget>(width_, height_, /*full_float=*/true);
+  check_gl("uploading the per-vertex pass inputs");
+}
+
+void VertexPass::run(const GlProgram& program, int first_unit) const {
+  GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
+  const GlTexture* inputs[3] = {&position_, &normal_, &warp_};
+  const char* names[3] = {"u_vertex_position", "u_vertex_normal", "u_vertex_warp"};
+  for (int i = 0; i < 3; ++i) {
+    glActiveTexture(GL_TEXTURE0 + first_unit + i);
+    glBindTexture(GL_TEXTURE_2D, inputs[i]->id());
+    glUniform1i(program.uniform(names[i]), first_unit + i);
+  }
+  glUniform1i(program.uniform("u_vertex_width"), width_);
+  glUniform1i(program.uniform("u_vertex_count"), count_);
+  target_->bind();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  if (depth) glEnable(GL_DEPTH_TEST);
+  if (blend) glEnable(GL_BLEND);
+}
+
+void VertexPass::bind_result(const GlProgram& program, int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, target_->colour_texture());
+  glUniform1i(program.uniform("u_vertex_radiance"), unit);
+  glUniform1i(program.uniform("u_vertex_width"), width_);
+}
+
+}  // namespace weft::gpu

@@ -1,0 +1,10 @@
+#pragma once
+// Method `mizutani`'s registry entry (seed 001): the weighting tables of seed 000 with an
+// azimuthal table (mizutani.glsl, textures in mizutani_textures.h; C++ twin mizutani.h). It runs
+// with the paper's tangent samples, which its tables are baked for: a bundle's seed 000 tables
+// serve when baked for the same samples, else it bakes them (a minute on two cores).
+#include "methods/runtime_method.h"
+
+namespace weft::methods {
+RuntimeMethod mizutani_method();
+}  // namespace weft::methods

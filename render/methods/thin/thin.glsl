@@ -1,0 +1,44 @@
+// Method `thin` (seed 004): optically thin layer — alpha e^{−τ/μ}, single-scatter diffuse
+// reflection/transmission from the SG irradiance on both sides, composed over a reflection
+// method: the program links one definition of thin_reflection() (thin_over_sgpoint.glsl now;
+// an iwasaki one plugs in the same way). Mirrors methods/thin/thin.cpp; needs sg_lighting.glsl.
+// Radiance reflected by the cloth's own reflection method, n facing the viewer.
+vec3 thin_reflection(vec3 n, vec3 u, vec3 wo);
+
+uniform float u_thin_tau;
+uniform vec3 u_thin_albedo;
+
+float thin_alpha(float mu) { return exp(-u_thin_tau / max(mu, 1e-4)); }
+vec3 thin_reflection_kernel(float mu, float mu0) {
+  mu = max(mu, 1e-4); mu0 = max(mu0, 1e-4);
+  return u_thin_albedo / (4.0 * SG_PI) * (-sg_expm1(-u_thin_tau * (1.0 / mu + 1.0 / mu0)) / (mu + mu0));
+}
+vec3 thin_transmission_kernel(float mu, float mu0) {
+  mu = max(mu, 1e-4); mu0 = max(mu0, 1e-4);
+  float k;
+  if (abs(mu - mu0) < 1e-3) {
+    float m = 0.5 * (mu + mu0);
+    k = u_thin_tau / (m * m) * exp(-u_thin_tau / m);
+  } else {
+    k = (exp(-u_thin_tau / mu) - exp(-u_thin_tau / mu0)) / (mu - mu0);
+  }
+  return u_thin_albedo / (4.0 * SG_PI) * k;
+}
+vec3 thin_scatter(vec3 n, vec3 wo) {
+  float mu = dot(n, wo);
+  if (mu <= 0.0) return vec3(0.0);
+  vec3 l = vec3(0.0);
+  for (int k = 0; k < u_sg_count; ++k) {
+    float c = dot(u_sg_axis[k], n);
+    float mu_front = sg_effective_cosine(u_sg_sharpness[k], c), mu_back = sg_effective_cosine(u_sg_sharpness[k], -c);
+    l += sg_irradiance(k, n) * thin_reflection_kernel(mu, mu_front);
+    l += sg_irradiance(k, -n) * thin_transmission_kernel(mu, mu_back);
+  }
+  return l;
+}
+// Premultiplied source and alpha; n is turned to face the viewer here.
+vec4 thin_radiance(vec3 n, vec3 u, vec3 wo) {
+  if (dot(n, wo) < 0.0) n = -n;
+  float a = thin_alpha(dot(n, wo));
+  return vec4((1.0 - a) * thin_reflection(n, u, wo) + thin_scatter(n, wo), a);
+}

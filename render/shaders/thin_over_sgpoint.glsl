@@ -1,7 +1,0 @@
-// `thin`'s reflection by sgpoint: each SG as a directional light of its whole power, full
-// model (needs microcylinder.glsl and sg_lighting.glsl). Mirrors methods/sgpoint.cpp.
-vec3 thin_reflection(vec3 n, vec3 u, vec3 wo) {
-  vec3 l = vec3(0.0);
-  for (int k = 0; k < u_sg_count; ++k) l += sg_power(k) * cloth_integrand(n, u, u_sg_axis[k], wo);
-  return l;
-}
