@@ -15,7 +15,7 @@ PACKAGES=(
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libgtest-dev libgmock-dev
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
-  qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/KIOSK_VM.md)
+  qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
 )
 BUILD_DIR=${WEFT_BUILD_DIR:-build}
 

@@ -1,5 +1,5 @@
 #pragma once
-// The live light probe: camera frames -> 10 SGs, off the render thread (issue 8).
+// The live light probe: camera frames -> 10 SGs, off the render thread.
 //
 // One update: capture a bracket of exposures (`stops` frames, `stop_spacing` stops apart) ->
 // merge to linear HDR radiance (hdr_merge.h) -> unwrap the mirror ball to an equirect map in the

@@ -21,7 +21,7 @@ struct SceneVisibilityOptions {
   int resolution = 128;
   // Floors and occluders (Lambertian, methods/lambert_visibility.h) bake at min(resolution, this):
   // the cosine-weighted lobes they are shaded with are broad. Against ray-cast quadrature
-  // (tests/lambert_visibility_test.cpp) 32² 1.9 %, 64² 2.0 %, 128² 2.25 % relative RMSE, while
+  // (tests/methods/lambert_visibility_test.cpp) 32² 1.9 %, 64² 2.0 %, 128² 2.25 % relative RMSE, while
   // the basis costs 4× the bytes per doubling (the pillow's floor: 5.3 MB at 128²).
   int lambertian_resolution = 64;
   int supersample = 1;

@@ -160,7 +160,7 @@ void stability_section(std::ostream& md, const BenchOptions& a, const BenchResul
        << "relative RMSE against the canonical model by quadrature (1 % tolerance) (for `thin`: (1-α)·canonical + the thin layer "
        << "integrated exactly). iwasaki and mizutani read tables baked for the stress fabrics at grid " << kStressTableGrid
        << " with the paper's tangent samples (iwasaki without visibility), so their error includes those few samples "
-          "against the reference's 16. NaN/Inf/negative counts must be 0 (tests/method_stability_test.cpp asserts it at "
+          "against the reference's 16. NaN/Inf/negative counts must be 0 (tests/bench/method_stability_test.cpp asserts it at "
        << "150 points per case).\n\n| method |";
     std::vector<std::string> case_names;
     for (const auto& c : stability)

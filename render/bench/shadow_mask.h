@@ -1,5 +1,5 @@
 #pragma once
-// The thin-occluder stress case's shadow region (issue 6, the teapot scene): which cloth pixels
+// The thin-occluder stress case's shadow region (the teapot scene): which cloth pixels
 // of the scene camera's view lie in the shadow of the lighting's sun, the SG of highest peak
 // radiance, found by one Embree ray per pixel toward its axis. It depends on the geometry and
 // the SGs only, never on a method, so it can score every method's shadows alike.

@@ -1,5 +1,5 @@
 #pragma once
-// Stress cases that push the methods past their assumptions (issue 6 "Stability"): narrow
+// Stress cases that push the methods past their assumptions: narrow
 // lights (λ = 10⁴), a window (a strip of narrow SGs: narrow anisotropic light), grazing views (θ_o to 89°), very glossy threads (γ_s = 1°), velvet pile
 // at 90°, back light, an all-black and a single-hot-texel environment. Each case is a fabric,
 // a set of SGs and a set of (frame, ω_o) points; a sweep evaluates a method at every point,

@@ -39,7 +39,7 @@ ScaledCircularGaussian product(const ScaledCircularGaussian& a, const ScaledCirc
 // exact (ω·ξ − 1 = (cos(θ_i−θ_k) − 1) + cosθ_i cosθ_k (cos(φ_i−φ_k) − 1)); the approximation the
 // paper makes is to freeze σ'_k at one θ (θ_l in Eq. 13) so the two factors separate. That is good
 // near the thread frame's equator (θ ≈ 0, where cos θ is flat) and degrades towards its poles.
-// Measured (tests/sg_math_test.cpp; L1 error over the sphere relative to ∫G, σ' frozen at θ_k):
+// Measured (tests/core/sg_math_test.cpp; L1 error over the sphere relative to ∫G, σ' frozen at θ_k):
 // ≈ 0.13·σ_k² with ξ_k on the equator (0.026, 0.0025, 0.00025 for λ = 10, 100, 1000); first order
 // in σ_k·tanθ_k away from it: 0.0073 / 0.022 / 0.072 at θ_k = 30° / 60° / 80° for λ = 1000,
 // 0.072 / 0.21 / 0.38 for λ = 10.

@@ -40,7 +40,7 @@ double sg_sphere_integral(double sharpness);
 // is Tokuyoshi's (2022, "Accurate Diffuse Lighting from Spherical Gaussian Lights") fit: a lerp
 // between the exact integrals for c = −1 and c = +1, 2π(1−e^{−λ})/λ·(e^{−λ}, 1), with factor
 // ½ + ½·erf(t·c)/erf(t), t = λ·√((λ/2 + A)/((λ + B)λ + C)). Exact at c ∈ {−1, 0, 1} and as
-// λ → 0. Measured error (tests/sg_math_test.cpp, 16 λ in [0.01, 10⁴], c every 2.25°): at most
+// λ → 0. Measured error (tests/core/sg_math_test.cpp, 16 λ in [0.01, 10⁴], c every 2.25°): at most
 // 0.44 % of the whole-sphere integral (worst at λ ≈ 10, c ≈ 0.59), and at most 2.0 % of the value
 // itself wherever that is at least 10 % of the whole-sphere integral (worst at λ ≈ 5, c ≈ −0.59).
 double sg_hemisphere_integral(double sharpness, double cos_axis_normal);

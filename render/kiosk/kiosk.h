@@ -66,7 +66,7 @@ struct KioskConfig {
   std::string screenshot;                 // PNG of the last frame, tone-mapped; empty: none
   std::vector<int> size{640, 480};        // headless frame size
   // auto: iwasaki_vertex when the bundle has seed 000 tables (the same accuracy as per-pixel
-  // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/gpu/IWASAKI.md),
+  // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/methods/iwasaki/IWASAKI.md),
   // else sgpoint.
   std::string method = "auto";
   double exposure = 1.0;                  // tone mapping

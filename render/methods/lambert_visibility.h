@@ -12,7 +12,7 @@
 //  - H_horizon is H of the surface's own horizon for the same lobe: the bake counts everything
 //    below the surface as occluded, which the clamped cosine has already cut away, so the
 //    ratio keeps only what the occluders take.
-// tests/lambert_visibility_test.cpp holds this against ray-cast quadrature on a shadowed floor:
+// tests/methods/lambert_visibility_test.cpp holds this against ray-cast quadrature on a shadowed floor:
 // 2.0 % relative RMSE (unshadowed 26 %); with the SG's own axis and width instead of G_k · cos
 // 4.1 %, without dividing out the horizon 2.5 %.
 #include <span>

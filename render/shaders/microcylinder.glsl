@@ -1,6 +1,6 @@
 // The microcylinder model of DESIGN.md §2 in GLSL ES 3.0, for runtime methods that evaluate it
 // directly (sgpoint). Mirrors render/core/microcylinder.cpp + cloth_bsdf.cpp term by term;
-// tests/microcylinder_parity_test.cpp pins the two together.
+// tests/gpu/microcylinder_parity_test.cpp pins the two together.
 // Needs: #define MAX_TANGENT_SAMPLES before inclusion.
 
 const float PI = 3.14159265358979;

@@ -1,6 +1,6 @@
 // SG lighting for the SG-lit methods (sheen, mdfrot, thin): the SGs as uniforms, their
 // clamped-cosine irradiance (core/spherical_gaussian.cpp's Tokuyoshi 2024 fit, term by term)
-// and the horizon lift of methods/sg_lights.cpp. Parity: tests/method_parity_test.cpp.
+// and the horizon lift of methods/sg_lights.cpp. Parity: tests/gpu/method_parity_test.cpp.
 // Needs erf.glsl before it.
 #define MAX_SGS 40
 uniform int u_sg_count;

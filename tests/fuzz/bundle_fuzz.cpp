@@ -1,4 +1,4 @@
-// libFuzzer target for the bundle loader (issue 9): any input must either verify or raise a
+// libFuzzer target for the bundle loader: any input must either verify or raise a
 // BundleError; nothing may crash, read out of bounds (ASan) or hand out a span that breaks the
 // format's invariants. Each input is tried as is, and again with its checksums recomputed so the
 // mutations reach the structural checks that lie behind the CRCs.
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bundle/bundle_reader.h"
-#include "bundle_reseal.h"
+#include "support/bundle_reseal.h"
 
 namespace {
 

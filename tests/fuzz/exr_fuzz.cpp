@@ -1,4 +1,4 @@
-// libFuzzer target for environment maps (issue 9): any bytes, written to a file as the kiosk
+// libFuzzer target for environment maps: any bytes, written to a file as the kiosk
 // would find them, either load into a map whose texels are finite and non-negative (NaN/Inf/
 // negative texels clamped, as `--non-finite clamp` does) or raise an EnvMapError. Exceptions
 // from OpenEXR itself must not escape the loader.

@@ -1,4 +1,4 @@
-// libFuzzer target for fabric files (issue 9): any text either parses into a fabric that keeps
+// libFuzzer target for fabric files: any text either parses into a fabric that keeps
 // the loader's promises (finite, physical, a_1 + a_2 ≤ 1, a usable tangent curve) or raises a
 // FabricError; nothing else may escape, crash or read out of bounds.
 #include <cmath>

@@ -1,4 +1,4 @@
-// libFuzzer target for HID input (issue 9). The input is a stream of reports as hidraw would
+// libFuzzer target for HID input. The input is a stream of reports as hidraw would
 // deliver them ([length byte][bytes]…). Each report is decoded on its own (a report that
 // decodes must encode back to the same bytes), then the whole stream goes through the real HID
 // backend (HidKnobSource, with a transport that serves it) into the knob mapper: whatever the

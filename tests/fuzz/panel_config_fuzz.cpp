@@ -1,4 +1,4 @@
-// libFuzzer target for the kiosk's panel configuration and its knob state file (issue 9): any
+// libFuzzer target for the kiosk's panel configuration and its knob state file: any
 // text either parses into values inside their documented limits or raises the loader's own
 // error (PanelConfigError, KnobStateError); a state file that parses round-trips exactly.
 #include <cstddef>

@@ -5,7 +5,7 @@
 // the lighting changes (SgVisibility), at the bundle's full SDF resolution, instead of
 // expanding every vertex's grid for the GPU (128² cells × 16 B × 3362 vertices = 880 MB).
 // The GPU (methods/iwasaki/iwasaki.glsl) gets the values as one small texture and does step 3 below;
-// tests/iwasaki_parity_test.cpp pins the two.
+// tests/gpu/iwasaki_parity_test.cpp pins the two.
 //
 // Steps for SG axis ξ_k, seen at a point with frame (n, u, v) through sample frame (t, n', b)
 // at the axis's sample-frame angles (θ_k, φ_k):

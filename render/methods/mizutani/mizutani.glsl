@@ -1,6 +1,6 @@
 // Method `mizutani` (seed 001, DESIGN.md §4) in GLSL ES 3.0: the twin of
 // render/methods/mizutani/mizutani.cpp, term by term (the comments there give the equations);
-// tests/mizutani_parity_test.cpp pins the two together. Needs microcylinder.glsl and
+// tests/gpu/mizutani_parity_test.cpp pins the two together. Needs microcylinder.glsl and
 // hemisphere_grid.glsl first (threads, tilts, fiber_angles; the table grids) and MAX_SGS defined.
 #define MAX_W_TABLES 256
 #define MAX_W_LEVELS 16

@@ -19,7 +19,7 @@
 //    cosθ_i + cosθ_o) linear on 6 equal segments of [−π/2, π/2], each segment in closed form.
 // The isotropic k_d part of the volume lobe has no longitudinal lobe: its Gaussian is the SG's.
 //
-// The GLSL twin is render/methods/mizutani/mizutani.frag; tests/mizutani_parity_test.cpp pins them.
+// The GLSL twin is render/methods/mizutani/mizutani.frag; tests/gpu/mizutani_parity_test.cpp pins them.
 #include <span>
 
 #include "runtime/azimuthal_table.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Method `sgpoint` on the CPU: each SG as a directional light along its axis with the SG's
 // whole power, shading with the full model (ClothBsdf::Point::integrand). The C++ side of
-// methods/sgpoint/sgpoint.frag, whose model part tests/microcylinder_parity_test.cpp pins.
+// methods/sgpoint/sgpoint.frag, whose model part tests/gpu/microcylinder_parity_test.cpp pins.
 #include <span>
 
 #include "core/cloth_bsdf.h"

@@ -8,19 +8,13 @@
 #include "gpu/egl_context.h"
 #include "methods/fabric_uniforms.h"
 #include "gl/gl_program.h"
-#include "gl/offscreen_target.h"
 #include "shaders/embedded_shaders.h"
+#include "support/gpu_parity.h"
 
 using namespace weft;
 using namespace weft::gpu;
 
 namespace {
-
-const char* kVs = R"(#version 300 es
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-  gl_Position = vec4(p, 0.0, 1.0);
-})";
 
 // One (ω_i, ω_o, frame) per pixel, from float textures, so both sides see the same floats.
 const char* kFs = R"(
@@ -33,15 +27,6 @@ void main() {
   colour = vec4(cloth_integrand(n, u, wi, wo), 1.0);
 })";
 
-GLuint float_texture(int w, int h, const std::vector<float>& rgba) {
-  GLuint t;
-  glGenTextures(1, &t);
-  glBindTexture(GL_TEXTURE_2D, t);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return t;
-}
 
 }  // namespace
 
@@ -51,7 +36,7 @@ TEST_P(MicrocylinderParity, GlslMatchesCanonicalModel) {
   EglContext ctx = EglContext::headless();
   const Fabric fabric = load_fabric_preset(GetParam(), WEFT_SOURCE_ASSETS "/fabrics");
   const ClothBsdf bsdf(fabric, 16);
-  GlProgram program(kVs, shader_preamble() + std::string(shaders::source("microcylinder.glsl")) + kFs);
+  GlProgram program(fullscreen_triangle_vs(), shader_preamble() + std::string(shaders::source("microcylinder.glsl")) + kFs);
   upload_fabric(program, bsdf);
 
   const int w = 32, h = 16;
@@ -59,9 +44,6 @@ TEST_P(MicrocylinderParity, GlslMatchesCanonicalModel) {
   std::normal_distribution<float> nd;
   std::vector<float> wi(w * h * 4), wo(w * h * 4), nn(w * h * 4), uu(w * h * 4);
   std::vector<SurfaceFrame> frames(w * h);
-  auto store = [](std::vector<float>& v, int i, glm::vec3 d) {
-    v[4 * i] = d.x, v[4 * i + 1] = d.y, v[4 * i + 2] = d.z, v[4 * i + 3] = 0;
-  };
   for (int i = 0; i < w * h; ++i) {
     // A tilted shading frame per pixel (as on a mesh), and directions at least ~6° above it.
     glm::vec3 n = glm::normalize(glm::vec3(0.3f * nd(rng), 0.3f * nd(rng), 1.0f));
@@ -74,23 +56,12 @@ TEST_P(MicrocylinderParity, GlslMatchesCanonicalModel) {
       }
     };
     const glm::vec3 a = above(), b = above();
-    store(wi, i, a), store(wo, i, b), store(nn, i, n), store(uu, i, u);
+    test::store_direction(wi, i, a), test::store_direction(wo, i, b), test::store_direction(nn, i, n), test::store_direction(uu, i, u);
     frames[i].n = glm::dvec3(n);
     frames[i].u = glm::dvec3(u);
     frames[i].v = glm::cross(frames[i].n, frames[i].u);
   }
-  const GLuint tex[4] = {float_texture(w, h, wi), float_texture(w, h, wo), float_texture(w, h, nn),
-                         float_texture(w, h, uu)};
-  const char* names[4] = {"u_wi", "u_wo", "u_n", "u_u"};
-  for (int k = 0; k < 4; ++k) {
-    glActiveTexture(GL_TEXTURE0 + k);
-    glBindTexture(GL_TEXTURE_2D, tex[k]);
-    glUniform1i(program.uniform(names[k]), k);
-  }
-  OffscreenTarget target(w, h);
-  target.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  const auto px = target.read_rgba();
+  const auto px = test::shade_cases(program, w, h, {{"u_wi", &wi}, {"u_wo", &wo}, {"u_n", &nn}, {"u_u", &uu}});
 
   double worst = 0.0;
   int compared = 0;
@@ -110,7 +81,6 @@ TEST_P(MicrocylinderParity, GlslMatchesCanonicalModel) {
     }
   }
   std::printf("%s: %d values, worst relative difference %.2e\n", GetParam().c_str(), compared, worst);
-  glDeleteTextures(4, tex);
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, MicrocylinderParity,

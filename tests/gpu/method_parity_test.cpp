@@ -14,24 +14,18 @@
 #include "gpu/egl_context.h"
 #include "methods/fabric_uniforms.h"
 #include "gl/gl_program.h"
-#include "gl/offscreen_target.h"
 #include "methods/mdfrot/mdfrot_method.h"
 #include "methods/registry.h"
 #include "methods/sg_lighting_uniforms.h"
 #include "methods/sheen/sheen_method.h"
 #include "methods/thin/thin_method.h"
 #include "shaders/embedded_shaders.h"
+#include "support/gpu_parity.h"
 
 using namespace weft;
 using namespace weft::gpu;
 
 namespace {
-
-const char* kVs = R"(#version 300 es
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-  gl_Position = vec4(p, 0.0, 1.0);
-})";
 
 // One (frame, ω_o) per pixel from float textures; METHOD_CALL is the method's entry point.
 const char* kFsTemplate = R"(
@@ -43,15 +37,6 @@ void main() {
   colour = METHOD_CALL;
 })";
 
-GLuint float_texture(int w, int h, const std::vector<float>& rgba) {
-  GLuint t;
-  glGenTextures(1, &t);
-  glBindTexture(GL_TEXTURE_2D, t);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return t;
-}
 
 SgLighting test_sgs() {
   std::mt19937 rng(5);
@@ -92,7 +77,7 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   for (auto p : parts) fs += shaders::source(p);
   std::string main_src = kFsTemplate;
   main_src.replace(main_src.find("METHOD_CALL"), 11, call);
-  GlProgram program(kVs, fs + main_src);
+  GlProgram program(fullscreen_triangle_vs(), fs + main_src);
   upload_sg_lighting(program, sgs);
   if (method == "sheen") upload_sheen(program, sheen);
   if (method == "mdfrot") upload_mdfrot(program, mdfrot);
@@ -102,9 +87,6 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   std::mt19937 rng(17);
   std::normal_distribution<float> nd;
   std::vector<float> wo(w * h * 4), nn(w * h * 4), uu(w * h * 4);
-  auto store = [](std::vector<float>& v, int i, glm::vec3 d) {
-    v[4 * i] = d.x, v[4 * i + 1] = d.y, v[4 * i + 2] = d.z, v[4 * i + 3] = 0;
-  };
   for (int i = 0; i < w * h; ++i) {
     glm::vec3 n = glm::normalize(glm::vec3(0.3f * nd(rng), 0.3f * nd(rng), 1.0f));
     glm::vec3 warp(nd(rng), nd(rng), nd(rng));
@@ -113,19 +95,9 @@ TEST_P(MethodParity, GlslMatchesCpp) {
     do d = glm::normalize(glm::vec3(nd(rng), nd(rng), nd(rng)));
     while (glm::dot(d, n) < 0.1f && method != "thin");  // thin also shades from behind
     if (method == "thin" && std::abs(glm::dot(d, n)) < 0.1f) d = glm::normalize(d + 0.2f * n);
-    store(wo, i, d), store(nn, i, n), store(uu, i, u);
+    test::store_direction(wo, i, d), test::store_direction(nn, i, n), test::store_direction(uu, i, u);
   }
-  const GLuint tex[3] = {float_texture(w, h, wo), float_texture(w, h, nn), float_texture(w, h, uu)};
-  const char* names[3] = {"u_wo", "u_n", "u_u"};
-  for (int k = 0; k < 3; ++k) {
-    glActiveTexture(GL_TEXTURE0 + k);
-    glBindTexture(GL_TEXTURE_2D, tex[k]);
-    glUniform1i(program.uniform(names[k]), k);
-  }
-  OffscreenTarget target(w, h);
-  target.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  const auto px = target.read_rgba();
+  const auto px = test::shade_cases(program, w, h, {{"u_wo", &wo}, {"u_n", &nn}, {"u_u", &uu}});
 
   std::vector<glm::dvec4> expect(w * h);
   double mean = 0.0;
@@ -157,7 +129,6 @@ TEST_P(MethodParity, GlslMatchesCpp) {
     }
   std::printf("%s/%s: worst relative difference %.2e (mean radiance %.3g)\n", method.c_str(), preset.c_str(), worst,
               mean);
-  glDeleteTextures(3, tex);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -9,7 +9,7 @@
 #include "panel/hid_knob_source.h"
 #include "panel/keyboard_knob_source.h"
 #include "panel/knob_controller.h"
-#include "panel_fakes.h"
+#include "support/panel_fakes.h"
 #include "sim/panel_simulator.h"
 
 using namespace weft::input;

@@ -1,4 +1,4 @@
-// The camera light probe (issue 8) against the mock camera that knows the truth: geometry,
+// The camera light probe against the mock camera that knows the truth: geometry,
 // HDR merge, accuracy of the fitted SGs (irradiance error of `weft fit`), steadiness, step
 // response to a lamp, failure handling (absent, busy, unplugged, black, saturated), the
 // lock-free hand-off, and the real libcamera backend on a machine without a camera.

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Soak of the headless kiosk runtime (issue 9): the simulated panel turns knobs for the whole run,
+# Soak of the headless kiosk runtime: the simulated panel turns knobs for the whole run,
 # the mocked light-probe camera sees the room switch between two maps every 5 s (a lamp going on
 # and off; the probe refits 10 SGs live) and the turntable keeps the camera moving; `weft run`
 # logs a stats line (frames, median ms/frame, RSS, probe updates) every STATS seconds. Memory and

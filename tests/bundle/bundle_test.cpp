@@ -11,7 +11,7 @@
 #include "bundle/bundle_reader.h"
 #include "bundle/bundle_writer.h"
 #include "bundle/crc32c.h"
-#include "bundle_reseal.h"
+#include "support/bundle_reseal.h"
 #include "core/fabric.h"
 
 namespace wb = weft::bundle;

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# End to end on a real kernel (issue 10): boots Debian 12's kernel under QEMU (TCG) with this
+# End to end on a real kernel: boots Debian 12's kernel under QEMU (TCG) with this
 # machine's root shared read-only over virtio-9p, runs `weft run` on bochs' /dev/dri/card0 (real
 # DRM/KMS + GBM + EGL, Mesa kms_swrast) and the panel simulator as a real uhid device, turns a
 # knob, unplugs and replugs the panel, and checks the screen through QEMU's `screendump`.
-# How to run it and what it proves: tests/KIOSK_VM.md.
+# How to run it and what it proves: tests/kiosk/KIOSK_VM.md.
 #
 # usage: kiosk_vm_test.sh WEFT WEFT_PANEL_SIM UHID_PANEL_TEST OUT_DIR
 # exit: 0 pass, 1 fail, 77 skipped (no qemu or no kernel package obtainable).

@@ -1,4 +1,4 @@
-// `weft bake` + `weft run` headless (issue 9's faults): a bundle that is corrupt, truncated or
+// `weft bake` + `weft run` headless: a bundle that is corrupt, truncated or
 // from another format version at boot → the last good bundle, and the log says why; systemd's
 // notify protocol with a listener standing in for systemd: READY=1 after the first frame,
 // WATCHDOG=1 pings while the loop runs, none once the loop hangs (WEFT_FAULT_HANG_AFTER_TICKS).

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The guest half of tests/kiosk_vm_test.sh: runs in the VM as root, chrooted into the host's
+# The guest half of tests/kiosk/kiosk_vm_test.sh: runs in the VM as root, chrooted into the host's
 # root (read-only over 9p), with OUT (this run's output folder) writable. Talks to the host
 # through files in OUT: it touches at-<step> when a step is done and waits for go-<step>
 # (the host takes its screendump in between). Everything it learns goes to OUT/*.log.

@@ -2,7 +2,7 @@
 # PID 1 of the kiosk VM (runs from the initramfs under busybox): mounts the kernel filesystems,
 # loads the modules the host listed in dependency order (virtio + 9p, bochs + DRM, uhid + hid),
 # mounts the host's root read-only over virtio-9p and the test's output folder writable over it,
-# then runs the guest half of the test (tests/kiosk_vm/guest_steps.sh) chrooted into the host root.
+# then runs the guest half of the test (tests/kiosk/kiosk_vm/guest_steps.sh) chrooted into the host root.
 /bin/busybox --install -s /bin
 export PATH=/bin
 mount -t proc proc /proc

@@ -12,7 +12,7 @@
 #include "panel/knob_mapping.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
-#include "panel_fakes.h"
+#include "support/panel_fakes.h"
 
 using namespace weft::input;
 using weft::test::installed_presets;

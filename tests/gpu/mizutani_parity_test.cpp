@@ -13,21 +13,15 @@
 #include "methods/fabric_uniforms.h"
 #include "gl/gl_program.h"
 #include "methods/mizutani/mizutani_textures.h"
-#include "gl/offscreen_target.h"
 #include "methods/mizutani/mizutani.h"
 #include "methods/registry.h"
 #include "shaders/embedded_shaders.h"
+#include "support/gpu_parity.h"
 
 using namespace weft;
 using namespace weft::gpu;
 
 namespace {
-
-const char* kVs = R"(#version 300 es
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-  gl_Position = vec4(p, 0.0, 1.0);
-})";
 
 // One (ω_o, frame) per pixel, from float textures, so both sides see the same floats.
 const char* kFs = R"(
@@ -39,15 +33,6 @@ void main() {
   colour = vec4(mizutani_radiance(n, u, wo), 1.0);
 })";
 
-GLuint float_texture(int w, int h, const std::vector<float>& rgba) {
-  GLuint t;
-  glGenTextures(1, &t);
-  glBindTexture(GL_TEXTURE_2D, t);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return t;
-}
 
 }  // namespace
 
@@ -69,7 +54,7 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
 
   std::string fs = shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n";
   for (auto part : methods::method("mizutani").glsl) fs += shaders::source(part);  // as the renderer builds it
-  GlProgram program(kVs, fs + kFs);
+  GlProgram program(fullscreen_triangle_vs(), fs + kFs);
   upload_fabric(program, bsdf);
   const MizutaniTextures textures(tables, azimuthal);
   textures.bind(program, 3);
@@ -85,9 +70,6 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
   std::normal_distribution<float> nd;
   std::vector<float> wo(w * h * 4), nn(w * h * 4), uu(w * h * 4);
   std::vector<SurfaceFrame> frames(w * h);
-  auto store = [](std::vector<float>& v, int i, glm::vec3 d) {
-    v[4 * i] = d.x, v[4 * i + 1] = d.y, v[4 * i + 2] = d.z, v[4 * i + 3] = 0;
-  };
   for (int i = 0; i < w * h; ++i) {
     glm::vec3 n = glm::normalize(glm::vec3(0.3f * nd(rng), 0.3f * nd(rng), 1.0f));
     glm::vec3 warp(nd(rng), nd(rng), nd(rng));
@@ -95,23 +77,12 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
     glm::vec3 d;
     do d = glm::normalize(glm::vec3(nd(rng), nd(rng), nd(rng)));
     while (glm::dot(d, n) <= 0.1f);
-    store(wo, i, d), store(nn, i, n), store(uu, i, u);
+    test::store_direction(wo, i, d), test::store_direction(nn, i, n), test::store_direction(uu, i, u);
     frames[i].n = glm::dvec3(n);
     frames[i].u = glm::dvec3(u);
     frames[i].v = glm::cross(frames[i].n, frames[i].u);
   }
-  const GLuint tex[3] = {float_texture(w, h, wo), float_texture(w, h, nn), float_texture(w, h, uu)};
-  const char* names[3] = {"u_wo", "u_n", "u_u"};
-  program.use();
-  for (int k = 0; k < 3; ++k) {
-    glActiveTexture(GL_TEXTURE0 + k);
-    glBindTexture(GL_TEXTURE_2D, tex[k]);
-    glUniform1i(program.uniform(names[k]), k);
-  }
-  OffscreenTarget target(w, h);
-  target.bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  const auto px = target.read_rgba();
+  const auto px = test::shade_cases(program, w, h, {{"u_wo", &wo}, {"u_n", &nn}, {"u_u", &uu}});
 
   double worst = 0.0, typical = 0.0;
   std::vector<dvec3> expect(w * h);
@@ -132,7 +103,6 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
                            << expect[i][c];
     }
   std::printf("%s: %d values, worst relative difference %.2e\n", GetParam().c_str(), 3 * w * h, worst);
-  glDeleteTextures(3, tex);
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, MizutaniParity,

@@ -1,4 +1,4 @@
-// The bench's thin-occluder stress scene (`teapot`, issue 6) keeps what it is for: under the
+// The bench's thin-occluder stress scene (`teapot`) keeps what it is for: under the
 // sharp sun of the 10-SG fit to its map, rays from the cloth the camera sees toward that sun are
 // blocked by the spout alone for some pixels and by the handle alone for others (shadows of
 // their own, not hidden in the body's), and most of the cloth is sunlit. Checked by Embree rays against the scene itself, so an edit to the scene file (the
