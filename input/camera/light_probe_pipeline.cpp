@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <sstream>
 
 #include "camera/hdr_merge.h"
@@ -25,7 +24,7 @@ const char* to_string(ProbeFailure failure) {
   return "camera failure";
 }
 
-void log_probe_line(const std::string& line) { std::cerr << "weft probe: " << line << std::endl; }
+void log_probe_line(LogPriority priority, const std::string& line) { log_line("weft probe", priority, line); }
 
 namespace {
 
@@ -83,7 +82,7 @@ void LightProbeUpdater::fail(const ProbeError& error) {
     line << to_string(error.failure()) << ": " << error.what() << "; keeping the "
          << (fitted_ ? "last good camera lighting" : "stored lighting") << ", retrying with backoff (first in "
          << backoff_s_ << " s)";
-    log_(line.str());
+    log_(LogPriority::warning, line.str());
   }
   failing_ = true;
   failure_kind_ = error.failure();
@@ -159,7 +158,7 @@ ProbeStepResult LightProbeUpdater::step() {
     fail(error);
     return ProbeStepResult::failed;
   }
-  if (failing_) log_(std::string("camera back (") + source_.name() + "): lighting follows the room again");
+  if (failing_) log_(LogPriority::info, std::string("camera back (") + source_.name() + "): lighting follows the room again");
   failing_ = false;
   fitted_ = true;
   backoff_s_ = 0;

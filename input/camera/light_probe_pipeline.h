@@ -30,6 +30,7 @@
 #include "camera/light_probe_source.h"
 #include "camera/mirror_ball.h"
 #include "camera/sg_triple_buffer.h"
+#include "journal_log.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
 
@@ -64,7 +65,7 @@ using Clock = std::chrono::steady_clock;
 // tests and `weft probe` (with an injected clock, so the backoff is checkable without sleeping).
 class LightProbeUpdater {
 public:
-  using Log = std::function<void(const std::string&)>;
+  using Log = LogSink;  // journal_log.h
   using Now = std::function<Clock::time_point()>;
 
   LightProbeUpdater(LightProbeSource& source, LightProbeConfig config, SgLighting stored, Log log = {}, Now now = {});
@@ -136,6 +137,6 @@ private:
 };
 
 // The default log line sink: "weft probe: ..." on stderr.
-void log_probe_line(const std::string& line);
+void log_probe_line(LogPriority priority, const std::string& line);
 
 }  // namespace weft

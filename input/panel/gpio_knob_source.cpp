@@ -38,7 +38,7 @@ void GpioKnobSource::run(KnobSink sink) {
       ++open_failures_;
       const auto wait = backoff.next();
       if (!announced) {
-        log_(describe() + " unavailable (" + why + "); GPIO knobs stay off, retrying in the background");
+        log_(LogPriority::warning, describe() + " unavailable (" + why + "); GPIO knobs stay off, retrying in the background");
         announced = true;
       }
       if (stop_.wait_for(wait)) break;
@@ -47,7 +47,7 @@ void GpioKnobSource::run(KnobSink sink) {
     backoff.succeeded();
     announced = false;
     open_ = true;
-    log_(describe() + " ready");
+    log_(LogPriority::info, describe() + " ready");
     GpioPanelDecoder decoder(config_);
     decoder.reset(lines->levels(), to_ms(lines->now_ns()));
     KnobEvent event;
@@ -56,7 +56,7 @@ void GpioKnobSource::run(KnobSink sink) {
       const int settle = decoder.settle_timeout_ms();
       const auto r = lines->wait(settle >= 0 ? settle : kWaitMs, edges);
       if (r == GpioLines::Wait::error) {
-        log_(describe() + " failed (" + lines->last_error() + "); reopening");
+        log_(LogPriority::warning, describe() + " failed (" + lines->last_error() + "); reopening");
         break;
       }
       for (const GpioEdge& e : edges)

@@ -59,7 +59,7 @@ void HidKnobSource::run(KnobSink sink) {
       if (!device) {
         const auto wait = backoff.next();
         if (!announced_absent) {
-          log_(name + " not found (" + why + "); will keep looking, retrying every " +
+          log_(LogPriority::warning, name + " not found (" + why + "); will keep looking, retrying every " +
                seconds(wait) + " up to " + seconds(backoff.longest));
           announced_absent = true;
         }
@@ -71,11 +71,11 @@ void HidKnobSource::run(KnobSink sink) {
       have_sequence_ = false;
       ++connects_;
       connected_ = true;
-      log_(name + " connected");
+      log_(LogPriority::info, name + " connected");
     }
     const int n = device->read(buffer, sizeof buffer, options_.read_timeout_ms);
     if (n < 0) {
-      log_(name + " read failed (" + device->last_error() +
+      log_(LogPriority::warning, name + " read failed (" + device->last_error() +
            "): unplugged? closing it and looking for it again");
       device.reset();
       connected_ = false;
@@ -94,7 +94,7 @@ void HidKnobSource::handle_report(const uint8_t* bytes, int size, const KnobSink
   if (error != firmware::ReportError::ok) {
     const uint64_t count = ++malformed_;
     if (worth_logging(count))
-      log_("dropped a malformed report (" + std::string(firmware::report_error_text(error)) + ", " +
+      log_(LogPriority::warning, "dropped a malformed report (" + std::string(firmware::report_error_text(error)) + ", " +
            std::to_string(size) + " bytes); " + std::to_string(count) + " dropped so far");
     return;
   }

@@ -60,14 +60,14 @@ void KeyboardKnobSource::run(KnobSink sink) {
     pollfd p{fd_, POLLIN, 0};
     const int r = ::poll(&p, 1, 100);
     if (r < 0) {
-      log_(std::string("keyboard knobs: cannot read input: ") + std::strerror(errno));
+      log_(LogPriority::warning, std::string("keyboard knobs: cannot read input: ") + std::strerror(errno));
       break;
     }
     if (r == 0) continue;
     char buf[64];
     const ssize_t n = ::read(fd_, buf, sizeof buf);
     if (n <= 0) {
-      log_("keyboard knobs: input closed; keyboard control off");
+      log_(LogPriority::info, "keyboard knobs: input closed; keyboard control off");
       break;
     }
     const auto ms = static_cast<uint32_t>(

@@ -28,7 +28,7 @@ void KnobController::restore() {
     mapper_.set_positions(p);
   } else {
     const auto r = restore_knob_state(options_.state_file, mapper_.presets(), options_.default_preset);
-    log_(r.message);
+    log_(r.unusable ? LogPriority::warning : LogPriority::info, r.message);
     mapper_.set_positions(r.positions);
   }
   dirty_ = false;
@@ -80,7 +80,7 @@ void KnobController::save_locked(std::unique_lock<std::mutex>& lock) {
     ++saves_;
   } else {
     dirty_ = true;  // try again later
-    log_("could not save knob state (" + why + "); will retry");
+    log_(LogPriority::warning, "could not save knob state (" + why + "); will retry");
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "firmware/hid_report.h"
+#include "journal_log.h"
 
 namespace weft::input {
 
@@ -21,9 +22,9 @@ struct KnobEvent {
 };
 
 using KnobSink = std::function<void(const KnobEvent&)>;
-// Where operator-readable log lines go (one line per call, no trailing newline).
-using LogSink = std::function<void(const std::string&)>;
-// Writes "weft panel: <line>" to stderr (journald picks it up under systemd).
+// Where operator-readable log lines go (journal_log.h).
+using LogSink = weft::LogSink;
+// Writes "weft panel: <line>" to stderr (journald picks it up under systemd, with priorities).
 LogSink stderr_log();
 
 class KnobSource {

@@ -166,6 +166,7 @@ RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::v
     r.from_file = true;
     r.message = "restored knob state from " + file.string() + " (preset '" + presets[r.positions.preset].name + "')";
   } catch (const KnobStateError& e) {
+    r.unusable = true;
     r.message = "saved knob state " + file.string() + " is unusable (" + e.what() +
                 "); falling back to preset '" + preset_name + "'";
   }

@@ -32,6 +32,7 @@ bool write_file_atomically(const std::filesystem::path& file, const std::string&
 struct RestoredKnobs {
   KnobPositions positions;
   bool from_file = false;
+  bool unusable = false;  // a file was there but could not be read as knob state
   std::string message;  // operator-readable: what was restored, or why the preset was used
 };
 RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::vector<PresetLook>& presets,

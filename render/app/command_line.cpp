@@ -1,10 +1,10 @@
 #include "app/command_line.h"
 
-#include <iostream>
 #include <string>
 
 #include "app/cli_parse.h"
 #include "core/fabric.h"
+#include "journal_log.h"
 
 namespace weft {
 
@@ -32,13 +32,13 @@ int CommandLine::run(int argc, char** argv) {
     for (auto& [sub, action] : actions_)
       if (sub->parsed()) return action();
   } catch (const UsageError& e) {
-    std::cerr << "weft: " << e.what() << "\n";
+    log_line("weft", LogPriority::error, e.what());
     return 2;
   } catch (const FabricError& e) {
-    std::cerr << "weft: " << e.what() << "\n";
+    log_line("weft", LogPriority::error, e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "weft: error: " << e.what() << "\n";
+    log_line("weft", LogPriority::error, std::string("error: ") + e.what());
     return 1;
   }
   return 2;

@@ -12,6 +12,7 @@
 #include "lighting/preview_png.h"
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
+#include "journal_log.h"
 
 namespace weft {
 
@@ -46,11 +47,13 @@ int run_fit(const FitArgs& a) {
     throw UsageError(e.what());  // a bad input file: exit code 2
   }
   if (repairs.total() > 0)
-    std::cerr << "weft fit: repaired " << repairs.nan << " NaN, " << repairs.infinite << " infinite and "
-              << repairs.negative << " negative channel values in " << a.map << " (--nonfinite clamp)\n";
+    log_line("weft fit", LogPriority::warning,
+             "repaired " + std::to_string(repairs.nan) + " NaN, " + std::to_string(repairs.infinite) + " infinite and " +
+                 std::to_string(repairs.negative) + " negative channel values in " + a.map + " (--nonfinite clamp)");
   if (map.width != 2 * map.height)
-    std::cerr << "weft fit: warning: " << a.map << " is " << map.width << "×" << map.height
-              << ", not 2:1; reading it as equirectangular anyway\n";
+    log_line("weft fit", LogPriority::warning,
+             "warning: " + a.map + " is " + std::to_string(map.width) + "×" + std::to_string(map.height) +
+                 ", not 2:1; reading it as equirectangular anyway");
 
   SgLighting warm;
   if (!a.warm.empty()) {

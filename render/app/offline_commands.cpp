@@ -6,9 +6,10 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <iostream>
 #include <string>
 #include <vector>
+
+#include "journal_log.h"
 
 namespace weft {
 
@@ -49,13 +50,15 @@ int exec_offline_helper(int argc, char** argv) {
     if (::access(path.c_str(), X_OK) == 0) {
       // argv[0] stays as typed: usage lines and messages read "weft ..." as before.
       ::execv(path.c_str(), argv);
-      std::cerr << "weft: " << argv[1] << ": cannot run " << path.string() << ": " << std::strerror(errno) << "\n";
+      log_line("weft", LogPriority::error,
+               std::string(argv[1]) + ": cannot run " + path.string() + ": " + std::strerror(errno));
       return 1;
     }
     looked += (looked.empty() ? "" : ", ") + path.string();
   }
-  std::cerr << "weft: " << argv[1] << " is an offline command and its helper " << kHelperName
-            << " is not installed (looked for " << looked << ")\n";
+  log_line("weft", LogPriority::error,
+           std::string(argv[1]) + " is an offline command and its helper " + kHelperName +
+               " is not installed (looked for " + looked + ")");
   return 1;
 }
 

@@ -13,6 +13,7 @@
 #include "camera/light_probe_pipeline.h"
 #include "camera/mock_probe_source.h"
 #include "lighting/fit_error.h"
+#include "journal_log.h"
 
 namespace weft {
 
@@ -90,7 +91,7 @@ CommandAction add_probe_command(CLI::App& app) {
       std::printf("\n");
     }
     if (!updater.has_fit()) {
-      std::fprintf(stderr, "weft probe: no lighting captured; a kiosk keeps its stored lighting\n");
+      log_line("weft probe", LogPriority::warning, "no lighting captured; a kiosk keeps its stored lighting");
       return 1;
     }
     std::printf("\n  k   axis x    axis y    axis z    sharpness  amplitude R  G  B\n");

@@ -1,7 +1,6 @@
 #include "bundle/bundle_fallback.h"
 
 #include <algorithm>
-#include <iostream>
 #include <optional>
 
 #include "bundle/atomic_file.h"
@@ -34,11 +33,11 @@ std::filesystem::path last_good_path(const std::filesystem::path& last_good_dir)
 OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
                                        const std::filesystem::path& last_good_dir,
                                        const FallbackOptions& options) {
-  const auto log = [&](const std::string& line) {
+  const auto log = [&](LogPriority priority, const std::string& line) {
     if (options.log)
-      options.log(line);
+      options.log(priority, line);
     else
-      std::cerr << "weft: " << line << '\n';
+      log_line("weft", priority, line);
   };
   const std::filesystem::path copy = last_good_path(last_good_dir);
 
@@ -49,10 +48,10 @@ OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
       try {
         std::filesystem::create_directories(last_good_dir);
         write_file_atomically(copy, bundle.bytes());
-        log("bundle " + primary.string() + " verified; saved as the last good bundle " + copy.string());
+        log(LogPriority::info, "bundle " + primary.string() + " verified; saved as the last good bundle " + copy.string());
       } catch (const std::exception& e) {
         // The primary is fine; only the safety copy could not be refreshed.
-        log("bundle " + primary.string() + " verified, but the last good copy was not updated: " +
+        log(LogPriority::warning, "bundle " + primary.string() + " verified, but the last good copy was not updated: " +
             e.what());
       }
     }
@@ -61,13 +60,13 @@ OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
     primary_error = e.what();
   }
 
-  log(primary_error + "; falling back to the last good bundle " + copy.string());
+  log(LogPriority::warning, primary_error + "; falling back to the last good bundle " + copy.string());
   try {
     BundleReader bundle = open_accepted(copy, options);
-    log("using the last good bundle " + copy.string());
+    log(LogPriority::warning, "using the last good bundle " + copy.string());
     return {std::move(bundle), copy, true, primary_error};
   } catch (const BundleError& e) {
-    log(std::string("the last good bundle is unusable too: ") + e.what());
+    log(LogPriority::error, std::string("the last good bundle is unusable too: ") + e.what());
     throw BundleError(primary.string(), "file", "",
                       "no usable bundle: " + primary_error + "; last good copy: " + e.what());
   }

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "bundle/bundle_reader.h"
+#include "journal_log.h"
 
 namespace weft::bundle {
 
@@ -16,7 +17,7 @@ struct FallbackOptions {
   // BundleError to reject the bundle. A rejected primary is not saved as last good.
   std::function<void(const BundleReader&)> accept;
   // Where operator-readable lines go (the kiosk sends them to the journal); default: stderr.
-  std::function<void(std::string_view)> log;
+  LogSink log;
 };
 
 struct OpenedBundle {

@@ -18,16 +18,16 @@
 #include "kiosk/knob_appearance.h"
 #include "kiosk/knob_sources.h"
 #include "kiosk/turntable.h"
+#include "journal_log.h"
 #include "panel/panel_config.h"
 
 namespace weft {
 namespace {
 
-// Every line goes to stderr, which systemd sends to the journal.
-void log_line(const std::string& s) {
-  std::fprintf(stderr, "weft run: %s\n", s.c_str());
-  std::fflush(stderr);
-}
+// Every line goes to stderr, which systemd sends to the journal (with its priority).
+void log_info(const std::string& s) { log_line("weft run", LogPriority::info, s); }
+void log_warning(const std::string& s) { log_line("weft run", LogPriority::warning, s); }
+void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
 
 constexpr auto kTickPeriod = std::chrono::microseconds(16667);
 
@@ -72,7 +72,7 @@ void Kiosk::check_config() {
   std::filesystem::create_directories(c.state_dir, ec);
   state_dir_ok_ = !ec;
   if (ec)
-    log_line("cannot create state directory " + c.state_dir + ": " + ec.message() + " (no last-good copy, no knob state)");
+    log_warning("cannot create state directory " + c.state_dir + ": " + ec.message() + " (no last-good copy, no knob state)");
 }
 
 void Kiosk::load_bundle() {
@@ -89,11 +89,11 @@ void Kiosk::load_bundle() {
       iwasaki_ = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(r, vertices));
     }
   };
-  fo.log = [](std::string_view s) { log_line(std::string(s)); };
+  fo.log = stderr_sink("weft run");
   try {
     opened_.emplace(bundle::open_bundle_with_fallback(config_.bundle, config_.state_dir, fo));
   } catch (const bundle::BundleError& e) {
-    log_line(std::string("no usable bundle: ") + e.what());
+    log_error(std::string("no usable bundle: ") + e.what());
     notifier_.status("no usable bundle (see journal)");
     throw;
   }
@@ -102,7 +102,7 @@ void Kiosk::load_bundle() {
   if (gpu::uses_seed000_tables(gpu::parse_method(method_name_)) && !iwasaki_)
     throw KioskConfigError("--method " + method_name_ + ": bundle " + opened_->file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");
-  log_line("bundle " + opened_->file.string() +
+  (opened_->is_last_good ? log_warning : log_info)("bundle " + opened_->file.string() +
            (opened_->is_last_good ? " (LAST GOOD COPY: " + opened_->primary_error + ")" : "") + ": scene '" +
            scene_->scene.name + "', " + std::to_string(scene_->scene.objects.size()) + " objects, " +
            std::to_string(scene_->sgs.size()) + " SGs");
@@ -116,19 +116,19 @@ bool Kiosk::open_display() {
       kms_ = std::make_unique<gpu::KmsDisplay>();
       width_ = kms_->width();
       height_ = kms_->height();
-      log_line("display " + kms_->description());
+      log_info("display " + kms_->description());
     } catch (const std::exception& e) {
       if (config_.display == "kms") {
-        log_line(std::string("no display: ") + e.what());
+        log_error(std::string("no display: ") + e.what());
         notifier_.status(std::string("no display: ") + e.what());
         return false;
       }
-      log_line(std::string("no KMS display (") + e.what() + "); running headless");
+      log_warning(std::string("no KMS display (") + e.what() + "); running headless");
     }
   }
   if (!kms_) {
     headless_ = std::make_unique<gpu::EglContext>(gpu::EglContext::headless());
-    log_line("headless " + std::to_string(width_) + "x" + std::to_string(height_) + " on " + headless_->renderer());
+    log_info("headless " + std::to_string(width_) + "x" + std::to_string(height_) + " on " + headless_->renderer());
   }
   return true;
 }
@@ -155,7 +155,7 @@ void Kiosk::start_knobs() {
   input::KnobControllerOptions ko;
   ko.state_file = state_dir_ok_ ? std::filesystem::path(config_.state_dir) / "knobs.json" : std::filesystem::path();
   ko.default_preset = default_preset;
-  const input::LogSink log = [](const std::string& s) { log_line(s); };
+  const input::LogSink log = stderr_sink("weft run");
   controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_)), ko, log);
   controller_->restore();
 
@@ -187,8 +187,8 @@ void Kiosk::start_probe() {
   room_light_ = scene_->sgs;
   if (config_.probe != "none") {
     probe_ = std::make_unique<KioskLightProbe>(config_.probe, config_.probe_switch_s, scene_->sgs,
-                                               [](const std::string& s) { log_line("light probe: " + s); });
-    log_line("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
+                                               [](LogPriority p, const std::string& s) { log_line("weft run", p, "light probe: " + s); });
+    log_info("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
   }
   lighting_ = std::make_unique<LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting>>(
       [this](const SgLighting& sgs) {
@@ -211,16 +211,16 @@ void Kiosk::show_first_frame() {
   char line[256];
   std::snprintf(line, sizeof line, "first frame after %.0f ms (%dx%d, %s, %s)", boot_ms, width_, height_, where.c_str(),
                 method_name_.c_str());
-  log_line(line);
+  log_info(line);
   notifier_.ready(std::string("showing '") + scene_->scene.name + "'" +
                   (opened_->is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);
   if (notifier_.watchdog_enabled())
-    log_line("watchdog every " + std::to_string(notifier_.watchdog_interval().count() / 1000) + " ms");
+    log_info("watchdog every " + std::to_string(notifier_.watchdog_interval().count() / 1000) + " ms");
 }
 
 void Kiosk::listen_to_knobs() {
   for (auto& s : sources_) {
-    log_line("listening to " + s->describe());
+    log_info("listening to " + s->describe());
     s->start(controller_->sink());
   }
 }
@@ -228,7 +228,7 @@ void Kiosk::listen_to_knobs() {
 void Kiosk::arm_fault_injection() {
   if (const char* h = std::getenv("WEFT_FAULT_HANG_AFTER_TICKS")) {
     hang_after_ = std::atol(h);
-    log_line("FAULT INJECTION: the frame loop hangs after " + std::to_string(hang_after_) + " ticks");
+    log_warning("FAULT INJECTION: the frame loop hangs after " + std::to_string(hang_after_) + " ticks");
   }
 }
 
@@ -266,9 +266,9 @@ void Kiosk::shut_down() {
     target_->bind();
     try {
       write_png(gpu::read_linear_image(width_, height_), config_.screenshot, config_.exposure);
-      log_line("screenshot " + config_.screenshot);
+      log_info("screenshot " + config_.screenshot);
     } catch (const std::exception& e) {
-      log_line(std::string("screenshot failed: ") + e.what());
+      log_warning(std::string("screenshot failed: ") + e.what());
     }
   }
   char line[256];
@@ -277,7 +277,7 @@ void Kiosk::shut_down() {
                 "report->photon median %.1f ms max %.1f ms; RSS %ld -> %ld KiB",
                 ticks_, drawn_, frame_ms_.median(1), latency_ms_.size(), latency_ms_.median(), latency_ms_.max(),
                 rss_start_kib_, resident_set_kib());
-  log_line(line);
+  log_info(line);
   notifier_.stopping("stopping");
 }
 
@@ -303,7 +303,7 @@ bool Kiosk::take_prepared_lighting() {
       return true;
     }
   } catch (const std::exception& e) {
-    log_line(std::string("lighting: ") + e.what() + "; keeping the light shown");
+    log_warning(std::string("lighting: ") + e.what() + "; keeping the light shown");
   }
   return false;
 }
@@ -313,7 +313,7 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   try {
     for (size_t c = 0; c < cloth_fabrics_.size(); ++c) renderer_->set_fabric(c, f);
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
-    log_line(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
+    log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
   }
   if (s.env_rotation_deg != light_rotation_) {
     relight(rotated_about_z(room_light_, s.env_rotation_deg));
@@ -354,7 +354,7 @@ void Kiosk::log_stats(Clock::time_point now) {
                 ticks_, drawn_, since_stats_ms_.median(), since_stats_ms_.size(), resident_set_kib(),
                 static_cast<unsigned long long>(probe_ ? probe_->updates() : 0), lighting_prepared_.load(),
                 last_prepare_ms_.load());
-  log_line(line);
+  log_info(line);
   last_stats_ = now;
   since_stats_ms_.clear();
 }

@@ -93,7 +93,7 @@ int run_panel_monitor(const PanelMonitorConfig& c, const std::atomic<bool>& stop
   double duration = c.duration;
   if (duration < 0 && !c.simulate.empty()) duration = made.script_seconds + 0.3;
   for (auto& s : made.sources) {
-    log("listening to " + s->describe());
+    log(LogPriority::info, "listening to " + s->describe());
     s->start(controller.sink());
   }
 

@@ -22,7 +22,7 @@ protected:
     fs::create_directories(root_);
     primary_ = root_ / "scene.weftbundle";
     state_ = root_ / "state";  // does not exist yet: created on the first good boot
-    options_.log = [this](std::string_view line) { log_.emplace_back(line); };
+    options_.log = [this](weft::LogPriority, const std::string& line) { log_.emplace_back(line); };
   }
   void TearDown() override { fs::remove_all(root_); }
 

@@ -107,7 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     HidSourceOptions options;
     options.read_timeout_ms = 1;
-    HidKnobSource source(options, std::make_unique<StreamTransport>(reports, m, cv, done), [](const std::string&) {});
+    HidKnobSource source(options, std::make_unique<StreamTransport>(reports, m, cv, done), [](weft::LogPriority, const std::string&) {});
     source.start([&](const KnobEvent& e) {  // runs on the source's thread only
       mapper.apply(e);
       check_appearance(mapper.appearance());

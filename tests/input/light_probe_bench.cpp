@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     LightProbeConfig config;
     config.ball = mock.ball;
     config.calibration = mock.calibration;
-    LightProbeUpdater updater(source, config, {}, [](const std::string& l) { std::fprintf(stderr, "probe: %s\n", l.c_str()); });
+    LightProbeUpdater updater(source, config, {}, [](weft::LogPriority, const std::string& l) { std::fprintf(stderr, "probe: %s\n", l.c_str()); });
     std::vector<ProbeTimings> t;
     for (int i = 0; i < updates; ++i) {
       updater.step();

@@ -46,7 +46,7 @@ double sg_change(const SgLighting& a, const SgLighting& b) {
 struct LogLines {
   std::vector<std::string> lines;
   LightProbeUpdater::Log sink() {
-    return [this](const std::string& l) { lines.push_back(l); };
+    return [this](weft::LogPriority, const std::string& l) { lines.push_back(l); };
   }
 };
 

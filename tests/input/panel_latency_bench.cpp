@@ -73,10 +73,10 @@ int main() {
   std::vector<PresetLook> presets(1);
   presets[0].name = "bench";
   presets[0].albedo = {{{0.06, 0.24, 0.30}, {0.06, 0.24, 0.30}}};
-  KnobController controller(KnobMapper(presets), {}, [](const std::string&) {});
+  KnobController controller(KnobMapper(presets), {}, [](weft::LogPriority, const std::string&) {});
   controller.restore();
   HidSourceOptions options;
-  HidKnobSource source(options, std::make_unique<BenchTransport>(feed), [](const std::string&) {});
+  HidKnobSource source(options, std::make_unique<BenchTransport>(feed), [](weft::LogPriority, const std::string&) {});
   source.start(controller.sink());
 
   // This thread plays the render thread: it only ever polls version() and read().

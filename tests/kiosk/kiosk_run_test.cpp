@@ -1,7 +1,8 @@
 // `weft bake` + `weft run` headless: a bundle that is corrupt, truncated or
 // from another format version at boot → the last good bundle, and the log says why; systemd's
 // notify protocol with a listener standing in for systemd: READY=1 after the first frame,
-// WATCHDOG=1 pings while the loop runs, none once the loop hangs (WEFT_FAULT_HANG_AFTER_TICKS).
+// WATCHDOG=1 pings while the loop runs, none once the loop hangs (WEFT_FAULT_HANG_AFTER_TICKS);
+// with stderr as the journal (JOURNAL_STREAM), lines carry sd-daemon priority prefixes.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,10 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -35,8 +39,12 @@ struct Spawned {
   fs::path log;
 };
 
+// How the child's JOURNAL_STREAM relates to its stderr (systemd.exec(5)).
+enum class Journal { unset, matches_stderr, other_file };
+
 // Starts weft with `args`, `env` added, stdout and stderr to a log file.
-Spawned spawn(const std::vector<std::string>& args, const std::vector<std::string>& env, const fs::path& log) {
+Spawned spawn(const std::vector<std::string>& args, const std::vector<std::string>& env, const fs::path& log,
+              Journal journal = Journal::unset) {
   Spawned s;
   s.log = log;
   s.pid = fork();
@@ -44,6 +52,14 @@ Spawned spawn(const std::vector<std::string>& args, const std::vector<std::strin
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, 1);
     dup2(fd, 2);
+    unsetenv("JOURNAL_STREAM");
+    if (journal != Journal::unset) {
+      struct stat st {};
+      fstat(fd, &st);
+      // other_file: a JOURNAL_STREAM inherited from a parent whose stderr was the journal.
+      const auto ino = static_cast<unsigned long long>(st.st_ino) + (journal == Journal::other_file ? 1 : 0);
+      setenv("JOURNAL_STREAM", (std::to_string(st.st_dev) + ":" + std::to_string(ino)).c_str(), 1);
+    }
     for (const auto& e : env) putenv(strdup(e.c_str()));
     std::vector<char*> argv{const_cast<char*>(WEFT_BINARY)};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -78,14 +94,23 @@ protected:
 
   // weft run headless, 2 ticks, still camera, no panel; returns exit code, log in `log`.
   int run(const fs::path& bundle, const fs::path& state, const fs::path& png, std::string& log,
-          const std::string& panel = "none", const std::string& frames = "2", const std::string& probe = "none") {
+          const std::string& panel = "none", const std::string& frames = "2", const std::string& probe = "none",
+          Journal journal = Journal::unset) {
     std::vector<std::string> args{"run", "--bundle", bundle.string(), "--state-dir", state.string(), "--display",
                                   "headless", "--frames", frames, "--turntable", "0", "--panel", panel, "--size", "96",
                                   "72", "--screenshot", png.string(), "--probe", probe};
-    const Spawned s = spawn(args, {}, dir_ / "run.log");
+    const Spawned s = spawn(args, {}, dir_ / "run.log", journal);
     const int rc = wait_exit(s);
     log = read_all(dir_ / "run.log");
     return rc;
+  }
+  // The log's lines that contain `needle`.
+  static std::vector<std::string> lines_with(const std::string& log, const std::string& needle) {
+    std::vector<std::string> found;
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);)
+      if (line.find(needle) != std::string::npos) found.push_back(line);
+    return found;
   }
   static fs::path dir_;
 };
@@ -136,6 +161,42 @@ TEST_F(KioskRun, BadBundlesAtBootFallBackToTheLastGoodOne) {
   // No last good copy and a bad bundle: a clear failure, no crash.
   ASSERT_EQ(run(dir_ / "corrupt.weft", dir_ / "empty_state", dir_ / "none.png", log), 1) << log;
   EXPECT_NE(log.find("no usable bundle"), std::string::npos) << log;
+}
+
+// sd-daemon(3): "<4>" warning, "<6>" info, "<3>" error, so `journalctl -p warning` lists the
+// fallback; on a plain file, even with an unrelated JOURNAL_STREAM inherited, the text is as it was.
+TEST_F(KioskRun, UnderTheJournalEachLineCarriesItsPriority) {
+  const fs::path state = dir_ / "journal_state";
+  std::string log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "journal_good.png", log), 0) << log;
+  std::string corrupt = read_all(dir_ / "good.weft");
+  corrupt[corrupt.size() - 100] ^= 0x10;
+  const fs::path bad = dir_ / "journal_corrupt.weft";
+  std::ofstream(bad, std::ios::binary) << corrupt;
+
+  ASSERT_EQ(run(bad, state, dir_ / "journal.png", log, "none", "2", "none", Journal::matches_stderr), 0) << log;
+  const auto fallback = lines_with(log, "falling back to the last good bundle");
+  ASSERT_EQ(fallback.size(), 1u) << log;
+  EXPECT_EQ(fallback[0].rfind("<4>weft run: ", 0), 0u) << fallback[0];
+  EXPECT_NE(fallback[0].find("checksum mismatch"), std::string::npos) << fallback[0];
+  const auto first = lines_with(log, "first frame after");
+  ASSERT_EQ(first.size(), 1u) << log;
+  EXPECT_EQ(first[0].rfind("<6>weft run: ", 0), 0u) << first[0];
+  for (const auto& line : lines_with(log, "weft run: "))
+    EXPECT_TRUE(line.rfind("<3>", 0) == 0 || line.rfind("<4>", 0) == 0 || line.rfind("<6>", 0) == 0) << line;
+
+  ASSERT_EQ(run(bad, dir_ / "journal_empty", dir_ / "none.png", log, "none", "2", "none", Journal::matches_stderr), 1)
+      << log;
+  const auto none = lines_with(log, "no usable bundle");
+  ASSERT_FALSE(none.empty()) << log;
+  for (const auto& line : none) EXPECT_EQ(line.rfind("<3>weft", 0), 0u) << line;
+
+  ASSERT_EQ(run(bad, state, dir_ / "journal.png", log, "none", "2", "none", Journal::other_file), 0) << log;
+  const auto plain = lines_with(log, "falling back to the last good bundle");
+  ASSERT_EQ(plain.size(), 1u) << log;
+  EXPECT_EQ(plain[0].rfind("weft run: ", 0), 0u) << plain[0];
+  EXPECT_EQ(log.find("<4>"), std::string::npos) << log;
+  EXPECT_EQ(log.find("<6>"), std::string::npos) << log;
 }
 
 TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {

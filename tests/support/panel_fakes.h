@@ -154,7 +154,7 @@ struct LogCapture {
   std::mutex m;
   std::vector<std::string> lines;
   input::LogSink sink() {
-    return [this](const std::string& l) {
+    return [this](weft::LogPriority, const std::string& l) {
       std::lock_guard lock(m);
       lines.push_back(l);
     };
