@@ -3,6 +3,7 @@
 # missing; quiet when all is there), builds, and then runs or tests.
 #   ./setup.sh run    install, build, render the default showroom scene
 #   ./setup.sh test   install, build, run the test suite (what .ci/run does)
+#   ./setup.sh package  install, build, make the Debian package (prints its path)
 #   ./setup.sh deps | build
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -14,6 +15,7 @@ PACKAGES=(
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libgtest-dev libgmock-dev
+  help2man dpkg-dev file  # weft(1) from --help; the package's Depends (dpkg-shlibdeps, cpack)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
   qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
 )
@@ -55,6 +57,17 @@ run_default() {
   echo "setup: wrote $BUILD_DIR/showroom.png"
 }
 
+package() {
+  # The install rules of a /usr build, packaged by CPack (packaging/CMakeLists.txt says why not
+  # dpkg-buildpackage). Only the prefix differs from `build`: nothing is recompiled.
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
+  cmake --build "$BUILD_DIR" -j"$(nproc)"
+  (cd "$BUILD_DIR" && cpack -G DEB >/dev/null)
+  local deb
+  deb=$(ls -t "$BUILD_DIR"/weft_*.deb | head -n 1)
+  echo "setup: wrote $deb"
+}
+
 test_all() {
   # Benchmarks and long bakes carry the label `bench` and stay out of this run.
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" -LE bench
@@ -65,5 +78,6 @@ case "${1:-}" in
   build) deps; build ;;
   run) deps; build; run_default ;;
   test) deps; build; test_all ;;
-  *) sed -n '2,8p' "$0"; exit 2 ;;
+  package) deps; package ;;
+  *) sed -n '2,9p' "$0"; exit 2 ;;
 esac

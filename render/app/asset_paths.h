@@ -1,5 +1,9 @@
 #pragma once
-// Where the data files are: $WEFT_ASSETS if set, else the source tree's assets/.
+// Where the data files (fabrics, scenes, envmaps) are, in this order:
+//  1. $WEFT_ASSETS, when set;
+//  2. the install prefix's share/weft, found from this executable's own location
+//     (/proc/self/exe: <prefix>/bin/weft or <prefix>/libexec/weft/weft-offline);
+//  3. the source tree's assets/ (running from a build folder).
 #include <filesystem>
 
 namespace weft {
