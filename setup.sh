@@ -58,7 +58,7 @@ run_default() {
 }
 
 package() {
-  # The install rules of a /usr build, packaged by CPack (packaging/CMakeLists.txt says why not
+  # The install rules of a /usr build, packaged by CPack (debian/CMakeLists.txt says why not
   # dpkg-buildpackage). Only the prefix differs from `build`: nothing is recompiled.
   cmake -S . -B "$BUILD_DIR" -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
   cmake --build "$BUILD_DIR" -j"$(nproc)"

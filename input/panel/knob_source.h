@@ -8,7 +8,7 @@
 #include <string>
 
 #include "firmware/hid_report.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft::input {
 

@@ -4,7 +4,7 @@
 
 #include "app/cli_parse.h"
 #include "core/fabric.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft {
 

@@ -12,7 +12,7 @@
 #include "lighting/preview_png.h"
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft {
 

@@ -13,7 +13,7 @@
 #include "camera/light_probe_pipeline.h"
 #include "camera/mock_probe_source.h"
 #include "lighting/fit_error.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft {
 

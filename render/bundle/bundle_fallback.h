@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "bundle/bundle_reader.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 namespace weft::bundle {
 

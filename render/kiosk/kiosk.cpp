@@ -18,7 +18,7 @@
 #include "kiosk/knob_appearance.h"
 #include "kiosk/knob_sources.h"
 #include "kiosk/turntable.h"
-#include "journal_log.h"
+#include "journal/journal_log.h"
 #include "panel/panel_config.h"
 
 namespace weft {

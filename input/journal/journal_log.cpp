@@ -1,4 +1,4 @@
-#include "journal_log.h"
+#include "journal/journal_log.h"
 
 #include <sys/stat.h>
 #include <systemd/sd-daemon.h>
