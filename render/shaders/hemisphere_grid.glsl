@@ -1,4 +1,4 @@
-// The weighting tables' direction grids (render/bake/hemisphere_grid.h, whose comment gives the
+// The weighting tables' direction grids (render/runtime/hemisphere_grid.h, whose comment gives the
 // maps): a unit local direction → the node square [−1,1]², whose nodes sit at s = −1 + 2i/(n−1).
 // One copy for iwasaki.glsl and mizutani.glsl; their parity tests pin it to the C++.
 // Needs microcylinder.glsl (PI) before it.

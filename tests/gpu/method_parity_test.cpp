@@ -27,17 +27,6 @@ using namespace weft::gpu;
 
 namespace {
 
-// One (frame, ω_o) per pixel from float textures; METHOD_CALL is the method's entry point.
-const char* kFsTemplate = R"(
-uniform highp sampler2D u_wo, u_n, u_u;
-out vec4 colour;
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec3 wo = texelFetch(u_wo, p, 0).xyz, n = texelFetch(u_n, p, 0).xyz, u = texelFetch(u_u, p, 0).xyz;
-  colour = METHOD_CALL;
-})";
-
-
 SgLighting test_sgs() {
   std::mt19937 rng(5);
   std::normal_distribution<double> nd;
@@ -75,9 +64,7 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   else call = "thin_radiance(n, u, wo)";
   std::string fs = shader_preamble();
   for (auto p : parts) fs += shaders::source(p);
-  std::string main_src = kFsTemplate;
-  main_src.replace(main_src.find("METHOD_CALL"), 11, call);
-  GlProgram program(fullscreen_triangle_vs(), fs + main_src);
+  GlProgram program(fullscreen_triangle_vs(), fs + test::frame_case_main(call));
   upload_sg_lighting(program, sgs);
   if (method == "sheen") upload_sheen(program, sheen);
   if (method == "mdfrot") upload_mdfrot(program, mdfrot);

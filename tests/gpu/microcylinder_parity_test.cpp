@@ -27,7 +27,6 @@ void main() {
   colour = vec4(cloth_integrand(n, u, wi, wo), 1.0);
 })";
 
-
 }  // namespace
 
 class MicrocylinderParity : public ::testing::TestWithParam<std::string> {};

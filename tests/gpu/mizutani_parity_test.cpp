@@ -21,21 +21,6 @@
 using namespace weft;
 using namespace weft::gpu;
 
-namespace {
-
-// One (ω_o, frame) per pixel, from float textures, so both sides see the same floats.
-const char* kFs = R"(
-uniform highp sampler2D u_wo, u_n, u_u;
-out vec4 colour;
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec3 wo = texelFetch(u_wo, p, 0).xyz, n = texelFetch(u_n, p, 0).xyz, u = texelFetch(u_u, p, 0).xyz;
-  colour = vec4(mizutani_radiance(n, u, wo), 1.0);
-})";
-
-
-}  // namespace
-
 class MizutaniParity : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MizutaniParity, GlslMatchesCpp) {
@@ -54,7 +39,7 @@ TEST_P(MizutaniParity, GlslMatchesCpp) {
 
   std::string fs = shader_preamble() + "#define MAX_SGS " + std::to_string(kMizutaniMaxSgs) + "\n";
   for (auto part : methods::method("mizutani").glsl) fs += shaders::source(part);  // as the renderer builds it
-  GlProgram program(fullscreen_triangle_vs(), fs + kFs);
+  GlProgram program(fullscreen_triangle_vs(), fs + test::frame_case_main("vec4(mizutani_radiance(n, u, wo), 1.0)"));
   upload_fabric(program, bsdf);
   const MizutaniTextures textures(tables, azimuthal);
   textures.bind(program, 3);

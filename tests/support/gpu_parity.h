@@ -4,6 +4,7 @@
 // evaluate the very same floats. Needs a current GLES 3 context (gpu::EglContext::headless()).
 #include <GLES3/gl3.h>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,18 @@ inline void store_direction(std::vector<float>& input, int i, glm::vec3 d) {
 }
 inline glm::dvec3 load_direction(const std::vector<float>& input, int i) {
   return {input[4 * i], input[4 * i + 1], input[4 * i + 2]};
+}
+
+// A fragment main for cases of (ω_o, frame): reads them from the samplers u_wo, u_n and u_u at
+// its pixel and writes `call`, a vec4 expression of wo, n and u (the method's entry point).
+inline std::string frame_case_main(const std::string& call) {
+  return R"(
+uniform highp sampler2D u_wo, u_n, u_u;
+out vec4 colour;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec3 wo = texelFetch(u_wo, p, 0).xyz, n = texelFetch(u_n, p, 0).xyz, u = texelFetch(u_u, p, 0).xyz;
+  colour = )" + call + ";\n}\n";
 }
 
 // A per-pixel input: the sampler's name in the shader and w×h RGBA floats.

@@ -11,7 +11,7 @@ uniform vec3 u_sg_axis[MAX_SGS];
 uniform float u_sg_lambda[MAX_SGS];
 uniform vec3 u_sg_amplitude[MAX_SGS];
 
-// Weighting tables (render/bake/weighting_tables.h): U and V factors as R32F textures, texel
+// Weighting tables (render/runtime/weighting_tables.h): U and V factors as R32F textures, texel
 // (grid node, row); table d·levels + level owns rows [first, first + rank).
 uniform highp sampler2D u_w_u, u_w_v;
 uniform int u_w_xi_n, u_w_wo_n, u_w_levels;
@@ -19,7 +19,7 @@ uniform float u_w_log_lambda[MAX_W_LEVELS];
 uniform int u_w_sample_table[2 * MAX_TANGENT_SAMPLES];
 uniform ivec2 u_w_table[MAX_W_TABLES];  // (first row, rank)
 
-// Azimuthal table T_m / Z (render/bake/azimuthal_table.h) as RGBA32F, texel
+// Azimuthal table T_m / Z (render/runtime/azimuthal_table.h) as RGBA32F, texel
 // (φ_o node, φ_k node, group·L + λ' node) holding powers 4·group .. 4·group + 3.
 uniform highp sampler3D u_azimuthal;
 uniform ivec3 u_az_nodes;  // φ_o, φ_k, λ' node counts
