@@ -14,6 +14,7 @@ PACKAGES=(
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libgtest-dev libgmock-dev
+  assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
   qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
 )
