@@ -178,6 +178,24 @@ TEST(GltfScene, HandMadeQuadInWeftFrameWithWarpFromUVs) {
   EXPECT_GT(s.camera.position.z, 2.0);
 }
 
+TEST(GltfScene, NodeRotationAndMirrorFollowTheHierarchy) {
+  GltfBuilder b = quad();
+  // Child turned 90° about glTF +y ((x, y, z) → (z, y, −x)) under the parent's (1, 2, 3).
+  b.j["nodes"][1]["rotation"] = {0, std::sqrt(0.5), 0, std::sqrt(0.5)};
+  const Scene r = parse(b);
+  const auto& m = r.objects.at(0).mesh;
+  expect_near(m.positions[1], {1, -1, 2}, 1e-6);  // (2, 0, 0) → (0, 0, −2) + (1, 2, 3) → Weft
+  expect_near(m.positions[2], {0, -1, 2}, 1e-6);  // (2, 0, −1) → (−1, 0, −2) + (1, 2, 3) → Weft
+  expect_near(m.warps[0], {-1, 0, 0}, 1e-6);      // u ran along glTF −z, now along glTF −x
+  expect_near(m.normals[0], {0, 0, 1}, 1e-6);
+  // A mirroring node keeps the faces' side: the winding flips with it.
+  b.j["nodes"][1].erase("rotation");
+  b.j["nodes"][1]["scale"] = {-1, 1, 1};
+  const Scene mirrored = parse(b);
+  expect_near(mirrored.objects.at(0).mesh.positions[1], {-1, -3, 2});
+  for (const auto& n : mirrored.objects.at(0).mesh.normals) expect_near(n, {0, 0, 1});
+}
+
 TEST(GltfScene, TangentOverridesUVsAndClothNeedsOneOfThem) {
   const Scene s = parse(quad(true, true));
   for (const auto& w : s.objects[0].mesh.warps) expect_near(w, {1, 0, 0});  // glTF +x stays +x
