@@ -16,6 +16,7 @@ PACKAGES=(
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libgtest-dev libgmock-dev
   help2man dpkg-dev file  # weft(1) from --help; the package's Depends (dpkg-shlibdeps, cpack)
+  assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
   qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
 )

@@ -44,7 +44,7 @@ int run_bake(const BakeArgs& a) {
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   try {
-    in.scene = load_scene_preset(a.scene, assets_dir() / "scenes");
+    in.scene = load_scene_named(a.scene, assets_dir(), a.fabric);
   } catch (const std::exception& e) {
     throw UsageError(std::string("--scene: ") + e.what());
   }
@@ -67,7 +67,7 @@ int run_bake(const BakeArgs& a) {
     }
     lighting = a.sgs_file;
   } else {
-    const auto map_file = assets_dir() / "envmaps" / (in.scene.environment + ".exr");
+    const auto map_file = env_map_file(in.scene.environment, assets_dir() / "envmaps");
     progress(3, kSteps, "fitting " + std::to_string(a.fit_sgs > 0 ? a.fit_sgs : 10) + " SGs to " + map_file.string());
     SgFitOptions opt;
     opt.count = a.fit_sgs > 0 ? a.fit_sgs : 10;  // the product card's 10 SGs by default
@@ -122,8 +122,8 @@ int run_bake(const BakeArgs& a) {
 CommandAction add_bake_command(CLI::App& app) {
   auto a = std::make_shared<BakeArgs>();
   CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs, seed 000 tables)");
-  sub->add_option("--scene", a->scene, "Scene preset (assets/scenes/NAME.json)")->required();
-  sub->add_option("--fabric", a->fabric, "Fabric preset for every cloth object (default: each object's own)");
+  sub->add_option("--scene", a->scene, "Scene: a preset (assets/scenes/NAME.json) or a path to a .json scene or a .gltf/.glb file")->required();
+  sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: each object's own; a glTF naming no cloth: every material)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
   sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")
       ->check(CLI::Range(1, 64));

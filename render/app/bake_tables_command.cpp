@@ -42,7 +42,7 @@ struct BakeTablesArgs {
 int run_bake_tables(const BakeTablesArgs& a) {
   if (a.target_error < 0.0 || a.target_error >= 1.0 || !std::isfinite(a.target_error))
     throw UsageError("--target-error: must be in (0, 1), got " + std::to_string(a.target_error));
-  const Fabric fabric = load_fabric_preset(a.fabric, assets_dir() / "fabrics");
+  const Fabric fabric = load_fabric_named(a.fabric, assets_dir() / "fabrics");
   BakeSettings settings;
   settings.tangent_samples = paper_tangent_samples(fabric);
   std::vector<SelectionRow> rows;
@@ -123,7 +123,7 @@ CommandAction add_bake_tables_command(CLI::App& app) {
   auto a = std::make_shared<BakeTablesArgs>();
   CLI::App* sub = app.add_subcommand(
       "bake-tables", "Bake only the SG-convolved weighting tables T of one fabric and report time, size, ranks, error");
-  sub->add_option("--fabric", a->fabric, "Fabric preset name (assets/fabrics/NAME.json)")->capture_default_str();
+  sub->add_option("--fabric", a->fabric, "Fabric: a preset name (assets/fabrics/NAME.json) or a .json file")->capture_default_str();
   sub->add_option("--target-error", a->target_error,
                   "Choose tangent samples, λ levels and SVD ranks so each table's relative error stays under E "
                   "(default: the paper's settings)");

@@ -16,9 +16,9 @@ CommandAction add_bench_command(CLI::App& app) {
                 "sweeps of tangent samples 1,3 and SVD error 0.1,0.01 unless given");
   sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
   sub->add_option("--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
-  sub->add_option("--scenes", a->scenes, "Scenes")->delimiter(',')->capture_default_str();
-  sub->add_option("--fabrics", a->fabrics, "Fabric presets ('scene': each scene's own)")->delimiter(',')->capture_default_str();
-  sub->add_option("--envs", a->envs, "Environment maps ('scene': each scene's own)")->delimiter(',')->capture_default_str();
+  sub->add_option("--scenes", a->scenes, "Scenes: preset names or .json/.gltf/.glb paths")->delimiter(',')->capture_default_str();
+  sub->add_option("--fabrics", a->fabrics, "Fabrics: preset names or .json paths ('scene': each scene's own)")->delimiter(',')->capture_default_str();
+  sub->add_option("--envs", a->envs, "Environment maps: names or .exr paths ('scene': each scene's own)")->delimiter(',')->capture_default_str();
   sub->add_option("--methods", a->methods, "GPU methods (default: all available)")->delimiter(',');
   sub->add_option("--speed-width", a->speed_width, "Speed: frame width")->capture_default_str();
   sub->add_option("--speed-height", a->speed_height, "Speed: frame height")->capture_default_str();

@@ -84,7 +84,7 @@ int run_eval(const EvalArgs& a) {
   if (!(a.tolerance > 0.0 && a.tolerance < 0.5))
     throw UsageError("--tolerance: must be in (0, 0.5), got " + std::to_string(a.tolerance));
 
-  const Fabric fabric = load_fabric_preset(a.fabric, assets_dir() / "fabrics");
+  const Fabric fabric = load_fabric_named(a.fabric, assets_dir() / "fabrics");
   if (a.method == "iwasaki") return run_iwasaki(a, fabric, wo, sgs);
   if (a.method == "mizutani") return run_mizutani(a, fabric, wo, sgs);
   const auto start = std::chrono::steady_clock::now();
@@ -112,7 +112,7 @@ int run_eval(const EvalArgs& a) {
 CommandAction add_eval_command(CLI::App& app) {
   auto a = std::make_shared<EvalArgs>();
   CLI::App* sub = app.add_subcommand("eval", "One radiance value: a flat swatch (n=+z, warp=+x) under SGs, as JSON");
-  sub->add_option("--fabric", a->fabric, "Fabric preset name (assets/fabrics/NAME.json)")->capture_default_str();
+  sub->add_option("--fabric", a->fabric, "Fabric: a preset name (assets/fabrics/NAME.json) or a .json file")->capture_default_str();
   sub->add_option("--view", a->view, "Direction toward the viewer, x,y,z (normalised; z > 0)")->required();
   sub->add_option("--sg", a->sgs, "An SG light: axis_x,axis_y,axis_z,lambda,r,g,b (repeatable)")->required();
   sub->add_option("--method", a->method, "Method: reference (converged quadrature of DESIGN.md §2), iwasaki (seed 000) or mizutani (seed 001, no visibility); the last two bake their tables first")

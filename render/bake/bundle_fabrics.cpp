@@ -10,7 +10,7 @@ namespace weft {
 namespace {
 
 std::string preset_text(const std::filesystem::path& dir, const std::string& name) {
-  const std::string path = (dir / (name + ".json")).string();
+  const std::string path = fabric_file(name, dir).string();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw BundleFabricError("fabric: cannot open '" + path + "'");
   std::stringstream s;
@@ -26,7 +26,7 @@ std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const
   for (const auto& o : scene.objects) {
     if (o.material != Material::cloth || texts.count(o.fabric)) continue;
     try {
-      load_fabric_preset(o.fabric, dir);  // validates; throws naming the known presets
+      load_fabric_named(o.fabric, dir);  // validates; throws naming the known presets or the file's problem
     } catch (const std::exception& e) {
       throw BundleFabricError(std::string("--fabric: ") + e.what());
     }

@@ -13,24 +13,35 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
   Case c;
   c.scene_name = scene_name;
   try {
-    c.scene = load_scene_preset(scene_name, a.assets / "scenes");
+    c.scene = load_scene_named(scene_name, a.assets, fabric_arg == "scene" ? "" : fabric_arg);
   } catch (const SceneError& e) {
     throw InvalidOption(e.what());
   }
   for (auto& o : c.scene.objects)
     if (o.material == Material::cloth) {
       if (fabric_arg != "scene") o.fabric = fabric_arg;
-      if (!c.fabrics.count(o.fabric)) c.fabrics.emplace(o.fabric, load_fabric_preset(o.fabric, a.assets / "fabrics"));
+      if (c.fabrics.count(o.fabric)) continue;
+      try {
+        c.fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
+      } catch (const FabricError& e) {
+        throw InvalidOption(std::string("--fabrics: ") + e.what());
+      }
     }
+  if (c.fabrics.empty()) throw InvalidOption("--scenes: " + scene_name + " has no cloth");
   c.fabric_label = fabric_arg == "scene" ? c.fabrics.begin()->first : fabric_arg;
   c.env = env_arg == "scene" ? c.scene.environment : env_arg;
-  const auto env_file = a.assets / "envmaps" / (c.env + ".exr");
+  const auto env_file = env_map_file(c.env, a.assets / "envmaps");
   if (!std::filesystem::exists(env_file)) throw InvalidOption("--envs: no environment map " + env_file.string());
   const EnvMap map = load_env_map(env_file, NonFinitePolicy::clamp, nullptr);
   SgFitOptions fit;
   fit.count = a.sg_count;
   c.sgs = fit_sgs(map, fit);
-  c.tag = scene_name + "_" + c.fabric_label + "_" + c.env;
+  // Paths name their file's stem in tags (which become file names).
+  auto label = [](const std::string& name) {
+    const std::filesystem::path p(name);
+    return p.has_parent_path() || p.has_extension() ? p.stem().string() : name;
+  };
+  c.tag = label(scene_name) + "_" + label(c.fabric_label) + "_" + env_map_label(c.env);
   if (scene_name == kThinOccluderScene)
     c.shadow = std::make_shared<ShadowMask>(sun_shadow_mask(c.scene, c.sgs, a.width, a.height));
   return c;

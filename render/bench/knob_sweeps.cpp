@@ -20,15 +20,15 @@ namespace weft::bench {
 void sweep_sg_counts(const BenchOptions& a, const std::vector<LadderEntry>& run, TableBakes& bakes,
                      ReferenceSet& references, const std::filesystem::path& out, BenchResults& results) {
   if (a.sweep_sg_counts.empty()) return;
-  const Scene s = load_scene_preset(a.scenes.front(), a.assets / "scenes");
+  const Scene s = load_scene_named(a.scenes.front(), a.assets);
   std::map<std::string, Fabric> fabrics;
   for (const auto& o : s.objects)
     if (o.material == Material::cloth && !fabrics.count(o.fabric))
-      fabrics.emplace(o.fabric, load_fabric_preset(o.fabric, a.assets / "fabrics"));
-  const auto env_file = a.assets / "envmaps" / (s.environment + ".exr");
+      fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
+  const auto env_file = env_map_file(s.environment, a.assets / "envmaps");
   auto map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, nullptr));
   results.sweep_case = s.name + " / " + fabrics.begin()->first + " / " + s.environment + " (map-lit reference, 128x64 cells)";
-  const CachedReference ref = references.map_lit(s, fabrics, env_file, map);
+  const CachedReference ref = references.map_lit(a.scenes.front(), s, fabrics, env_file, map);
   for (int k : a.sweep_sg_counts) {
     SgFitOptions fit;
     fit.count = k;

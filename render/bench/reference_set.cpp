@@ -10,15 +10,41 @@
 
 namespace weft::bench {
 
+namespace {
+
+// What made the scene: its preset file and the mesh data files scenes read; for a scene loaded
+// from a path (a glTF with its buffers, a scene file elsewhere), its camera and objects themselves.
+void add_scene_inputs(InputHash& h, const std::filesystem::path& assets, const std::string& scene_arg, const Scene& s) {
+  if (!names_scene_file(scene_arg)) {
+    h.add_file(assets / "scenes" / (scene_arg + ".json"));
+    for (const auto& entry : std::filesystem::directory_iterator(assets / "scenes"))
+      if (entry.path().extension() == ".bpt") h.add_file(entry.path());
+    return;
+  }
+  h.add(s.name);
+  for (const glm::dvec3& v : {s.camera.position, s.camera.target, s.camera.up})
+    h.add_number(v.x).add_number(v.y).add_number(v.z);
+  h.add_number(s.camera.fov_deg);
+  for (const auto& o : s.objects) {
+    h.add(o.name).add(o.fabric).add_number(o.material == Material::cloth ? 1 : 0);
+    h.add_number(o.albedo.r).add_number(o.albedo.g).add_number(o.albedo.b);
+    for (const auto* attribute : {&o.mesh.positions, &o.mesh.normals, &o.mesh.warps})
+      h.add(std::string_view(reinterpret_cast<const char*>(attribute->data()), attribute->size() * sizeof(glm::dvec3)));
+    h.add(std::string_view(reinterpret_cast<const char*>(o.mesh.triangles.data()),
+                           o.mesh.triangles.size() * sizeof(o.mesh.triangles[0])));
+  }
+}
+
+}  // namespace
+
 const CachedReference& ReferenceSet::sg_lit(const Case& c, bool thin) {
   const BenchOptions& a = options_;
   const std::string name = c.tag + (thin ? "_thin" : "");
   if (loaded_.count(name)) return loaded_.at(name);
   InputHash h;
-  h.add(kReferenceCodeVersion).add_file(a.assets / "scenes" / (c.scene_name + ".json"));
-  for (const auto& entry : std::filesystem::directory_iterator(a.assets / "scenes"))
-    if (entry.path().extension() == ".bpt") h.add_file(entry.path());  // mesh data scenes read
-  for (const auto& [name, f] : c.fabrics) h.add(name).add_file(a.assets / "fabrics" / (name + ".json"));
+  h.add(kReferenceCodeVersion);
+  add_scene_inputs(h, a.assets, c.scene_name, c.scene);
+  for (const auto& [name, f] : c.fabrics) h.add(name).add_file(fabric_file(name, a.assets / "fabrics"));
   h.add(c.env).add(thin ? "thin" : "opaque");
   for (const auto& g : c.sgs) {
     h.add_number(g.axis.x).add_number(g.axis.y).add_number(g.axis.z).add_number(g.sharpness);
@@ -51,14 +77,15 @@ const CachedReference& ReferenceSet::sg_lit(const Case& c, bool thin) {
   return loaded_.emplace(name, std::move(*ref)).first->second;
 }
 
-CachedReference ReferenceSet::map_lit(const Scene& s, const std::map<std::string, Fabric>& fabrics,
+CachedReference ReferenceSet::map_lit(const std::string& scene_arg, const Scene& s,
+                                      const std::map<std::string, Fabric>& fabrics,
                                       const std::filesystem::path& env_file, std::shared_ptr<const EnvMap> map) {
   const BenchOptions& a = options_;
   InputHash h;
-  h.add(kReferenceCodeVersion).add_file(a.assets / "scenes" / (s.name + ".json")).add_file(env_file).add("map128");
-  for (const auto& entry : std::filesystem::directory_iterator(a.assets / "scenes"))
-    if (entry.path().extension() == ".bpt") h.add_file(entry.path());
-  for (const auto& [name, f] : fabrics) h.add(name).add_file(a.assets / "fabrics" / (name + ".json"));
+  h.add(kReferenceCodeVersion);
+  add_scene_inputs(h, a.assets, scene_arg, s);
+  h.add_file(env_file).add("map128");
+  for (const auto& [name, f] : fabrics) h.add(name).add_file(fabric_file(name, a.assets / "fabrics"));
   h.add_number(a.width).add_number(a.height).add_number(a.tangent_samples);
   const auto cache_file = cache_ / (s.name + "_map_" + h.hex() + ".ref");
   auto ref = load_reference(cache_file);

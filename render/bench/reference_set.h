@@ -20,8 +20,9 @@ public:
 
   // Under the case's SGs at the accuracy size; kept for the run once loaded.
   const CachedReference& sg_lit(const Case& c, bool thin);
-  // Lit by the map itself as 128x64 stratified cells (the SG fit's error counts against it).
-  CachedReference map_lit(const Scene& s, const std::map<std::string, Fabric>& fabrics,
+  // Lit by the map itself as 128x64 stratified cells (the SG fit's error counts against it);
+  // `scene_arg` is the scene as --scenes named it (a preset or a path).
+  CachedReference map_lit(const std::string& scene_arg, const Scene& s, const std::map<std::string, Fabric>& fabrics,
                           const std::filesystem::path& env_file, std::shared_ptr<const EnvMap> map);
 
   int rendered() const { return rendered_; }

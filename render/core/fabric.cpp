@@ -127,6 +127,19 @@ Fabric load_fabric_preset(const std::string& name, const std::filesystem::path& 
   return load_fabric(path);
 }
 
+bool names_fabric_file(const std::string& name) {
+  const std::filesystem::path p(name);
+  return p.has_parent_path() || p.extension() == ".json";
+}
+
+Fabric load_fabric_named(const std::string& name, const std::filesystem::path& dir) {
+  return names_fabric_file(name) ? load_fabric(name) : load_fabric_preset(name, dir);
+}
+
+std::filesystem::path fabric_file(const std::string& name, const std::filesystem::path& dir) {
+  return names_fabric_file(name) ? std::filesystem::path(name) : dir / (name + ".json");
+}
+
 std::vector<std::string> list_fabric_presets(const std::filesystem::path& dir) {
   std::vector<std::string> names;
   std::error_code ec;

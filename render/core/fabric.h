@@ -28,5 +28,12 @@ Fabric load_fabric(const std::filesystem::path& file);
 // Looks a preset up by name in `dir` (`<dir>/<name>.json`).
 Fabric load_fabric_preset(const std::string& name, const std::filesystem::path& dir);
 std::vector<std::string> list_fabric_presets(const std::filesystem::path& dir);
+// True when `name` is a fabric file path rather than a preset name: it has a directory part or
+// ends in .json.
+bool names_fabric_file(const std::string& name);
+// A fabric as the command line or a scene names it: a file path (names_fabric_file) or a preset in `dir`.
+Fabric load_fabric_named(const std::string& name, const std::filesystem::path& dir);
+// The fabric file's text as stored in a bundle: the file itself, or `<dir>/<name>.json`.
+std::filesystem::path fabric_file(const std::string& name, const std::filesystem::path& dir);
 
 }  // namespace weft

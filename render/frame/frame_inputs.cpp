@@ -14,7 +14,7 @@ namespace weft {
 FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   FrameInputs in;
   try {
-    in.scene = load_scene_preset(a.scene, a.assets / "scenes");
+    in.scene = load_scene_named(a.scene, a.assets, a.fabric);
   } catch (const SceneError& e) {
     throw FrameInputError(e.what());
   }
@@ -40,12 +40,16 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   if (!a.fabric.empty())
     for (auto& obj : in.scene.objects)
       if (obj.material == Material::cloth) obj.fabric = a.fabric;
-  for (const auto& obj : in.scene.objects)
-    if (obj.material == Material::cloth && !in.fabrics.count(obj.fabric))
-      in.fabrics.emplace(obj.fabric, load_fabric_preset(obj.fabric, a.assets / "fabrics"));
+  try {
+    for (const auto& obj : in.scene.objects)
+      if (obj.material == Material::cloth && !in.fabrics.count(obj.fabric))
+        in.fabrics.emplace(obj.fabric, load_fabric_named(obj.fabric, a.assets / "fabrics"));
+  } catch (const FabricError& e) {
+    throw FrameInputError(std::string("--fabric: ") + e.what());
+  }
   in.env = a.env.empty() ? in.scene.environment : a.env;
 
-  const auto env_file = a.assets / "envmaps" / (in.env + ".exr");
+  const auto env_file = env_map_file(in.env, a.assets / "envmaps");
   if (!std::filesystem::exists(env_file)) throw FrameInputError("--env: no environment map " + env_file.string());
   EnvMapRepairs repairs;
   try {

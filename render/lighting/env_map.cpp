@@ -231,6 +231,21 @@ glm::dvec3 EnvMap::lookup(const glm::dvec3& d) const {
   return (1 - ty) * ((1 - tx) * a + tx * b) + ty * ((1 - tx) * c + tx * e);
 }
 
+namespace {
+bool names_env_file(const std::string& name) {
+  const std::filesystem::path p(name);
+  return p.has_parent_path() || p.extension() == ".exr";
+}
+}  // namespace
+
+std::filesystem::path env_map_file(const std::string& name, const std::filesystem::path& dir) {
+  return names_env_file(name) ? std::filesystem::path(name) : dir / (name + ".exr");
+}
+
+std::string env_map_label(const std::string& name) {
+  return names_env_file(name) ? std::filesystem::path(name).stem().string() : name;
+}
+
 EnvMap load_env_map(const std::filesystem::path& path, NonFinitePolicy policy, EnvMapRepairs* repairs) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw EnvMapError(path, "file not found");

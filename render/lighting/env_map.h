@@ -71,6 +71,12 @@ glm::dvec2 direction_to_pixel(const glm::dvec3& d, int width, int height);
 EnvMap load_env_map(const std::filesystem::path& path, NonFinitePolicy policy = NonFinitePolicy::fail,
                     EnvMapRepairs* repairs = nullptr);
 
+// An environment map as the command line or a scene names it: a file path (a directory part or
+// an .exr ending) as given, else `<dir>/<name>.exr`.
+std::filesystem::path env_map_file(const std::string& name, const std::filesystem::path& dir);
+// The map's short name for labels: the file's stem for a path, the name otherwise.
+std::string env_map_label(const std::string& name);
+
 enum class ExrPixel { half, full_float };
 enum class ExrCompression { none, rle, zip, piz, dwab };
 struct EnvMapWriteOptions {

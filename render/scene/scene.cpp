@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_scene.h"
 #include "scene/procedural_meshes.h"
 
 namespace weft {
@@ -112,12 +113,81 @@ glm::dvec3 camera_ray(const Camera& c, int width, int height, double px, double 
   return glm::normalize(forward + sx * right + sy * up);
 }
 
-Scene parse_scene(const std::string& json_text, const std::string& origin, const std::filesystem::path& base_dir) {
+namespace {
+
+bool fabric_preset_exists(const std::filesystem::path& dir, const std::string& name) {
+  if (dir.empty() || name.empty() || name.find('/') != std::string::npos || name.find('.') != std::string::npos)
+    return false;
+  std::error_code ec;
+  return std::filesystem::is_regular_file(dir / (name + ".json"), ec);
+}
+
+// A scene file's "gltf" field: the imported scene, with the file's fabric overrides applied.
+Scene import_gltf(const json& j, const std::string& origin, const std::filesystem::path& base_dir,
+                  const SceneLoadOptions& options) {
+  GltfImportOptions g;
+  g.fabrics_dir = options.fabrics_dir;
+  g.fallback_fabric = options.fallback_fabric;
+  if (j.contains("fabrics")) {
+    const json& f = j["fabrics"];
+    if (!f.is_object()) throw SceneError(origin + ": fabrics: expected {\"material name\": \"preset or file\"}");
+    for (const auto& [material, value] : f.items()) {
+      const std::string named = text(value, origin + ": fabrics." + material);
+      // A preset name stays a name; anything else is a fabric file relative to the scene file.
+      g.fabric_overrides[material] =
+          fabric_preset_exists(options.fabrics_dir, named) ? named : (base_dir / named).lexically_normal().string();
+    }
+  }
+  const std::string file = text(j["gltf"], origin + ": gltf");
+  return load_gltf_scene((base_dir / file).lexically_normal(), g);
+}
+
+Camera parse_camera(const json& cam, const std::string& cw) {
+  Camera c;
+  c.position = vec3(field(cam, "position", cw), cw + ".position");
+  c.target = vec3(field(cam, "target", cw), cw + ".target");
+  c.up = vec3(field(cam, "up", cw), cw + ".up");
+  c.fov_deg = number(field(cam, "fov_deg", cw), cw + ".fov_deg");
+  if (!(c.fov_deg > 1.0 && c.fov_deg < 170.0))
+    throw SceneError(cw + ".fov_deg: must be in (1, 170) degrees, got " + std::to_string(c.fov_deg));
+  const glm::dvec3 view = c.target - c.position;
+  if (!(glm::length(view) > 1e-9)) throw SceneError(cw + ": position and target coincide");
+  if (!(glm::length(glm::cross(view, c.up)) > 1e-9 * glm::length(view)))
+    throw SceneError(cw + ".up: zero or parallel to the view direction");
+  return c;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& origin, const std::filesystem::path& base_dir,
+                  const SceneLoadOptions& options) {
   json j;
   try {
     j = json::parse(json_text);
   } catch (const json::exception& e) {
     throw SceneError(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  if (j.is_object() && j.contains("gltf")) {
+    // Objects come from the glTF; the scene file may name it, add a camera, an environment
+    // and further (generated) objects.
+    Scene s = import_gltf(j, origin, base_dir, options);
+    if (j.contains("name")) s.name = text(j["name"], origin + ": name");
+    if (j.contains("description")) s.description = text(j["description"], origin + ": description");
+    if (j.contains("camera")) s.camera = parse_camera(j["camera"], origin + ": camera");
+    if (j.contains("environment")) s.environment = text(j["environment"], origin + ": environment");
+    if (j.contains("objects")) {
+      json rest = j;
+      rest.erase("gltf");
+      rest["name"] = s.name;
+      rest["camera"] = json{{"position", {s.camera.position.x, s.camera.position.y, s.camera.position.z}},
+                            {"target", {s.camera.target.x, s.camera.target.y, s.camera.target.z}},
+                            {"up", {s.camera.up.x, s.camera.up.y, s.camera.up.z}},
+                            {"fov_deg", s.camera.fov_deg}};
+      rest["environment"] = s.environment;
+      Scene extra = parse_scene(rest.dump(), origin, base_dir, options);
+      for (auto& o : extra.objects) s.objects.push_back(std::move(o));
+    }
+    return s;
   }
   Scene s;
   s.name = text(field(j, "name", origin), origin + ": name");
@@ -125,16 +195,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
 
   const std::string cw = origin + ": camera";
   const json& cam = field(j, "camera", origin);
-  s.camera.position = vec3(field(cam, "position", cw), cw + ".position");
-  s.camera.target = vec3(field(cam, "target", cw), cw + ".target");
-  s.camera.up = vec3(field(cam, "up", cw), cw + ".up");
-  s.camera.fov_deg = number(field(cam, "fov_deg", cw), cw + ".fov_deg");
-  if (!(s.camera.fov_deg > 1.0 && s.camera.fov_deg < 170.0))
-    throw SceneError(cw + ".fov_deg: must be in (1, 170) degrees, got " + std::to_string(s.camera.fov_deg));
-  const glm::dvec3 view = s.camera.target - s.camera.position;
-  if (!(glm::length(view) > 1e-9)) throw SceneError(cw + ": position and target coincide");
-  if (!(glm::length(glm::cross(view, s.camera.up)) > 1e-9 * glm::length(view)))
-    throw SceneError(cw + ".up: zero or parallel to the view direction");
+  s.camera = parse_camera(cam, cw);
 
   s.environment = text(field(j, "environment", origin), origin + ": environment");
 
@@ -169,18 +230,37 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
   return s;
 }
 
-Scene load_scene(const std::filesystem::path& file) {
-  return parse_scene(read_text(file, "scene file"), file.string(), file.parent_path());
+Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
+  if (is_gltf_path(file.string())) {
+    GltfImportOptions g;
+    g.fabrics_dir = options.fabrics_dir;
+    g.fallback_fabric = options.fallback_fabric;
+    return load_gltf_scene(file, g);
+  }
+  return parse_scene(read_text(file, "scene file"), file.string(), file.parent_path(), options);
 }
 
-Scene load_scene_preset(const std::string& name, const std::filesystem::path& dir) {
+bool names_scene_file(const std::string& name) {
+  const std::filesystem::path p(name);
+  return p.has_parent_path() || p.extension() == ".json" || is_gltf_path(name);
+}
+
+Scene load_scene_named(const std::string& name, const std::filesystem::path& assets, const std::string& fallback_fabric) {
+  SceneLoadOptions options;
+  options.fabrics_dir = assets / "fabrics";
+  options.fallback_fabric = fallback_fabric;
+  if (names_scene_file(name)) return load_scene(name, options);
+  return load_scene_preset(name, assets / "scenes", options);
+}
+
+Scene load_scene_preset(const std::string& name, const std::filesystem::path& dir, const SceneLoadOptions& options) {
   const auto file = dir / (name + ".json");
   if (!std::filesystem::exists(file)) {
     std::string known;
     for (const auto& n : list_scene_presets(dir)) known += (known.empty() ? "" : ", ") + n;
     throw SceneError("no scene '" + name + "' in " + dir.string() + " (known: " + known + ")");
   }
-  return load_scene(file);
+  return load_scene(file, options);
 }
 
 std::vector<std::string> list_scene_presets(const std::filesystem::path& dir) {

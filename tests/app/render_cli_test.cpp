@@ -76,6 +76,41 @@ TEST(RenderCli, BadInputExitsWithTwo) {
   EXPECT_FALSE(fs::exists(temp("bad.exr")));
 }
 
+// Scenes, fabrics and maps by path (DESIGN §1): a glTF scene (the fuzz corpus's UV-mapped quad
+// with a linen_plain material), a fabric file and an .exr file outside assets/.
+TEST(RenderCli, GltfSceneFabricFileAndMapByPath) {
+  const fs::path gltf = fs::path(WEFT_SOURCE_ASSETS) / "../tests/fuzz/corpus/gltf/quad.gltf";
+  const fs::path fabric = temp("my_velvet.json"), map = temp("my_studio.exr"), exr = temp("gltf.exr");
+  fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "fabrics/velvet.json", fabric, fs::copy_options::overwrite_existing);
+  fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "envmaps/studio.exr", map, fs::copy_options::overwrite_existing);
+  const CliResult r = weft("render --scene " + gltf.string() + " --fabric " + fabric.string() + " --env " +
+                           map.string() + " --lighting map --map-width 16 --width 12 --height 9 --tangent-samples 4 "
+                           "--no-convergence-check --out " + exr.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["scene"], "quad");
+  EXPECT_TRUE(is_png(temp("gltf.png")));
+  fs::remove(exr), fs::remove(temp("gltf.png")), fs::remove(fabric), fs::remove(map);
+}
+
+// A broken glTF is bad input for render and bake alike: exit 2, the file and the reason on
+// stderr, no bundle written.
+TEST(RenderCli, BrokenGltfExitsWithTwoNamingFileAndReason) {
+  const fs::path broken = fs::path(WEFT_SOURCE_ASSETS) / "../tests/fuzz/corpus/gltf/index_out_of_range.glb";
+  const fs::path exr = temp("broken.exr"), bundle = temp("broken.weft"), log = temp("broken.log");
+  for (const std::string& cmd : {"render --scene " + broken.string() + " --out " + exr.string(),
+                                 "bake --scene " + broken.string() + " --out " + bundle.string()}) {
+    const int code = std::system((std::string(WEFT_BINARY) + " " + cmd + " >/dev/null 2>" + log.string()).c_str());
+    EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 2) << cmd;
+    std::ifstream in(log);
+    const std::string err((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(err.find("index_out_of_range.glb"), std::string::npos) << err;
+    EXPECT_NE(err.find("out of range"), std::string::npos) << err;
+  }
+  EXPECT_FALSE(fs::exists(exr));
+  EXPECT_FALSE(fs::exists(bundle));
+  fs::remove(log);
+}
+
 // Every GPU method of the ladder renders through the CLI (pixels are the parity tests' and the
 // bench's business): exit 0, EXR and PNG written, the method named in the summary.
 TEST(RenderCli, LadderMethodsRender) {

@@ -89,3 +89,16 @@ TEST(Fabric, GarbageAndAbsurdValuesAreRejected) {
   EXPECT_THROW(load_fabric_preset("../etc/passwd", kDir), FabricError);
   EXPECT_THROW(load_fabric_preset("no_such_fabric", kDir), FabricError);
 }
+
+TEST(Fabric, NamedByPresetOrByFilePath) {
+  EXPECT_FALSE(names_fabric_file("velvet"));
+  EXPECT_TRUE(names_fabric_file("my_velvet.json"));
+  EXPECT_TRUE(names_fabric_file("fabrics/velvet"));
+  const std::string file = (std::filesystem::temp_directory_path() / "weft_fabric_by_path.json").string();
+  std::filesystem::copy_file(kDir + "/silk_shot.json", file, std::filesystem::copy_options::overwrite_existing);
+  EXPECT_EQ(load_fabric_named(file, "/nonexistent").name, load_fabric_preset("silk_shot", kDir).name);
+  EXPECT_EQ(load_fabric_named("silk_shot", kDir).name, load_fabric_preset("silk_shot", kDir).name);
+  EXPECT_EQ(fabric_file("silk_shot", kDir), std::filesystem::path(kDir) / "silk_shot.json");
+  EXPECT_THROW(load_fabric_named("/nonexistent/x.json", kDir), FabricError);
+  std::filesystem::remove(file);
+}

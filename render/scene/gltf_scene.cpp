@@ -1,0 +1,523 @@
+#include "scene/gltf_scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+namespace weft {
+
+namespace {
+
+constexpr const char* kDefaultEnvironment = "studio";
+
+// glTF (+Y up) to Weft (+Z up): (x, y, z) → (x, −z, y), a rotation about +x.
+const glm::dmat4 kToWeft(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, -1, 0, 0),
+                         glm::dvec4(0, 0, 0, 1));
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Textures are not used: images are skipped without decoding.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// External buffers: only regular files within the size cap (no devices, no FIFOs, nothing that
+// would take the whole memory), and nothing is ever written.
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    if (err) *err += "File not found : " + path + "\n";
+    return false;
+  }
+  if (std::filesystem::file_size(path, ec) > kGltfMaxFileBytes) {
+    if (err) *err += "buffer file " + path + " exceeds the importer's size limit\n";
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, path, nullptr);
+}
+
+bool refuse_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "the importer writes no files\n";
+  return false;
+}
+
+// A validated view of one accessor's elements inside its buffer.
+struct AccessorData {
+  const unsigned char* data = nullptr;
+  size_t count = 0, stride = 0;
+  int component_type = 0, components = 0;
+  bool normalized = false;
+
+  double component(size_t element, int c) const {
+    const unsigned char* p = data + element * stride;
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float v;
+        std::memcpy(&v, p + 4 * c, 4);
+        return v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+        const double v = p[c];
+        return normalized ? v / 255.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t v;
+        std::memcpy(&v, p + 2 * c, 2);
+        return normalized ? v / 65535.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        uint32_t v;
+        std::memcpy(&v, p + 4 * c, 4);
+        return v;
+      }
+    }
+    return 0.0;
+  }
+};
+
+Camera framed_camera(const Scene& s);
+
+class Importer {
+public:
+  Importer(const tinygltf::Model& model, std::string origin, std::filesystem::path base_dir,
+           const GltfImportOptions& options)
+      : m_(model), origin_(std::move(origin)), base_dir_(std::move(base_dir)), options_(options) {}
+
+  Scene run();
+
+private:
+  [[noreturn]] void fail(const std::string& what) const { throw SceneError(origin_ + ": " + what); }
+
+  AccessorData accessor(int index, const std::string& where, std::initializer_list<int> types,
+                        std::initializer_list<int> component_types);
+  void resolve_materials();
+  std::vector<std::pair<int, glm::dmat4>> mesh_instances();
+  void add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world, const std::string& where);
+
+  const tinygltf::Model& m_;
+  std::string origin_;
+  std::filesystem::path base_dir_;
+  const GltfImportOptions& options_;
+
+  // Per material (index + 1; 0 is glTF's default material): its fabric ("" = Lambertian).
+  std::vector<std::string> fabrics_;
+  std::vector<TriangleMesh> groups_;
+  std::vector<MeshRepairReport> reports_;
+  size_t vertices_ = 0, triangles_ = 0;
+};
+
+AccessorData Importer::accessor(int index, const std::string& where, std::initializer_list<int> types,
+                                std::initializer_list<int> component_types) {
+  if (index < 0 || static_cast<size_t>(index) >= m_.accessors.size())
+    fail(where + ": accessor " + std::to_string(index) + " does not exist (" + std::to_string(m_.accessors.size()) +
+         " accessors)");
+  const tinygltf::Accessor& a = m_.accessors[index];
+  const std::string at = where + " (accessor " + std::to_string(index) + ")";
+  if (std::find(types.begin(), types.end(), a.type) == types.end())
+    fail(at + ": wrong element type " + std::to_string(a.type));
+  if (std::find(component_types.begin(), component_types.end(), a.componentType) == component_types.end())
+    fail(at + ": wrong component type " + std::to_string(a.componentType));
+  if (a.sparse.isSparse) fail(at + ": sparse accessors are not supported");
+  if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= m_.bufferViews.size())
+    fail(at + ": buffer view " + std::to_string(a.bufferView) + " does not exist");
+  const tinygltf::BufferView& v = m_.bufferViews[a.bufferView];
+  if (v.buffer < 0 || static_cast<size_t>(v.buffer) >= m_.buffers.size())
+    fail(at + ": buffer " + std::to_string(v.buffer) + " does not exist");
+  const size_t buffer_size = m_.buffers[v.buffer].data.size();
+  if (v.byteOffset > buffer_size || v.byteLength > buffer_size - v.byteOffset)
+    fail(at + ": buffer view " + std::to_string(a.bufferView) + " runs past the end of buffer " +
+         std::to_string(v.buffer) + " (" + std::to_string(buffer_size) + " bytes; missing or short buffer file?)");
+  AccessorData d;
+  d.component_type = a.componentType;
+  d.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+  d.normalized = a.normalized;
+  d.count = a.count;
+  const size_t element = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(a.componentType)) * d.components;
+  d.stride = v.byteStride != 0 ? v.byteStride : element;
+  if (d.stride < element) fail(at + ": byte stride " + std::to_string(d.stride) + " is smaller than an element");
+  if (d.count > std::max(kGltfMaxVertices, 3 * kGltfMaxTriangles))
+    fail(at + ": " + std::to_string(d.count) + " elements exceed the importer's limit");
+  if (d.count == 0) fail(at + ": no elements");
+  const size_t span = (d.count - 1) * d.stride + element;
+  if (a.byteOffset > v.byteLength || span > v.byteLength - a.byteOffset)
+    fail(at + ": " + std::to_string(d.count) + " elements run past the end of buffer view " +
+         std::to_string(a.bufferView));
+  d.data = m_.buffers[v.buffer].data.data() + v.byteOffset + a.byteOffset;
+  return d;
+}
+
+bool is_preset(const std::filesystem::path& dir, const std::string& name) {
+  if (dir.empty() || name.empty()) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+  std::error_code ec;
+  return std::filesystem::is_regular_file(dir / (name + ".json"), ec);
+}
+
+void Importer::resolve_materials() {
+  fabrics_.assign(m_.materials.size() + 1, "");
+  bool any_cloth = false;
+  for (size_t i = 0; i < m_.materials.size(); ++i) {
+    const tinygltf::Material& mat = m_.materials[i];
+    std::string& fabric = fabrics_[i + 1];
+    if (auto it = options_.fabric_overrides.find(mat.name); it != options_.fabric_overrides.end()) {
+      fabric = it->second;
+    } else if (mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has("fabric")) {
+      const tinygltf::Value& f = mat.extras.Get("weft").Get("fabric");
+      const std::string where = "materials[" + std::to_string(i) + "] ('" + mat.name + "').extras.weft.fabric";
+      if (!f.IsString() || f.Get<std::string>().empty()) fail(where + ": expected a preset name or a fabric file");
+      const std::string named = f.Get<std::string>();
+      if (is_preset(options_.fabrics_dir, named)) {
+        fabric = named;
+      } else {
+        const std::filesystem::path file = (base_dir_ / named).lexically_normal();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec))
+          fail(where + ": '" + named + "' is neither a fabric preset nor a file (looked for " + file.string() + ")");
+        fabric = file.string();
+      }
+    } else if (is_preset(options_.fabrics_dir, mat.name)) {
+      fabric = mat.name;
+    }
+    any_cloth = any_cloth || !fabric.empty();
+  }
+  if (!any_cloth && !options_.fallback_fabric.empty()) std::fill(fabrics_.begin(), fabrics_.end(), options_.fallback_fabric);
+}
+
+glm::dmat4 local_transform(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glm
+  glm::dmat4 t(1.0);
+  if (n.translation.size() == 3) t = glm::translate(t, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+  if (n.rotation.size() == 4) {
+    glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // glTF: x, y, z, w
+    const double l = glm::length(q);
+    if (l > 0.0) t = t * glm::mat4_cast(q / l);
+  }
+  if (n.scale.size() == 3) t = glm::scale(t, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+  return t;
+}
+
+// Every node's world transform (already in Weft's frame), walking the scene's roots; a node
+// reached twice means the hierarchy is not a tree (cycles included) and is refused.
+std::vector<std::pair<int, glm::dmat4>> Importer::mesh_instances() {
+  const size_t n = m_.nodes.size();
+  std::vector<int> roots;
+  if (!m_.scenes.empty()) {
+    const int s = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+    if (static_cast<size_t>(s) >= m_.scenes.size()) fail("scene " + std::to_string(s) + " does not exist");
+    roots = m_.scenes[s].nodes;
+  } else {  // no scenes: every node nobody names as a child
+    std::vector<bool> child(n, false);
+    for (const auto& node : m_.nodes)
+      for (int c : node.children)
+        if (c >= 0 && static_cast<size_t>(c) < n) child[c] = true;
+    for (size_t i = 0; i < n; ++i)
+      if (!child[i]) roots.push_back(static_cast<int>(i));
+  }
+  std::vector<bool> seen(n, false);
+  std::vector<std::pair<int, glm::dmat4>> stack, out;
+  for (int r : roots) stack.emplace_back(r, kToWeft);
+  while (!stack.empty()) {
+    auto [i, parent] = stack.back();
+    stack.pop_back();
+    if (i < 0 || static_cast<size_t>(i) >= n) fail("node " + std::to_string(i) + " does not exist");
+    if (seen[i]) fail("node " + std::to_string(i) + " is reached twice: the node hierarchy is not a tree");
+    seen[i] = true;
+    const tinygltf::Node& node = m_.nodes[i];
+    for (double x : node.matrix)
+      if (!std::isfinite(x)) fail("nodes[" + std::to_string(i) + "].matrix is not finite");
+    for (const auto* v : {&node.translation, &node.rotation, &node.scale})
+      for (double x : *v)
+        if (!std::isfinite(x)) fail("nodes[" + std::to_string(i) + "] has a non-finite transform");
+    const glm::dmat4 world = parent * local_transform(node);
+    if (node.mesh >= 0 || node.camera >= 0) out.emplace_back(i, world);
+    for (int c : node.children) stack.emplace_back(c, world);
+  }
+  return out;
+}
+
+void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world, const std::string& where) {
+  if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES)
+    fail(where + ": mode " + std::to_string(p.mode) + " is not triangles (only mode 4 is supported)");
+  if (p.material < -1 || p.material >= static_cast<int>(m_.materials.size()))
+    fail(where + ": material " + std::to_string(p.material) + " does not exist");
+  const std::string& fabric = fabrics_[p.material + 1];
+  const bool cloth = !fabric.empty();
+  auto attribute = [&](const char* name) {
+    auto it = p.attributes.find(name);
+    return it == p.attributes.end() ? -1 : it->second;
+  };
+  const int pos_i = attribute("POSITION"), nrm_i = attribute("NORMAL"), uv_i = attribute("TEXCOORD_0"),
+            tan_i = attribute("TANGENT");
+  if (pos_i < 0) fail(where + ": no POSITION attribute");
+  constexpr int F = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const AccessorData pos = accessor(pos_i, where + ".POSITION", {TINYGLTF_TYPE_VEC3}, {F});
+  const size_t nv = pos.count;
+  if (nv > kGltfMaxVertices - vertices_)
+    fail("more than " + std::to_string(kGltfMaxVertices) + " vertices in all (the importer's limit)");
+
+  TriangleMesh mesh;
+  mesh.positions.resize(nv);
+  for (size_t v = 0; v < nv; ++v) mesh.positions[v] = {pos.component(v, 0), pos.component(v, 1), pos.component(v, 2)};
+  auto same_count = [&](const AccessorData& a, const char* name) {
+    if (a.count != nv)
+      fail(where + "." + name + ": " + std::to_string(a.count) + " elements for " + std::to_string(nv) + " positions");
+  };
+  if (nrm_i >= 0) {
+    const AccessorData a = accessor(nrm_i, where + ".NORMAL", {TINYGLTF_TYPE_VEC3}, {F});
+    same_count(a, "NORMAL");
+    mesh.normals.resize(nv);
+    for (size_t v = 0; v < nv; ++v) mesh.normals[v] = {a.component(v, 0), a.component(v, 1), a.component(v, 2)};
+  }
+  if (uv_i >= 0) {
+    const AccessorData a = accessor(uv_i, where + ".TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
+                                    {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    same_count(a, "TEXCOORD_0");
+    mesh.uvs.resize(nv);
+    for (size_t v = 0; v < nv; ++v) mesh.uvs[v] = {a.component(v, 0), a.component(v, 1)};
+  }
+  std::vector<glm::dvec3> tangents;
+  if (tan_i >= 0) {
+    const AccessorData a = accessor(tan_i, where + ".TANGENT", {TINYGLTF_TYPE_VEC4}, {F});
+    same_count(a, "TANGENT");
+    tangents.resize(nv);
+    for (size_t v = 0; v < nv; ++v) {
+      tangents[v] = {a.component(v, 0), a.component(v, 1), a.component(v, 2)};
+      if (!finite(tangents[v])) fail(where + ".TANGENT: vertex " + std::to_string(v) + " is not finite (NaN/Inf)");
+    }
+  }
+  if (cloth && tangents.empty() && mesh.uvs.empty())
+    fail(where + ": cloth (fabric '" + fabric +
+         "') needs TANGENT or TEXCOORD_0 for its warp direction, and this primitive has neither");
+
+  if (p.indices >= 0) {
+    const AccessorData a = accessor(p.indices, where + ".indices", {TINYGLTF_TYPE_SCALAR},
+                                    {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+    if (a.count % 3 != 0) fail(where + ".indices: " + std::to_string(a.count) + " indices are not whole triangles");
+    if (a.count / 3 > kGltfMaxTriangles - triangles_)
+      fail("more than " + std::to_string(kGltfMaxTriangles) + " triangles in all (the importer's limit)");
+    mesh.triangles.resize(a.count / 3);
+    for (size_t t = 0; t < a.count / 3; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const double idx = a.component(3 * t + k, 0);
+        if (idx >= static_cast<double>(nv))
+          fail(where + ".indices: index " + std::to_string(static_cast<uint64_t>(idx)) + " is out of range (" +
+               std::to_string(nv) + " vertices)");
+        mesh.triangles[t][k] = static_cast<uint32_t>(idx);
+      }
+  } else {
+    if (nv % 3 != 0) fail(where + ": " + std::to_string(nv) + " unindexed vertices are not whole triangles");
+    mesh.triangles.resize(nv / 3);
+    for (size_t t = 0; t < nv / 3; ++t)
+      mesh.triangles[t] = {uint32_t(3 * t), uint32_t(3 * t + 1), uint32_t(3 * t + 2)};
+  }
+
+  // Into Weft's frame: points by the world matrix, normals by its inverse transpose, tangents
+  // by its linear part; a mirroring transform flips the winding so that faces keep their side.
+  const glm::dmat3 linear(world);
+  const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+  if (!(std::abs(glm::determinant(linear)) > 0.0)) fail(where + ": its node transform is singular");
+  for (auto& q : mesh.positions) q = glm::dvec3(world * glm::dvec4(q, 1.0));
+  for (auto& q : mesh.normals) q = normal_matrix * q;
+  for (auto& q : tangents) q = linear * q;
+  if (glm::determinant(linear) < 0.0)
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+
+  MeshRepairReport report;
+  try {
+    // UV-degenerate triangles matter only where the warp comes from the UVs.
+    report = repair_mesh(mesh, cloth && tangents.empty(), where);
+    if (mesh.normals.empty()) compute_vertex_normals(mesh);
+    for (size_t v = 0; v < nv; ++v) {
+      const double l = glm::length(mesh.normals[v]);
+      if (!(l > 1e-12)) fail(where + ".NORMAL: vertex " + std::to_string(v) + " has a zero-length normal");
+      mesh.normals[v] /= l;
+    }
+    if (tangents.empty()) {
+      compute_warp_directions(mesh);
+    } else {
+      mesh.warps = std::move(tangents);
+      for (size_t v = 0; v < nv; ++v) {
+        const glm::dvec3& n = mesh.normals[v];
+        glm::dvec3 w = mesh.warps[v] - glm::dot(mesh.warps[v], n) * n;
+        if (!(glm::length(w) > 1e-12))  // tangent along the normal: any tangent keeps the frame valid
+          w = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
+        mesh.warps[v] = glm::normalize(w);
+      }
+    }
+  } catch (const MeshError& e) {
+    fail(e.what());
+  }
+
+  // Merge into the material's object.
+  TriangleMesh& g = groups_[p.material + 1];
+  MeshRepairReport& r = reports_[p.material + 1];
+  r.degenerate_triangles_dropped += report.degenerate_triangles_dropped;
+  r.unused_vertices += report.unused_vertices;
+  const uint32_t base = static_cast<uint32_t>(g.positions.size());
+  const bool had_uvs = g.positions.empty() || !g.uvs.empty();
+  g.positions.insert(g.positions.end(), mesh.positions.begin(), mesh.positions.end());
+  g.normals.insert(g.normals.end(), mesh.normals.begin(), mesh.normals.end());
+  g.warps.insert(g.warps.end(), mesh.warps.begin(), mesh.warps.end());
+  if (had_uvs && !mesh.uvs.empty())
+    g.uvs.insert(g.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+  else
+    g.uvs.clear();  // UVs are kept only where every merged primitive has them
+  for (const auto& t : mesh.triangles) g.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  vertices_ += nv;
+  triangles_ += mesh.triangles.size();
+}
+
+// Looks at the bounds' centre from the front left and above (Weft's cameras face +y), far enough
+// that the bounding sphere fills the vertical field of view.
+Camera framed_camera(const Scene& s) {
+  bool any_cloth = false;
+  for (const auto& o : s.objects) any_cloth = any_cloth || o.material == Material::cloth;
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const auto& o : s.objects)
+    if (!any_cloth || o.material == Material::cloth)
+      for (const auto& p : o.mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+  Camera c;
+  c.fov_deg = 40.0;
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+  const double distance = 1.1 * radius / std::sin(0.5 * c.fov_deg * 3.14159265358979323846 / 180.0);
+  c.target = centre;
+  c.position = centre + distance * glm::normalize(glm::dvec3(0.45, -1.0, 0.55));
+  c.up = {0, 0, 1};
+  return c;
+}
+
+Scene Importer::run() {
+  resolve_materials();
+  groups_.assign(fabrics_.size(), {});
+  reports_.assign(fabrics_.size(), {});
+  Scene s;
+  s.environment = kDefaultEnvironment;
+  bool have_camera = false;
+  for (const auto& [node, world] : mesh_instances()) {
+    const tinygltf::Node& n = m_.nodes[node];
+    if (n.camera >= 0 && !have_camera) {
+      if (static_cast<size_t>(n.camera) >= m_.cameras.size()) fail("camera " + std::to_string(n.camera) + " does not exist");
+      const tinygltf::Camera& c = m_.cameras[n.camera];
+      if (c.type == "perspective") {
+        const double fov = c.perspective.yfov * 180.0 / 3.14159265358979323846;
+        if (!(fov > 1.0 && fov < 170.0))
+          fail("cameras[" + std::to_string(n.camera) + "].yfov: must be in (1, 170) degrees, got " + std::to_string(fov));
+        // A glTF camera looks down its local −Z with +Y up.
+        s.camera.position = glm::dvec3(world * glm::dvec4(0, 0, 0, 1));
+        const glm::dvec3 forward = glm::dvec3(world * glm::dvec4(0, 0, -1, 0));
+        const glm::dvec3 up = glm::dvec3(world * glm::dvec4(0, 1, 0, 0));
+        if (!(glm::length(forward) > 1e-12) || !(glm::length(glm::cross(forward, up)) > 1e-12 * glm::length(forward)))
+          fail("nodes[" + std::to_string(node) + "]: camera transform is singular");
+        s.camera.target = s.camera.position + glm::normalize(forward);
+        s.camera.up = glm::normalize(up);
+        s.camera.fov_deg = fov;
+        have_camera = true;
+      }
+    }
+    if (n.mesh < 0) continue;
+    if (static_cast<size_t>(n.mesh) >= m_.meshes.size()) fail("mesh " + std::to_string(n.mesh) + " does not exist");
+    const tinygltf::Mesh& mesh = m_.meshes[n.mesh];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p)
+      add_primitive(mesh.primitives[p], world,
+                    "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(p) + "]");
+  }
+  for (size_t i = 0; i < groups_.size(); ++i) {
+    if (groups_[i].triangles.empty()) continue;
+    SceneObject o;
+    o.name = i == 0 ? std::string("default") : m_.materials[i - 1].name;
+    if (o.name.empty()) o.name = "material_" + std::to_string(i - 1);
+    const std::string stem = o.name;
+    for (int k = 2; std::any_of(s.objects.begin(), s.objects.end(), [&](const SceneObject& x) { return x.name == o.name; });
+         ++k)
+      o.name = stem + "_" + std::to_string(k);  // material names need not be unique
+    o.mesh = std::move(groups_[i]);
+    o.repair = reports_[i];
+    if (!fabrics_[i].empty()) {
+      o.material = Material::cloth;
+      o.fabric = fabrics_[i];
+    } else {
+      o.material = Material::lambertian;
+      if (i > 0) {
+        const auto& f = m_.materials[i - 1].pbrMetallicRoughness.baseColorFactor;
+        if (f.size() >= 3)
+          for (int c = 0; c < 3; ++c) o.albedo[c] = std::isfinite(f[c]) ? std::clamp(f[c], 0.0, 1.0) : 0.5;
+      }
+    }
+    s.objects.push_back(std::move(o));
+  }
+  if (s.objects.empty()) fail("no triangle meshes in the scene");
+  if (!have_camera) s.camera = framed_camera(s);
+  return s;
+}
+
+}  // namespace
+
+bool is_gltf_path(const std::string& name) {
+  std::string ext = std::filesystem::path(name).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".gltf" || ext == ".glb";
+}
+
+Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, const std::filesystem::path& base_dir,
+                       const GltfImportOptions& options) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  loader.SetFsCallbacks({tinygltf::FileExists, tinygltf::ExpandFilePath, read_buffer_file, refuse_write, nullptr});
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<unsigned int>(bytes.size()), base_dir.string())
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+                                             base_dir.string());
+  } catch (const std::exception& e) {
+    ok = false;
+    err = e.what();
+  }
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    std::replace(err.begin(), err.end(), '\n', ';');
+    throw SceneError(origin + ": not a usable glTF 2.0 file (" + (err.empty() ? std::string("no reason given") : err) + ")");
+  }
+  Scene s = Importer(model, origin, base_dir, options).run();
+  s.name = std::filesystem::path(origin).stem().string();
+  s.description = "glTF " + origin;
+  return s;
+}
+
+Scene load_gltf_scene(const std::filesystem::path& file, const GltfImportOptions& options) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw SceneError("cannot open glTF file " + file.string() + " (" + ec.message() + ")");
+  if (size > kGltfMaxFileBytes)
+    throw SceneError(file.string() + ": " + std::to_string(size) + " bytes exceed the importer's limit");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError("cannot open glTF file " + file.string());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_gltf_scene(ss.str(), file.string(), file.parent_path(), options);
+}
+
+}  // namespace weft
