@@ -88,7 +88,7 @@ int run_panel_monitor(const PanelMonitorConfig& c, const std::atomic<bool>& stop
   try {
     made = make_knob_sources(c.simulate.empty() ? config.sources : std::vector<std::string>{"sim:" + c.simulate}, config, so);
   } catch (const UnknownKnobSourceError& e) {
-    throw KioskConfigError("--source: unknown source '" + e.name() + "' (hid, gpio or keyboard)");
+    throw KioskConfigError("--source: unknown source '" + e.name() + "' (hid, gpio, keyboard, sim:SCRIPT or none)");
   }
   double duration = c.duration;
   if (duration < 0 && !c.simulate.empty()) duration = made.script_seconds + 0.3;
