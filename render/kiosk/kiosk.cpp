@@ -98,9 +98,9 @@ void Kiosk::load_bundle() {
     throw;
   }
   if (!scene_) fo.accept(opened_->bundle);
-  method_name_ = config_.method != "auto" ? config_.method : (iwasaki_ ? "iwasaki_vertex" : "sgpoint");
-  if (gpu::uses_seed000_tables(gpu::parse_method(method_name_)) && !iwasaki_)
-    throw KioskConfigError("--method " + method_name_ + ": bundle " + opened_->file.string() +
+  method_ = &gpu::parse_method(config_.method != "auto" ? config_.method : (iwasaki_ ? "iwasaki_vertex" : "sgpoint"));
+  if (gpu::uses_seed000_tables(*method_) && !iwasaki_)
+    throw KioskConfigError("--method " + method_->name + ": bundle " + opened_->file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");
   (opened_->is_last_good ? log_warning : log_info)("bundle " + opened_->file.string() +
            (opened_->is_last_good ? " (LAST GOOD COPY: " + opened_->primary_error + ")" : "") + ": scene '" +
@@ -178,7 +178,7 @@ void Kiosk::start_renderer() {
   const SceneBundle& sb = *scene_;
   for (const auto& o : sb.scene.objects)
     if (o.material == Material::cloth) cloth_fabrics_.push_back(sb.fabrics.at(o.fabric));
-  renderer_ = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth_fabrics_, gpu::parse_method(method_name_), 16, iwasaki_);
+  renderer_ = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth_fabrics_, *method_, 16, iwasaki_);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (kms_) tonemap_ = std::make_unique<gpu::ToneMapper>();
 }
@@ -210,7 +210,7 @@ void Kiosk::show_first_frame() {
   const std::string where = kms_ ? kms_->description() : "headless";
   char line[256];
   std::snprintf(line, sizeof line, "first frame after %.0f ms (%dx%d, %s, %s)", boot_ms, width_, height_, where.c_str(),
-                method_name_.c_str());
+                method_->name.c_str());
   log_info(line);
   notifier_.ready(std::string("showing '") + scene_->scene.name + "'" +
                   (opened_->is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);

@@ -120,7 +120,7 @@ private:
   std::optional<bundle::OpenedBundle> opened_;
   std::optional<SceneBundle> scene_;
   std::shared_ptr<const IwasakiBundleData> iwasaki_;
-  std::string method_name_;
+  const methods::RuntimeMethod* method_ = nullptr;  // from the registry: --method, or the bundle's best
 
   // The display.
   std::unique_ptr<gpu::KmsDisplay> kms_;
