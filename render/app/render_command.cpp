@@ -35,6 +35,8 @@ struct RenderArgs {
   int check_stride = 6;
   bool no_check = false;
   double exposure = 0.0;  // 0: automatic
+  double exposure_bias = 0.0;
+  std::string backdrop = "showroom";
   int timed_frames = 20;
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
 };
@@ -58,6 +60,8 @@ int run_render(const RenderArgs& a) {
   if (a.tangent_samples < 1 || a.tangent_samples > 4096) throw UsageError("--tangent-samples: must be within 1..4096");
   if (a.check_stride < 1) throw UsageError("--check-stride: must be ≥ 1");
   if (!(a.exposure >= 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be ≥ 0 (0: automatic)");
+  if (!std::isfinite(a.exposure_bias) || std::abs(a.exposure_bias) > 20) throw UsageError("--exposure-bias: must be within -20..20 EV");
+  if (a.backdrop != "showroom" && a.backdrop != "measure") throw UsageError("--backdrop: must be 'showroom' or 'measure'");
   if (std::filesystem::path(a.out).extension() != ".exr")
     throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
 
@@ -75,11 +79,12 @@ int run_render(const RenderArgs& a) {
     o.progress = open_progress_bar;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, o));
   }
-  const FrameFileOptions files{a.method, a.out, a.width, a.height, a.exposure};
+  const FrameFileOptions files{a.method, a.out, a.width, a.height, a.exposure, a.exposure_bias};
   if (a.method != "reference") {
     GpuFrame f;
     try {
-      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki);
+      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki,
+                           a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure);
     } catch (const gpu::GpuError& e) {
       std::cerr << "weft render: " << e.what() << "\n";
       return 1;
@@ -125,8 +130,10 @@ CommandAction add_render_command(CLI::App& app) {
   sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex, mizutani: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
-  sub->add_option("--exposure", a->exposure, "PNG: exposure before the 1-exp(-x) tone curve and sRGB (0: automatic, from the mean of the surfaces)")
+  sub->add_option("--exposure", a->exposure, "PNG: fixed exposure before the filmic curve and sRGB (0: metered on the cloth)")
       ->capture_default_str();
+  sub->add_option("--exposure-bias", a->exposure_bias, "PNG: EV added to the metered exposure (+1: twice as bright)")->capture_default_str();
+  sub->add_option("--backdrop", a->backdrop, "GPU methods: showroom (the environment, softened, behind the scene) or measure (black; the sharp environment behind see-through cloth, as the bench draws)")->capture_default_str();
   return [a] { return run_render(*a); };
 }
 

@@ -48,7 +48,10 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--method", a->method, "Runtime method: auto (iwasaki_vertex when the bundle has seed 000 tables, else sgpoint), iwasaki (per pixel), iwasaki_vertex (per vertex: same tables, a fraction of the cost) or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
-  sub->add_option("--exposure", a->exposure, "Tone-mapping exposure")->capture_default_str();
+  sub->add_option("--exposure-bias", a->exposure_bias, "EV added to the exposure metered on the cloth (+1: twice as bright)")
+      ->capture_default_str();
+  sub->add_option("--exposure", a->exposure, "Multiplier on the metered exposure: the same as --exposure-bias log2(X)")
+      ->capture_default_str();
   sub->add_option("--probe", a->probe, "Light probe: none, camera[:ID] (libcamera) or mock:MAP.exr[,MAP.exr...]")
       ->capture_default_str();
   sub->add_option("--probe-switch", a->probe_switch_s, "Mock probe with several maps: seconds between switching them");

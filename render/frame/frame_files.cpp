@@ -21,9 +21,8 @@ std::filesystem::path png_beside(const std::filesystem::path& exr) {
 void write_gpu_frame(const FrameInputs& in, const GpuFrame& f, const FrameFileOptions& a) {
   const std::filesystem::path out(a.out);
   write_exr(f.image, out);
-  std::vector<bool> drawn(f.image.pixels.size());  // the GPU frame clears the background to 0
-  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = f.image.pixels[i] != glm::dvec3(0.0);
-  write_png(f.image, png_beside(out), a.exposure > 0.0 ? a.exposure : auto_exposure(f.image, drawn));
+  const double exposure = a.exposure > 0.0 ? a.exposure : auto_exposure(f.image, f.cloth, a.exposure_bias);
+  write_png(f.image, png_beside(out), exposure);
   nlohmann::ordered_json j;
   j["scene"] = in.scene.name;
   j["method"] = a.method;
@@ -33,6 +32,7 @@ void write_gpu_frame(const FrameInputs& in, const GpuFrame& f, const FrameFileOp
   j["median_ms"] = f.median_ms;
   j["frames"] = f.frames;
   j["out"] = a.out;
+  j["png_exposure"] = exposure;
   std::cout << j.dump() << "\n";
 }
 
@@ -56,9 +56,9 @@ void render_reference_frame(const FrameInputs& in, const ReferenceLighting& ligh
   const ReferenceRenderer renderer(in.scene, in.fabrics, lighting, opt);
   const ReferenceRenderResult r = renderer.render(0);
   write_exr(r.image, out);
-  std::vector<bool> surface(r.kinds.size());
-  for (size_t i = 0; i < r.kinds.size(); ++i) surface[i] = r.kinds[i] != PixelKind::background;
-  const double exposure = a.exposure > 0.0 ? a.exposure : auto_exposure(r.image, surface);
+  std::vector<bool> cloth(r.kinds.size());
+  for (size_t i = 0; i < r.kinds.size(); ++i) cloth[i] = r.kinds[i] == PixelKind::cloth;
+  const double exposure = a.exposure > 0.0 ? a.exposure : auto_exposure(r.image, cloth, a.exposure_bias);
   write_png(r.image, png_beside(out), exposure);
 
   nlohmann::ordered_json j;

@@ -14,7 +14,8 @@ struct FrameFileOptions {
   std::string method;
   std::string out;        // the .exr; the .png goes beside it
   int width = 320, height = 240;
-  double exposure = 0.0;  // PNG exposure; 0: automatic, from the mean of the drawn surfaces
+  double exposure = 0.0;  // PNG exposure; 0: metered on the cloth (image/tone_map.h)
+  double exposure_bias = 0.0;  // EV added to the metered exposure
 };
 
 // A GPU method's frame (render_gpu_frame).

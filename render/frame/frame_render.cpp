@@ -12,13 +12,14 @@ namespace weft {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
-                          std::shared_ptr<const IwasakiBundleData> iwasaki) {
+                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
   gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
+  renderer.set_backdrop(backdrop);
   gpu::OffscreenTarget target(width, height);
   target.bind();
   renderer.draw(scene.camera, width, height);  // warm-up: shader compilation, first upload
@@ -31,7 +32,15 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   GpuFrame f;
-  f.image = gpu::read_linear_image(width, height);
+  const std::vector<float> rgba = target.read_rgba();  // row 0 at the bottom
+  f.image = Image(width, height);
+  f.cloth.resize(size_t(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float* p = &rgba[(size_t(height - 1 - y) * width + x) * 4];
+      f.image.at(x, y) = glm::dvec3(p[0], p[1], p[2]);
+      f.cloth[size_t(y) * width + x] = gpu::is_cloth_alpha(p[3]);
+    }
   f.renderer = ctx.renderer();
   f.frames = timed_frames;
   if (!ms.empty()) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gpu/egl_context.h"
+#include "image/tone_map.h"
 #include "methods/fabric_uniforms.h"
 #include "methods/lambert_visibility.h"
 #include "methods/program_cloth.h"
@@ -29,6 +30,18 @@ bool reads_seed000_tables(const std::string& name) {
   return m && reads_seed000_tables(*m);
 }
 
+SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness) {
+  SgLighting out = sgs;
+  for (SphericalGaussian& g : out) {
+    const double l = g.sharpness, lb = blur_sharpness, ls = l * lb / (l + lb);
+    g.amplitude *= sg_sphere_integral(l) / sg_sphere_integral(ls);
+    g.sharpness = ls;
+  }
+  return out;
+}
+
+bool is_cloth_alpha(float alpha) { return alpha > 0.0f; }
+
 struct SceneRenderer::Object {
   const SceneObject* source;
   std::unique_ptr<GpuMesh> mesh;  // Lambertian objects; the method's GPU side holds the cloth's
@@ -41,9 +54,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
                              std::shared_ptr<const IwasakiBundleData> iwasaki, TableSource tables)
     : method_(&method), bundle_(iwasaki) {
   cloth_ = method.make_gpu(ClothMethodSetup{tangent_samples, std::move(iwasaki), std::move(tables)});
-  if (method.see_through)
-    background_program_ =
-        std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
+  background_program_ =
+      std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -103,6 +115,7 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
   if (lighting.irradiance.size() != objects_.size() || lighting.cloth.size() != objects_.size())
     throw GpuError("lighting prepared for another scene");
   sgs_ = lighting.sgs;
+  backdrop_sgs_ = softened_environment(sgs_);
   for (size_t k = 0; k < objects_.size(); ++k) {
     Object& o = *objects_[k];
     if (!o.cloth)
@@ -127,9 +140,11 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
   glDisable(GL_BLEND);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (see_through) {  // the environment behind the cloth
+  // Only cloth writes alpha (is_cloth_alpha): the backdrop and Lambertian surfaces leave it 0.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  if (see_through || backdrop_ == Backdrop::showroom) {
     background_program_->use();
-    upload_sg_lighting(*background_program_, sgs_);
+    upload_sg_lighting(*background_program_, backdrop_ == Backdrop::showroom ? backdrop_sgs_ : sgs_);
     const glm::mat4 inv = glm::inverse(vp);
     glUniformMatrix4fv(background_program_->uniform("u_inverse_view_projection"), 1, GL_FALSE, glm::value_ptr(inv));
     glUniform2f(background_program_->uniform("u_viewport"), float(width), float(height));
@@ -143,9 +158,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     for (auto& o : objects_) {
       const bool blended = o->cloth && see_through;
       if (blended != (pass == 1)) continue;
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, o->cloth ? GL_TRUE : GL_FALSE);
       if (blended) {
         glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_SRC_ALPHA);
+        glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ONE, GL_ONE);
         glDepthMask(GL_FALSE);
       }
       if (o->cloth) {
@@ -163,6 +179,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
       }
     }
   }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 Image read_linear_image(int width, int height) {
@@ -178,7 +195,8 @@ Image read_linear_image(int width, int height) {
   return img;
 }
 
-ToneMapper::ToneMapper() : program_(fullscreen_triangle_vs(), shader_preamble() + std::string(shaders::source("tonemap.frag"))) {}
+ToneMapper::ToneMapper()
+    : program_(fullscreen_triangle_vs(), shader_preamble() + tone_map_glsl_defines() + std::string(shaders::source("tonemap.frag"))) {}
 
 void ToneMapper::draw(GLuint linear_texture, float exposure) const {
   program_.use();

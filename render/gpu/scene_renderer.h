@@ -32,6 +32,22 @@ bool reads_seed000_tables(Method method);
 bool uses_seed000_tables(const std::string& method_name);
 bool reads_seed000_tables(const std::string& method_name);
 
+// What is drawn behind the scene. `measure`: nothing (black) except behind see-through cloth,
+// where the SG environment is seen as the reference sees it (the bench's accuracy frames).
+// `showroom`: for every method, the SG environment softened (each lobe convolved with a
+// normalised SG of sharpness kBackdropBlurSharpness: the room out of focus behind the product,
+// as a photographer's shallow depth of field shows it); see-through cloth blends over it.
+enum class Backdrop { measure, showroom };
+inline constexpr double kBackdropBlurSharpness = 6.0;
+// The softened environment: λ' = λλ_b/(λ+λ_b), amplitude rescaled so each lobe keeps its
+// integral over the sphere.
+SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness = kBackdropBlurSharpness);
+
+// The colour target's alpha after draw(): 1 where cloth was drawn (coverage: the backdrop and
+// Lambertian surfaces leave it at 0; see-through cloth leaves its transmittance there plus what
+// was behind, so any alpha > 0 is cloth). Metering and cloth masks read this, never the colour.
+bool is_cloth_alpha(float alpha);
+
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object. The
@@ -60,7 +76,9 @@ public:
   size_t shadowed_lambertian_objects() const;
   // Knob edits: new thread albedo / gloss for a cloth object, no re-bake.
   void set_fabric(size_t cloth_index, const Fabric& fabric);
-  // Renders into the currently bound framebuffer of size width × height.
+  void set_backdrop(Backdrop backdrop) { backdrop_ = backdrop; }  // default: measure
+  // Renders into the currently bound framebuffer of size width × height: the backdrop first,
+  // then opaque surfaces, then see-through cloth blended over them.
   void draw(const Camera& camera, int width, int height);
 
 private:
@@ -70,13 +88,14 @@ private:
   const methods::RuntimeMethod* method_;
   std::unique_ptr<ClothMethod> cloth_;  // the method's GPU side: draws every cloth object
   std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
-  SgLighting sgs_;
+  SgLighting sgs_, backdrop_sgs_;
+  Backdrop backdrop_ = Backdrop::measure;
 };
 
 // The frame as linear radiance (row 0 at the top) from a float target of the given size.
 Image read_linear_image(int width, int height);
 
-// Tone-maps a float texture to the bound framebuffer: the write_png operator.
+// Tone-maps a float texture to the bound framebuffer: the write_png operator (image/tone_map.h).
 class ToneMapper {
 public:
   ToneMapper();

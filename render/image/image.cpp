@@ -1,5 +1,7 @@
 #include "image/image.h"
 
+#include "image/tone_map.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -36,13 +38,6 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
   }
 }
 
-namespace {
-unsigned char srgb8(double linear) {
-  const double x = std::clamp(std::isfinite(linear) ? linear : 0.0, 0.0, 1.0);
-  const double s = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(255.0 * s));
-}
-}  // namespace
 
 void write_png(const Image& image, const std::filesystem::path& file, double exposure) {
   std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(file.c_str(), "wb"), std::fclose);
@@ -64,23 +59,15 @@ void write_png(const Image& image, const std::filesystem::path& file, double exp
   png_write_info(png, info);
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) row[3 * x + c] = srgb8(-std::expm1(-exposure * image.at(x, y)[c]));
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = static_cast<unsigned char>(std::lround(255.0 * display_value(image.at(x, y)[c], exposure)));
     png_write_row(png, row.data());
   }
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
 }
 
-double auto_exposure(const Image& image, const std::vector<bool>& include) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    if (!include.empty() && !include[i]) continue;
-    const glm::dvec3& p = image.pixels[i];
-    const double lum = 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
-    if (std::isfinite(lum)) sum += lum, ++n;
-  }
-  return n > 0 && sum > 0 ? 0.4 / (sum / n) : 1.0;
+double auto_exposure(const Image& image, const std::vector<bool>& include, double bias_ev) {
+  return metered_exposure(log_average_luminance(image.pixels, include), bias_ev);
 }
 
 }  // namespace weft

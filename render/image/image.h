@@ -19,11 +19,11 @@ struct Image {
 
 // RGB float EXR (ZIP compression). Throws std::runtime_error naming the file.
 void write_exr(const Image& image, const std::filesystem::path& file);
-// 8-bit sRGB PNG of the tone curve 1 − e^{−exposure·radiance} (a soft shoulder: highlights
-// compress instead of clipping).
+// 8-bit sRGB PNG through the display operator of image/tone_map.h (exposure, filmic curve,
+// sRGB): display_value(radiance, exposure) per channel.
 void write_png(const Image& image, const std::filesystem::path& file, double exposure = 1.0);
-// An exposure that maps the mean luminance of the pixels where `include` is true (all when
-// empty) to 0.4 before the shoulder; 1 when that mean is 0.
-double auto_exposure(const Image& image, const std::vector<bool>& include = {});
+// The metered exposure (tone_map.h) of the pixels where `include` is true (all when empty):
+// their log-average luminance maps to kMeteringKey, times 2^bias_ev.
+double auto_exposure(const Image& image, const std::vector<bool>& include = {}, double bias_ev = 0.0);
 
 }  // namespace weft

@@ -13,6 +13,7 @@
 #include "gpu/kms_display.h"
 #include "gl/offscreen_target.h"
 #include "image/image.h"
+#include "image/tone_map.h"
 #include "kiosk/kiosk_config_error.h"
 #include "kiosk/kiosk_light_probe.h"
 #include "kiosk/knob_appearance.h"
@@ -30,6 +31,9 @@ void log_warning(const std::string& s) { log_line("weft run", LogPriority::warni
 void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
 
 constexpr auto kTickPeriod = std::chrono::microseconds(16667);
+// Time constant of the exposure easing in after a lighting change (a probe update, the
+// environment knob): quick enough to follow the room, slow enough not to flicker.
+constexpr double kExposureAdaptSeconds = 0.7;
 
 }  // namespace
 
@@ -61,6 +65,10 @@ void Kiosk::check_config() {
     throw KioskConfigError("--display: expected auto, kms or headless, got '" + c.display + "'");
   if (c.size.size() != 2 || c.size[0] < 8 || c.size[1] < 8 || c.size[0] > 8192 || c.size[1] > 8192)
     throw KioskConfigError("--size: expected WIDTH HEIGHT in [8, 8192]");
+  if (!std::isfinite(c.exposure_bias) || std::abs(c.exposure_bias) > 20)
+    throw KioskConfigError("--exposure-bias: EV in [-20, 20]");
+  if (!(c.exposure > 0.0) || !std::isfinite(c.exposure))
+    throw KioskConfigError("--exposure: a multiplier > 0 on the metered exposure (1: none; --exposure-bias takes EV)");
   if (!std::isfinite(c.turntable) || std::abs(c.turntable) > 360)
     throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
   if (c.method != "auto") try {
@@ -179,6 +187,7 @@ void Kiosk::start_renderer() {
   for (const auto& o : sb.scene.objects)
     if (o.material == Material::cloth) cloth_fabrics_.push_back(sb.fabrics.at(o.fabric));
   renderer_ = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth_fabrics_, *method_, 16, iwasaki_);
+  renderer_->set_backdrop(gpu::Backdrop::showroom);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (kms_) tonemap_ = std::make_unique<gpu::ToneMapper>();
 }
@@ -243,7 +252,8 @@ void Kiosk::tick() {
   poll_light();
   const bool light_changed = take_prepared_lighting();
   const bool view_changed = std::abs(turn - shown_turn_) > 1e-4;
-  const bool redraw = knobs_changed || light_changed || view_changed;
+  const bool adapting = std::abs(std::log(exposure_ / exposure_target_)) > 0.01;  // still easing in
+  const bool redraw = knobs_changed || light_changed || view_changed || adapting;
   if (redraw) {
     draw_frame(turn);
     shown_turn_ = turn;
@@ -265,7 +275,7 @@ void Kiosk::shut_down() {
   if (!config_.screenshot.empty()) {
     target_->bind();
     try {
-      write_png(gpu::read_linear_image(width_, height_), config_.screenshot, config_.exposure);
+      write_png(gpu::read_linear_image(width_, height_), config_.screenshot, exposure_);
       log_info("screenshot " + config_.screenshot);
     } catch (const std::exception& e) {
       log_warning(std::string("screenshot failed: ") + e.what());
@@ -300,6 +310,7 @@ bool Kiosk::take_prepared_lighting() {
   try {
     if (auto prepared = lighting_->take()) {
       renderer_->set_lighting(*prepared);
+      meter_next_ = true;
       return true;
     }
   } catch (const std::exception& e) {
@@ -333,10 +344,15 @@ void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
   target_->bind();
   renderer_->draw(turned_about_z(scene_->scene.camera, turn_deg), width_, height_);
+  if (meter_next_) meter_exposure();
+  const auto now = Clock::now();
+  exposure_ = adapt_exposure(exposure_, exposure_target_, std::chrono::duration<double>(now - exposure_step_).count(),
+                             kExposureAdaptSeconds);
+  exposure_step_ = now;
   if (kms_) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width_, height_);
-    tonemap_->draw(target_->colour_texture(), float(config_.exposure));
+    tonemap_->draw(target_->colour_texture(), float(exposure_));
     kms_->present();
   } else {
     glFinish();
@@ -344,6 +360,19 @@ void Kiosk::draw_frame(double turn_deg) {
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   frame_ms_.push(ms);
   since_stats_ms_.push(ms);
+}
+
+double Kiosk::exposure_bias_ev() const { return config_.exposure_bias + std::log2(config_.exposure); }
+
+void Kiosk::meter_exposure() {
+  const std::vector<float> rgba = target_->read_rgba();
+  std::vector<glm::dvec3> cloth;
+  cloth.reserve(rgba.size() / 4);
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
+    if (gpu::is_cloth_alpha(rgba[i + 3])) cloth.emplace_back(rgba[i], rgba[i + 1], rgba[i + 2]);
+  exposure_target_ = metered_exposure(log_average_luminance(cloth), exposure_bias_ev());
+  if (exposure_ <= 0.0) exposure_ = exposure_target_;  // the first frame shows the metered exposure at once
+  meter_next_ = false;
 }
 
 void Kiosk::log_stats(Clock::time_point now) {

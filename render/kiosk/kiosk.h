@@ -69,7 +69,11 @@ struct KioskConfig {
   // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/methods/iwasaki/IWASAKI.md),
   // else sgpoint.
   std::string method = "auto";
-  double exposure = 1.0;                  // tone mapping
+  // Tone mapping (image/tone_map.h): exposure metered on the cloth whenever the lighting changes
+  // (not on knob edits: a darker fabric shows darker), eased in over kExposureAdaptSeconds, plus
+  // this bias in EV. `exposure` multiplies on top: the same as a bias of log2(exposure) EV.
+  double exposure_bias = 0.0;
+  double exposure = 1.0;
   double stats_every = 300;               // seconds between stats lines; 0: none
   std::string probe = "none";             // none, camera[:ID] or mock:MAP.exr[,MAP.exr...]
   double probe_switch_s = 0;              // mock probe with several maps: seconds between switches
@@ -109,6 +113,8 @@ private:
   void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
+  void meter_exposure();         // the drawn frame's cloth → exposure_target_
+  double exposure_bias_ev() const;
   void log_stats(Clock::time_point now);
 
   KioskConfig config_;
@@ -149,6 +155,11 @@ private:
   std::atomic<double> last_prepare_ms_{0};
   std::unique_ptr<LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting>> lighting_;
   bool first_frame_shown_ = false;
+
+  // Exposure: metered after each lighting change, shown exposure_ easing towards the target.
+  bool meter_next_ = true;
+  double exposure_ = 0.0, exposure_target_ = 0.0;  // 0 until the first metering
+  Clock::time_point exposure_step_;
 
   // The loop.
   long hang_after_ = -1;
