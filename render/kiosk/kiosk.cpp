@@ -150,8 +150,10 @@ void Kiosk::start_knobs() {
   }
   uint32_t default_preset = 0;
   for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth)
+    if (o.material == Material::cloth) {
       default_preset = uint32_t(std::find(preset_names.begin(), preset_names.end(), o.fabric) - preset_names.begin());
+      knob_fabric_ = o.fabric;
+    }
   input::PanelConfig panel;
   if (!config_.panel_config.empty()) {
     try {
@@ -210,6 +212,14 @@ void Kiosk::start_probe() {
 }
 
 void Kiosk::show_first_frame() {
+  // The exposure is metered first on the bundle as baked (its own fabrics under its own light,
+  // a quarter-size frame), so that a knob state restored at boot shows the picture it showed
+  // when the knobs were turned (knob edits never re-meter).
+  renderer_->set_lighting(scene_->sgs);
+  target_->bind();
+  const int mw = std::max(8, width_ / 4), mh = std::max(8, height_ / 4);
+  renderer_->draw(scene_->scene.camera, mw, mh);
+  meter_exposure(mw, mh);
   poll_knobs();
   if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
   draw_frame(0);
@@ -322,11 +332,19 @@ bool Kiosk::take_prepared_lighting() {
 void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   const Fabric f = apply_knobs(presets_.at(std::min<size_t>(s.preset_index, presets_.size() - 1)), s);
   try {
-    for (size_t c = 0; c < cloth_fabrics_.size(); ++c) renderer_->set_fabric(c, f);
+    size_t c = 0;
+    for (const auto& o : scene_->scene.objects)
+      if (o.material == Material::cloth) {
+        if (o.fabric == knob_fabric_) renderer_->set_fabric(c, f);
+        ++c;
+      }
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
     log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
   }
   if (s.env_rotation_deg != light_rotation_) {
+    // Before the first frame a turned light is set at once: meter the first frame under it
+    // (afterwards the worker's hand-over asks for metering: take_prepared_lighting).
+    if (!first_frame_shown_ && s.env_rotation_deg != 0) meter_next_ = true;
     relight(rotated_about_z(room_light_, s.env_rotation_deg));
     light_rotation_ = s.env_rotation_deg;
   }
@@ -344,7 +362,7 @@ void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
   target_->bind();
   renderer_->draw(turned_about_z(scene_->scene.camera, turn_deg), width_, height_);
-  if (meter_next_) meter_exposure();
+  if (meter_next_) meter_exposure(width_, height_);
   const auto now = Clock::now();
   exposure_ = adapt_exposure(exposure_, exposure_target_, std::chrono::duration<double>(now - exposure_step_).count(),
                              kExposureAdaptSeconds);
@@ -364,8 +382,9 @@ void Kiosk::draw_frame(double turn_deg) {
 
 double Kiosk::exposure_bias_ev() const { return config_.exposure_bias + std::log2(config_.exposure); }
 
-void Kiosk::meter_exposure() {
-  const std::vector<float> rgba = target_->read_rgba();
+void Kiosk::meter_exposure(int width, int height) {
+  std::vector<float> rgba(size_t(width) * height * 4);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
   std::vector<glm::dvec3> cloth;
   cloth.reserve(rgba.size() / 4);
   for (size_t i = 0; i + 3 < rgba.size(); i += 4)

@@ -113,7 +113,9 @@ private:
   void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
-  void meter_exposure();         // the drawn frame's cloth → exposure_target_
+  // The cloth of the frame just drawn into target_ (its lower-left width × height) →
+  // exposure_target_ (and exposure_ when none is shown yet).
+  void meter_exposure(int width, int height);
   double exposure_bias_ev() const;
   void log_stats(Clock::time_point now);
 
@@ -133,7 +135,10 @@ private:
   std::unique_ptr<gpu::EglContext> headless_;
   int width_ = 0, height_ = 0;
 
-  // The knobs: every fabric in the bundle is a preset the fabric knob selects.
+  // The knobs: every fabric in the bundle is a preset the fabric knob selects. They dress the
+  // cloth objects baked in the last cloth object's fabric (a chair's cushions); other cloth
+  // objects keep their own (its body).
+  std::string knob_fabric_;
   std::vector<Fabric> presets_;
   std::unique_ptr<input::KnobController> controller_;
   std::atomic<int64_t> last_report_ns_{0};  // the newest HID report's arrival (steady_clock ns)
@@ -156,8 +161,9 @@ private:
   std::unique_ptr<LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting>> lighting_;
   bool first_frame_shown_ = false;
 
-  // Exposure: metered after each lighting change, shown exposure_ easing towards the target.
-  bool meter_next_ = true;
+  // Exposure: metered at boot and after each lighting change, shown exposure_ easing towards
+  // the target.
+  bool meter_next_ = false;
   double exposure_ = 0.0, exposure_target_ = 0.0;  // 0 until the first metering
   Clock::time_point exposure_step_;
 

@@ -219,6 +219,30 @@ TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {
   EXPECT_EQ(read_all(dir_ / "restored.png"), read_all(dir_ / "turned.png")) << log;
 }
 
+TEST_F(KioskRun, ExposureBiasIsInStopsAndTheMultiplierIsTheSameBias) {
+  // --exposure X is the bias log2(X): 2 and +1 EV write the same screenshot; +1 EV is not the
+  // metered default; out-of-range values are bad usage (exit 2) naming the flag.
+  const auto shot = [&](const std::vector<std::string>& extra, const std::string& name, std::string& log) {
+    std::vector<std::string> args{"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / ("st_" + name)).string(),
+                                  "--display", "headless", "--frames", "2", "--turntable", "0", "--panel", "none",
+                                  "--size", "96", "72", "--screenshot", (dir_ / (name + ".png")).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const int rc = wait_exit(spawn(args, {}, dir_ / (name + ".log")));
+    log = read_all(dir_ / (name + ".log"));
+    return rc;
+  };
+  std::string log;
+  ASSERT_EQ(shot({}, "metered", log), 0) << log;
+  ASSERT_EQ(shot({"--exposure-bias", "1"}, "bias", log), 0) << log;
+  ASSERT_EQ(shot({"--exposure", "2"}, "multiplier", log), 0) << log;
+  EXPECT_EQ(read_all(dir_ / "bias.png"), read_all(dir_ / "multiplier.png"));
+  EXPECT_NE(read_all(dir_ / "bias.png"), read_all(dir_ / "metered.png"));
+  EXPECT_EQ(shot({"--exposure", "0"}, "zero", log), 2) << log;
+  EXPECT_NE(log.find("--exposure"), std::string::npos) << log;
+  EXPECT_EQ(shot({"--exposure-bias", "40"}, "far", log), 2) << log;
+  EXPECT_NE(log.find("--exposure-bias"), std::string::npos) << log;
+}
+
 TEST_F(KioskRun, TheLightProbeRelightsTheRoomAndAnAbsentCameraKeepsTheStoredLight) {
   // The bundle is lit by SGs fitted to the studio map. A mocked probe camera in the interior map
   // hands the frame loop new SGs: the picture changes. A real camera that is not there (this
