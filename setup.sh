@@ -41,11 +41,15 @@ build() {
 }
 
 run_default() {
-  # The default showroom: the pillow in linen, baked once into a bundle, then shown fullscreen on
-  # the first connected display (DRM/KMS), or rendered headless to an image when there is none.
+  # The default showroom: an armchair in linen with satin cushions (assets/scenes/armchair.gltf),
+  # baked once into a bundle, then shown fullscreen on the first connected display (DRM/KMS), or
+  # rendered headless to an image when there is none.
   local weft="$BUILD_DIR/render/app/weft" bundle="$BUILD_DIR/showroom.weft" state="$BUILD_DIR/kiosk-state"
-  # Re-baked after every rebuild of weft, so the bundle always matches the binary.
-  [ "$bundle" -nt "$weft" ] || "$weft" bake --scene pillow --fabric linen_plain --out "$bundle"
+  local scene=assets/scenes/showroom.json
+  # Re-baked after every rebuild of weft or edit of the scene, so the bundle matches both.
+  { [ "$bundle" -nt "$weft" ] && [ "$bundle" -nt "$scene" ] && [ "$bundle" -nt assets/scenes/armchair.gltf ]; } ||
+    "$weft" bake --scene "$scene" --target-error 0.05 --grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
+      --out "$bundle"  # settings that bake in about a minute of CPU (docs/showroom/README.md)
   mkdir -p "$state"
   local panel=none
   [ -t 0 ] && panel=keyboard  # turn the knobs from this terminal (weft run --help; input/panel/KNOBS.md)

@@ -21,10 +21,13 @@ static std::string read(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-TEST(Scene, AllFiveLoadWithClothFramesFromUVs) {
-  EXPECT_EQ(list_scene_presets(kDir), (std::vector<std::string>{"curtain", "drape", "pillow", "swatch", "teapot"}));
+TEST(Scene, AllPresetsLoadWithClothFramesFromUVs) {
+  EXPECT_EQ(list_scene_presets(kDir),
+            (std::vector<std::string>{"curtain", "drape", "pillow", "showroom", "swatch", "teapot"}));
+  SceneLoadOptions options;  // the showroom's glTF names its fabrics by preset
+  options.fabrics_dir = WEFT_SOURCE_ASSETS "/fabrics";
   for (const auto& name : list_scene_presets(kDir)) {
-    const Scene s = load_scene_preset(name, kDir);
+    const Scene s = load_scene_preset(name, kDir, options);
     EXPECT_EQ(s.name, name);
     EXPECT_FALSE(s.environment.empty());
     bool has_cloth = false;
