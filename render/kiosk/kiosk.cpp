@@ -79,6 +79,7 @@ std::string preset_names(const std::vector<input::PresetLook>& looks) {
 struct Kiosk::LoadedBundle {
   BundleWatcher::Change change;
   bool unchanged = false;  // the same content as the bundle shown
+  std::optional<bundle::BundleReader> reader;  // its bytes, saved as the last good copy once shown
   std::optional<KioskBundle> bundle;
   const methods::RuntimeMethod* method = nullptr;
   double read_ms = 0;
@@ -87,6 +88,7 @@ struct Kiosk::LoadedBundle {
 // Its renderer, built on the render thread, while a worker prepares its lighting.
 struct Kiosk::PendingSwap {
   BundleWatcher::Change change;
+  std::optional<bundle::BundleReader> reader;
   KioskBundle bundle;
   const methods::RuntimeMethod* method = nullptr;
   std::vector<Fabric> cloth_fabrics;
@@ -162,7 +164,7 @@ void Kiosk::watch_bundle() {
     }
     KioskBundle b = read_kiosk_bundle(reader, config_.method);
     out.method = &kiosk_method(config_.method, b, config_.bundle);
-    if (state_dir_ok_) bundle::save_as_last_good(reader, config_.bundle, config_.state_dir, stderr_sink("weft run"));
+    out.reader = reader;
     out.bundle = std::move(b);
     out.read_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     return out;
@@ -434,6 +436,7 @@ void Kiosk::start_swap(LoadedBundle loaded) {
   const auto t0 = Clock::now();
   auto p = std::make_unique<PendingSwap>();
   p->change = loaded.change;
+  p->reader = std::move(loaded.reader);
   p->bundle = std::move(*loaded.bundle);
   p->method = loaded.method;
   p->cloth_fabrics = cloth_fabrics(p->bundle.scene);
@@ -489,6 +492,13 @@ bool Kiosk::finish_swap() {
   shown_ = {config_.bundle, false, ""};
   shown_fingerprint_ = p->bundle.fingerprint;
   swapped_ = p->change;
+  // The bundle shown becomes the last good copy, written (and fsynced) off the render thread.
+  if (state_dir_ok_) {
+    if (saving_.valid()) saving_.wait();  // the previous one, rarely still running
+    saving_ = std::async(std::launch::async, [this, reader = std::move(*p->reader)] {
+      bundle::save_as_last_good(reader, config_.bundle, config_.state_dir, stderr_sink("weft run"));
+    });
+  }
 
   if (knobs_differ.empty())
     log_info("knob state carried over (the same fabric presets and the same fabric on the cloth)");

@@ -23,8 +23,8 @@
 // the first frame are prepared on a worker thread; the frame keeps its light until they are done.
 //
 // Content updates: when the bundle file is replaced (atomically, or written in place and closed),
-// a worker thread reads and verifies it (and saves it as the last good copy); the loop builds
-// its GPU resources, a worker prepares its lighting, and the loop swaps it in. Until then, and
+// a worker thread reads and verifies it; the loop builds its GPU resources, a worker prepares its
+// lighting, and the loop swaps it in (then a worker saves it as the last good copy). Until then, and
 // for good when the new file is refused (corrupt, truncated, unusable: a journal error naming the
 // file and why), the scene shown stays. Knob positions carry over when the new bundle has the same
 // fabric presets and its cloth wears the same one; otherwise they reset to its preset (logged).
@@ -196,6 +196,7 @@ private:
   std::unique_ptr<LatestRequestWorker<BundleWatcher::Change, LoadedBundle>> loader_;
   std::unique_ptr<PendingSwap> pending_;
   std::optional<BundleWatcher::Change> swapped_;  // the change just swapped in, until its frame is drawn
+  std::future<void> saving_;  // the last good copy of the bundle swapped in
   double swap_read_ms_ = 0, swap_gpu_ms_ = 0, swap_light_ms_ = 0;
   long bundles_swapped_ = 0;
 

@@ -406,9 +406,9 @@ TEST_F(KioskContentUpdate, ABundleRenamedIntoPlaceIsShownWithoutARestart) {
   // The swatch wears silk_shot, the pillow linen_plain: the knobs start over on the new preset.
   const auto reset = lines_with(read_all(kiosk_.log), "knob state reset to preset 'silk_shot'");
   EXPECT_EQ(reset.size(), 1u) << read_all(kiosk_.log);
+  EXPECT_EQ(stop(), swatch) << read_all(kiosk_.log);
   // The new content became the last good copy.
   EXPECT_EQ(read_all(folder_ / "state" / "last-good.weftbundle"), read_all(dir_ / "other.weft"));
-  EXPECT_EQ(stop(), swatch) << read_all(kiosk_.log);
   EXPECT_EQ(read_all(kiosk_.log).find("<3>"), std::string::npos) << read_all(kiosk_.log);
 }
 
