@@ -9,7 +9,7 @@ namespace weft::bundle {
 namespace {
 
 BundleReader open_accepted(const std::filesystem::path& file, const FallbackOptions& options) {
-  BundleReader r = BundleReader::open(file);
+  BundleReader r = options.read_into_memory ? BundleReader::read(file) : BundleReader::open(file);
   if (options.accept) options.accept(r);
   return r;
 }
@@ -30,6 +30,20 @@ std::filesystem::path last_good_path(const std::filesystem::path& last_good_dir)
   return last_good_dir / "last-good.weftbundle";
 }
 
+void save_as_last_good(const BundleReader& bundle, const std::filesystem::path& source,
+                       const std::filesystem::path& last_good_dir, const LogSink& log) {
+  const std::filesystem::path copy = last_good_path(last_good_dir);
+  if (same_as_last_good(copy, bundle.bytes())) return;
+  try {
+    std::filesystem::create_directories(last_good_dir);
+    write_file_atomically(copy, bundle.bytes());
+    log(LogPriority::info, "bundle " + source.string() + " verified; saved as the last good bundle " + copy.string());
+  } catch (const std::exception& e) {
+    // The bundle is fine; only the safety copy could not be refreshed.
+    log(LogPriority::warning, "bundle " + source.string() + " verified, but the last good copy was not updated: " + e.what());
+  }
+}
+
 OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
                                        const std::filesystem::path& last_good_dir,
                                        const FallbackOptions& options) {
@@ -44,17 +58,7 @@ OpenedBundle open_bundle_with_fallback(const std::filesystem::path& primary,
   std::string primary_error;
   try {
     BundleReader bundle = open_accepted(primary, options);
-    if (!same_as_last_good(copy, bundle.bytes())) {
-      try {
-        std::filesystem::create_directories(last_good_dir);
-        write_file_atomically(copy, bundle.bytes());
-        log(LogPriority::info, "bundle " + primary.string() + " verified; saved as the last good bundle " + copy.string());
-      } catch (const std::exception& e) {
-        // The primary is fine; only the safety copy could not be refreshed.
-        log(LogPriority::warning, "bundle " + primary.string() + " verified, but the last good copy was not updated: " +
-            e.what());
-      }
-    }
+    save_as_last_good(bundle, primary, last_good_dir, log);
     return {std::move(bundle), primary, false, ""};
   } catch (const BundleError& e) {
     primary_error = e.what();

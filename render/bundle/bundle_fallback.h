@@ -18,6 +18,9 @@ struct FallbackOptions {
   std::function<void(const BundleReader&)> accept;
   // Where operator-readable lines go (the kiosk sends them to the journal); default: stderr.
   LogSink log;
+  // Read the files into memory (BundleReader::read) instead of mapping them: for a consumer that
+  // keeps running while the file may be rewritten in place.
+  bool read_into_memory = false;
 };
 
 struct OpenedBundle {
@@ -29,6 +32,11 @@ struct OpenedBundle {
 
 // The last good copy kept in `last_good_dir`.
 std::filesystem::path last_good_path(const std::filesystem::path& last_good_dir);
+
+// Makes `bundle` (read from `source`) the last good copy in `last_good_dir`, unless the copy
+// already holds the same bytes; logs what it did, or (warning) why the copy was not updated.
+void save_as_last_good(const BundleReader& bundle, const std::filesystem::path& source,
+                       const std::filesystem::path& last_good_dir, const LogSink& log);
 
 // Opens `primary`; on any BundleError opens the last good copy instead. Throws BundleError
 // (with both reasons) only when neither can be used.

@@ -5,10 +5,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <new>
 
 #include "bundle/crc32c.h"
 
@@ -236,6 +238,24 @@ struct Mapping {
   }
 };
 
+// A file's bytes in memory, 64-byte aligned like a mapping's sections.
+struct OwnedBytes {
+  std::byte* data = nullptr;
+  std::size_t capacity = 0, length = 0;
+  explicit OwnedBytes(std::size_t n)
+      : data(static_cast<std::byte*>(::operator new(std::max<std::size_t>(n, 64), std::align_val_t{64}))),
+        capacity(std::max<std::size_t>(n, 64)) {}
+  ~OwnedBytes() { ::operator delete(data, std::align_val_t{64}); }
+  OwnedBytes(const OwnedBytes&) = delete;
+  OwnedBytes& operator=(const OwnedBytes&) = delete;
+  void grow() {
+    OwnedBytes bigger(capacity * 2);
+    std::memcpy(bigger.data, data, length);
+    std::swap(data, bigger.data);
+    std::swap(capacity, bigger.capacity);
+  }
+};
+
 }  // namespace
 
 std::uint64_t SectionInfo::element_count() const {
@@ -323,6 +343,44 @@ std::string_view BundleReader::json(std::string_view name) const {
 std::span<const std::byte> BundleReader::raw(std::string_view name) const {
   const SectionInfo& s = section(name);
   return bytes_.subspan(s.offset, s.size);
+}
+
+BundleReader BundleReader::read(const std::filesystem::path& file) {
+  const std::string origin = file.string();
+  auto os_error = [&](const std::string& what) {
+    return BundleError(origin, "file", "", what + ": " + std::strerror(errno));
+  };
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw os_error("cannot open");
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const BundleError e = os_error("cannot stat");
+    ::close(fd);
+    throw e;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw BundleError(origin, "file", "", "not a regular file");
+  }
+  // Up to the end of file as it is while reading: a file that shrinks or grows meanwhile reads
+  // as what was there, and the verifier judges that.
+  auto owned = std::make_shared<OwnedBytes>(std::size_t(st.st_size) + 1);
+  for (;;) {
+    if (owned->length == owned->capacity) owned->grow();
+    const ssize_t n = ::read(fd, owned->data + owned->length, owned->capacity - owned->length);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const BundleError e = os_error("cannot read");
+      ::close(fd);
+      throw e;
+    }
+    if (n == 0) break;
+    owned->length += std::size_t(n);
+  }
+  ::close(fd);
+  BundleReader r = view({owned->data, owned->length}, origin);
+  r.keep_alive_ = std::move(owned);
+  return r;
 }
 
 }  // namespace weft::bundle

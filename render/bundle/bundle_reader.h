@@ -31,6 +31,10 @@ class BundleReader {
 public:
   // Maps and verifies a bundle file. The mapping lives as long as any copy of the reader.
   static BundleReader open(const std::filesystem::path& file);
+  // Reads a bundle file into memory the reader owns, then verifies it. Unlike a mapping, the
+  // copy is immune to the file being rewritten or truncated in place while it is in use (a
+  // mapped page past a new end of file faults): the kiosk reads bundles this way.
+  static BundleReader read(const std::filesystem::path& file);
   // Verifies a bundle already in memory, without copying: `bytes` must outlive the reader.
   // `origin` names it in errors.
   static BundleReader view(std::span<const std::byte> bytes, std::string origin);

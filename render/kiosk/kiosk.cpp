@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <stdexcept>
 #include <thread>
 
@@ -20,6 +19,7 @@
 #include "kiosk/knob_sources.h"
 #include "kiosk/turntable.h"
 #include "journal/journal_log.h"
+#include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
 
 namespace weft {
@@ -35,7 +35,82 @@ constexpr auto kTickPeriod = std::chrono::microseconds(16667);
 // environment knob): quick enough to follow the room, slow enough not to flicker.
 constexpr double kExposureAdaptSeconds = 0.7;
 
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The preset the bundle's (last) cloth object wears: where the fabric knob starts.
+uint32_t default_preset(const SceneBundle& sb) {
+  uint32_t index = 0;
+  for (const auto& o : sb.scene.objects)
+    if (o.material == Material::cloth) {
+      const auto at = sb.fabrics.find(o.fabric);
+      if (at != sb.fabrics.end()) index = uint32_t(std::distance(sb.fabrics.begin(), at));
+    }
+  return index;
+}
+
+// The fabric the knobs dress: the last cloth object's (a chair's cushions); cloth in other
+// fabrics keeps its own.
+std::string knob_fabric(const SceneBundle& sb) {
+  std::string fabric;
+  for (const auto& o : sb.scene.objects)
+    if (o.material == Material::cloth) fabric = o.fabric;
+  return fabric;
+}
+
+std::vector<Fabric> preset_list(const SceneBundle& sb) {
+  std::vector<Fabric> presets;
+  for (const auto& [name, f] : sb.fabrics) presets.push_back(f);
+  return presets;
+}
+
+std::vector<Fabric> cloth_fabrics(const SceneBundle& sb) {
+  std::vector<Fabric> fabrics;
+  for (const auto& o : sb.scene.objects)
+    if (o.material == Material::cloth) fabrics.push_back(sb.fabrics.at(o.fabric));
+  return fabrics;
+}
+
+// The knobs' view of two preset lists agrees: same names, same colours, same order.
+bool same_knob_presets(const std::vector<input::PresetLook>& a, const std::vector<input::PresetLook>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].name != b[i].name || a[i].albedo != b[i].albedo) return false;
+  return true;
+}
+
+std::string preset_names(const std::vector<input::PresetLook>& looks) {
+  std::string s;
+  for (const auto& l : looks) s += (s.empty() ? "" : ", ") + l.name;
+  return s;
+}
+
 }  // namespace
+
+// A bundle read and verified off the render thread, waiting for its GPU resources.
+struct Kiosk::LoadedBundle {
+  BundleWatcher::Change change;
+  bool unchanged = false;  // the same content as the bundle shown
+  std::optional<bundle::BundleReader> reader;  // its bytes, saved as the last good copy once shown
+  std::optional<KioskBundle> bundle;
+  const methods::RuntimeMethod* method = nullptr;
+  double read_ms = 0;
+};
+
+// Its renderer, built on the render thread, while a worker prepares its lighting.
+struct Kiosk::PendingSwap {
+  BundleWatcher::Change change;
+  std::optional<bundle::BundleReader> reader;
+  KioskBundle bundle;
+  const methods::RuntimeMethod* method = nullptr;
+  std::vector<Fabric> cloth_fabrics;
+  SgLighting room_light;
+  std::uint64_t light_version = 0;  // light_version_ when its lighting was asked for
+  std::unique_ptr<gpu::SceneRenderer> renderer;
+  std::future<gpu::SceneRenderer::PreparedLighting> lighting;  // after renderer: destroyed (waited for) first
+  Clock::time_point lighting_start;
+};
 
 Kiosk::Kiosk(KioskConfig config) : config_(std::move(config)) {}
 
@@ -44,6 +119,7 @@ Kiosk::~Kiosk() = default;
 int Kiosk::run(const std::atomic<bool>& stop) {
   boot_ = Clock::now();
   check_config();
+  watch_bundle();
   load_bundle();
   if (!open_display()) return 1;
   start_knobs();
@@ -83,35 +159,61 @@ void Kiosk::check_config() {
     log_warning("cannot create state directory " + c.state_dir + ": " + ec.message() + " (no last-good copy, no knob state)");
 }
 
+// Watched before it is read: a replacement made while the kiosk boots is seen (and read once
+// the loop runs, unless it is the content already shown).
+void Kiosk::watch_bundle() {
+  try {
+    watcher_ = std::make_unique<BundleWatcher>(config_.bundle);
+    log_info("watching " + watcher_->directory().string() + " for a new " + watcher_->bundle().filename().string() +
+             " (content updates without a restart)");
+  } catch (const std::exception& e) {
+    log_warning(std::string("content updates are not watched (") + e.what() + "); a new bundle needs a restart");
+    return;
+  }
+  loader_ = std::make_unique<LatestRequestWorker<BundleWatcher::Change, LoadedBundle>>([this](const BundleWatcher::Change& c) {
+    const auto t0 = Clock::now();
+    LoadedBundle out;
+    out.change = c;
+    const bundle::BundleReader reader = bundle::BundleReader::read(config_.bundle);
+    if (bundle_fingerprint(reader) == shown_fingerprint_.load()) {
+      out.unchanged = true;
+      return out;
+    }
+    KioskBundle b = read_kiosk_bundle(reader, config_.method);
+    out.method = &kiosk_method(config_.method, b, config_.bundle);
+    out.reader = reader;
+    out.bundle = std::move(b);
+    out.read_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    return out;
+  });
+}
+
 void Kiosk::load_bundle() {
   notifier_.status("loading bundle " + config_.bundle);
   bundle::FallbackOptions fo;
   // Seed 000's tables are read in the accept step too: a bundle whose tables do not read (a
   // section missing, a shape that does not match the mesh) falls back like a corrupt one.
-  fo.accept = [this](const bundle::BundleReader& r) {
-    scene_ = read_scene_bundle(r);
-    iwasaki_.reset();
-    if (has_iwasaki_sections(r) && config_.method != "sgpoint") {
-      std::map<size_t, size_t> vertices;
-      for (size_t i = 0; i < scene_->scene.objects.size(); ++i) vertices[i] = scene_->scene.objects[i].mesh.positions.size();
-      iwasaki_ = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(r, vertices));
-    }
-  };
+  std::optional<KioskBundle> read;
+  fo.accept = [&](const bundle::BundleReader& r) { read = read_kiosk_bundle(r, config_.method); };
   fo.log = stderr_sink("weft run");
+  fo.read_into_memory = true;  // the file may be rewritten in place while the kiosk runs
+  std::optional<bundle::OpenedBundle> opened;
   try {
-    opened_.emplace(bundle::open_bundle_with_fallback(config_.bundle, config_.state_dir, fo));
+    opened.emplace(bundle::open_bundle_with_fallback(config_.bundle, config_.state_dir, fo));
   } catch (const bundle::BundleError& e) {
     log_error(std::string("no usable bundle: ") + e.what());
     notifier_.status("no usable bundle (see journal)");
     throw;
   }
-  if (!scene_) fo.accept(opened_->bundle);
-  method_ = &gpu::parse_method(config_.method != "auto" ? config_.method : (iwasaki_ ? "iwasaki_vertex" : "sgpoint"));
-  if (gpu::uses_seed000_tables(*method_) && !iwasaki_)
-    throw KioskConfigError("--method " + method_->name + ": bundle " + opened_->file.string() +
-                           " has no seed 000 tables (weft bake without --no-tables)");
-  (opened_->is_last_good ? log_warning : log_info)("bundle " + opened_->file.string() +
-           (opened_->is_last_good ? " (LAST GOOD COPY: " + opened_->primary_error + ")" : "") + ": scene '" +
+  if (!read) read = read_kiosk_bundle(opened->bundle, config_.method);
+  shown_ = {opened->file, opened->is_last_good, opened->primary_error};
+  // A last good copy shown does not count as the primary's content: the primary, once fixed, is.
+  shown_fingerprint_ = opened->is_last_good ? 0 : read->fingerprint;
+  method_ = &kiosk_method(config_.method, *read, opened->file);
+  scene_ = std::move(read->scene);
+  iwasaki_ = read->iwasaki;
+  (shown_.is_last_good ? log_warning : log_info)("bundle " + shown_.file.string() +
+           (shown_.is_last_good ? " (LAST GOOD COPY: " + shown_.primary_error + ")" : "") + ": scene '" +
            scene_->scene.name + "', " + std::to_string(scene_->scene.objects.size()) + " objects, " +
            std::to_string(scene_->sgs.size()) + " SGs");
 }
@@ -141,19 +243,16 @@ bool Kiosk::open_display() {
   return true;
 }
 
+void Kiosk::make_knob_controller(const SceneBundle& sb) {
+  presets_ = preset_list(sb);
+  knob_fabric_ = knob_fabric(sb);
+  input::KnobControllerOptions ko;
+  ko.state_file = state_dir_ok_ ? std::filesystem::path(config_.state_dir) / "knobs.json" : std::filesystem::path();
+  ko.default_preset = default_preset(sb);
+  controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_)), ko, stderr_sink("weft run"));
+}
+
 void Kiosk::start_knobs() {
-  const SceneBundle& sb = *scene_;
-  std::vector<std::string> preset_names;
-  for (const auto& [name, f] : sb.fabrics) {
-    preset_names.push_back(name);
-    presets_.push_back(f);
-  }
-  uint32_t default_preset = 0;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) {
-      default_preset = uint32_t(std::find(preset_names.begin(), preset_names.end(), o.fabric) - preset_names.begin());
-      knob_fabric_ = o.fabric;
-    }
   input::PanelConfig panel;
   if (!config_.panel_config.empty()) {
     try {
@@ -162,12 +261,9 @@ void Kiosk::start_knobs() {
       throw KioskConfigError(e.what());
     }
   }
-  input::KnobControllerOptions ko;
-  ko.state_file = state_dir_ok_ ? std::filesystem::path(config_.state_dir) / "knobs.json" : std::filesystem::path();
-  ko.default_preset = default_preset;
-  const input::LogSink log = stderr_sink("weft run");
-  controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_)), ko, log);
+  make_knob_controller(*scene_);
   controller_->restore();
+  const input::LogSink log = stderr_sink("weft run");
 
   KnobSourceOptions so;
   so.sim_speed = config_.sim_speed;
@@ -186,8 +282,7 @@ void Kiosk::start_knobs() {
 
 void Kiosk::start_renderer() {
   const SceneBundle& sb = *scene_;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) cloth_fabrics_.push_back(sb.fabrics.at(o.fabric));
+  cloth_fabrics_ = cloth_fabrics(sb);
   renderer_ = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth_fabrics_, *method_, 16, iwasaki_);
   renderer_->set_backdrop(gpu::Backdrop::showroom);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
@@ -201,14 +296,13 @@ void Kiosk::start_probe() {
                                                [](LogPriority p, const std::string& s) { log_line("weft run", p, "light probe: " + s); });
     log_info("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
   }
-  lighting_ = std::make_unique<LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting>>(
-      [this](const SgLighting& sgs) {
-        const auto t0 = Clock::now();
-        auto prepared = renderer_->prepare_lighting(sgs);
-        last_prepare_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-        ++lighting_prepared_;
-        return prepared;
-      });
+  lighting_ = std::make_unique<LatestRequestWorker<LightingRequest, LightingResult>>([this](const LightingRequest& q) {
+    const auto t0 = Clock::now();
+    LightingResult r{q.renderer, q.renderer->prepare_lighting(q.sgs)};
+    last_prepare_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    ++lighting_prepared_;
+    return r;
+  });
 }
 
 void Kiosk::show_first_frame() {
@@ -232,7 +326,7 @@ void Kiosk::show_first_frame() {
                 method_->name.c_str());
   log_info(line);
   notifier_.ready(std::string("showing '") + scene_->scene.name + "'" +
-                  (opened_->is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);
+                  (shown_.is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);
   if (notifier_.watchdog_enabled())
     log_info("watchdog every " + std::to_string(notifier_.watchdog_interval().count() / 1000) + " ms");
 }
@@ -240,7 +334,10 @@ void Kiosk::show_first_frame() {
 void Kiosk::listen_to_knobs() {
   for (auto& s : sources_) {
     log_info("listening to " + s->describe());
-    s->start(controller_->sink());
+    s->start([this](const input::KnobEvent& e) {
+      std::lock_guard lock(controller_m_);
+      controller_->on_event(e);
+    });
   }
 }
 
@@ -261,13 +358,15 @@ void Kiosk::tick() {
   const bool knobs_changed = poll_knobs();
   poll_light();
   const bool light_changed = take_prepared_lighting();
+  const bool scene_changed = poll_bundle();
   const bool view_changed = std::abs(turn - shown_turn_) > 1e-4;
   const bool adapting = std::abs(std::log(exposure_ / exposure_target_)) > 0.01;  // still easing in
-  const bool redraw = knobs_changed || light_changed || view_changed || adapting;
+  const bool redraw = knobs_changed || light_changed || scene_changed || view_changed || adapting;
   if (redraw) {
     draw_frame(turn);
     shown_turn_ = turn;
     ++drawn_;
+    if (scene_changed) log_swap_shown();
     if (knobs_changed && report_ns != 0)
       latency_ms_.push(double(Clock::now().time_since_epoch().count() - report_ns) / 1e6);
   }
@@ -317,16 +416,162 @@ void Kiosk::poll_light() {
 }
 
 bool Kiosk::take_prepared_lighting() {
+  bool uploaded = false;
   try {
     if (auto prepared = lighting_->take()) {
-      renderer_->set_lighting(*prepared);
-      meter_next_ = true;
-      return true;
+      // Requests run in order: once one made for the renderer shown is done, none for a retired one runs.
+      if (prepared->renderer == renderer_.get()) {
+        renderer_->set_lighting(prepared->lighting);
+        retired_.clear();
+        meter_next_ = true;
+        uploaded = true;
+      }
     }
   } catch (const std::exception& e) {
     log_warning(std::string("lighting: ") + e.what() + "; keeping the light shown");
   }
+  if (!retired_.empty() && lighting_->idle()) retired_.clear();
+  return uploaded;
+}
+
+bool Kiosk::poll_bundle() {
+  if (!watcher_) return false;
+  if (auto change = watcher_->poll()) {
+    log_info("bundle " + config_.bundle + " changed (" + change->events + "); reading it");
+    loader_->request(*change);
+  }
+  if (pending_) return finish_swap();
+  std::optional<LoadedBundle> loaded;
+  try {
+    loaded = loader_->take();
+  } catch (const std::exception& e) {
+    log_error(std::string("content update refused: ") + e.what() + "; still showing '" + scene_->scene.name +
+              "' from " + shown_.file.string());
+    notifier_.status("showing '" + scene_->scene.name + "'; the new bundle was refused (see journal)");
+    return false;
+  }
+  if (!loaded) return false;
+  if (loaded->unchanged) {
+    log_info("bundle " + config_.bundle + " holds the content shown; nothing to swap");
+    return false;
+  }
+  start_swap(std::move(*loaded));
   return false;
+}
+
+// The new bundle's GPU resources, built here (the GL context is this thread's), then its lighting
+// on a worker: the loop keeps drawing the scene shown meanwhile.
+void Kiosk::start_swap(LoadedBundle loaded) {
+  const auto t0 = Clock::now();
+  auto p = std::make_unique<PendingSwap>();
+  p->change = loaded.change;
+  p->reader = std::move(loaded.reader);
+  p->bundle = std::move(*loaded.bundle);
+  p->method = loaded.method;
+  p->cloth_fabrics = cloth_fabrics(p->bundle.scene);
+  // The probe's room light outlives the bundle; without a probe fit the new bundle's SGs light it.
+  p->room_light = probe_ && probe_->updates() > 0 ? room_light_ : p->bundle.scene.sgs;
+  try {
+    p->renderer = std::make_unique<gpu::SceneRenderer>(p->bundle.scene.scene, p->cloth_fabrics, *p->method, 16, p->bundle.iwasaki);
+    p->renderer->set_backdrop(gpu::Backdrop::showroom);
+  } catch (const std::exception& e) {
+    log_error("content update refused: bundle " + config_.bundle + ": cannot draw it: " + e.what() + "; still showing '" +
+              scene_->scene.name + "' from " + shown_.file.string());
+    return;
+  }
+  swap_read_ms_ = loaded.read_ms;
+  swap_gpu_ms_ = ms_since(t0);
+  p->light_version = light_version_;
+  p->lighting_start = Clock::now();
+  const gpu::SceneRenderer* r = p->renderer.get();
+  p->lighting = std::async(std::launch::async, [r, sgs = rotated_about_z(p->room_light, std::max(light_rotation_, 0.0f))] {
+    return r->prepare_lighting(sgs);
+  });
+  pending_ = std::move(p);
+}
+
+bool Kiosk::finish_swap() {
+  if (pending_->lighting.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+  std::unique_ptr<PendingSwap> p = std::move(pending_);
+  try {
+    p->renderer->set_lighting(p->lighting.get());
+  } catch (const std::exception& e) {
+    log_error("content update refused: bundle " + config_.bundle + ": cannot light it: " + e.what() + "; still showing '" +
+              scene_->scene.name + "' from " + shown_.file.string());
+    return false;
+  }
+  swap_light_ms_ = ms_since(p->lighting_start);
+  // The knobs' fabric slots: the preset list the fabric knob steps through, and the preset the
+  // scene's cloth starts from. While both match, the shopper's turns stay meaningful.
+  const std::vector<input::PresetLook> old_looks = preset_looks(presets_);
+  const std::vector<input::PresetLook> new_looks = preset_looks(preset_list(p->bundle.scene));
+  const uint32_t old_default = default_preset(*scene_), new_default = default_preset(p->bundle.scene);
+  std::string knobs_differ;
+  if (!same_knob_presets(old_looks, new_looks))
+    knobs_differ = "the fabric presets differ: [" + preset_names(old_looks) + "] -> [" + preset_names(new_looks) + "]";
+  else if (old_default != new_default)
+    knobs_differ = "the cloth wears '" + new_looks.at(new_default).name + "' instead of '" + old_looks.at(old_default).name + "'";
+
+  retired_.push_back(std::move(renderer_));
+  renderer_ = std::move(p->renderer);
+  cloth_fabrics_ = std::move(p->cloth_fabrics);
+  method_ = p->method;
+  iwasaki_ = p->bundle.iwasaki;
+  room_light_ = p->room_light;
+  scene_ = std::move(p->bundle.scene);
+  shown_ = {config_.bundle, false, ""};
+  shown_fingerprint_ = p->bundle.fingerprint;
+  swapped_ = p->change;
+  knob_fabric_ = knob_fabric(*scene_);
+  meter_next_ = true;  // a new scene: its own exposure
+  // The bundle shown becomes the last good copy, written (and fsynced) off the render thread.
+  if (state_dir_ok_) {
+    if (saving_.valid()) saving_.wait();  // the previous one, rarely still running
+    saving_ = std::async(std::launch::async, [this, reader = std::move(*p->reader)] {
+      bundle::save_as_last_good(reader, config_.bundle, config_.state_dir, stderr_sink("weft run"));
+    });
+  }
+
+  if (knobs_differ.empty())
+    log_info("knob state carried over (the same fabric presets and the same fabric on the cloth)");
+  else
+    reset_knobs(*scene_, knobs_differ);
+  // The knobs onto the new renderer: the same positions, or the reset ones.
+  knob_version_ = ~0ull;
+  if (!poll_knobs()) apply_knob_state(knobs_);
+  if (light_version_ != p->light_version) relight(rotated_about_z(room_light_, std::max(light_rotation_, 0.0f)));
+  return true;
+}
+
+void Kiosk::reset_knobs(const SceneBundle& sb, const std::string& why) {
+  std::lock_guard lock(controller_m_);
+  controller_.reset();  // saves what the old presets' knobs had pending
+  make_knob_controller(sb);
+  const uint32_t preset = default_preset(sb);
+  log_warning("knob state reset to preset '" + preset_looks(presets_).at(preset).name + "' (" + why + ")");
+  const auto file = std::filesystem::path(config_.state_dir) / "knobs.json";
+  if (state_dir_ok_) {
+    input::KnobPositions start;
+    start.preset = preset;
+    std::string error;
+    if (!input::write_file_atomically(file, input::knob_state_text(start, preset_looks(presets_)), error))
+      log_warning("could not save the reset knob state (" + error + ")");
+  }
+  controller_->restore();
+}
+
+void Kiosk::log_swap_shown() {
+  ++bundles_swapped_;
+  const double total_ms = ms_since(swapped_->first_event);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "bundle %s shown %.0f ms after it changed: scene '%s', %zu objects, %zu SGs, %s (read and verified "
+                "%.0f ms, GPU resources %.0f ms, lighting %.0f ms)",
+                config_.bundle.c_str(), total_ms, scene_->scene.name.c_str(), scene_->scene.objects.size(),
+                scene_->sgs.size(), method_->name.c_str(), swap_read_ms_, swap_gpu_ms_, swap_light_ms_);
+  log_info(line);
+  notifier_.status("showing '" + scene_->scene.name + "' on " + (kms_ ? kms_->description() : std::string("headless")));
+  swapped_.reset();
 }
 
 void Kiosk::apply_knob_state(const input::AppearanceState& s) {
@@ -352,8 +597,9 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
 
 // Before the first frame the lighting is set here and now; after it, on the worker.
 void Kiosk::relight(const SgLighting& sgs) {
+  ++light_version_;
   if (first_frame_shown_)
-    lighting_->request(sgs);
+    lighting_->request({renderer_.get(), sgs});
   else
     renderer_->set_lighting(sgs);
 }

@@ -7,6 +7,7 @@
 //
 // run() boots, then loops until `stop` is set or `frames` ticks have run:
 //   check_config      flag values, the state directory
+//   watch_bundle      inotify on the bundle's directory (content updates, kiosk/bundle_watcher.h)
 //   load_bundle       the bundle, or the last good copy (bundle/bundle_fallback.h); the method
 //   open_display      KMS, else (display auto) headless
 //   start_knobs       knob controller (state restored from STATE_DIR/knobs.json), knob sources
@@ -14,19 +15,29 @@
 //   start_probe       the light probe, when asked for
 //   show_first_frame  first frame, then READY=1 to systemd
 //   listen_to_knobs   the knob sources' threads start
-//   tick …            poll knobs and light, redraw if the view, knobs or light changed,
-//                     WATCHDOG=1, a stats line every stats_every seconds
+//   tick …            poll knobs, light and bundle, redraw if the view, knobs, light or scene
+//                     changed, WATCHDOG=1, a stats line every stats_every seconds
 //   shut_down         sources stopped, knob state saved, screenshot, the exit line, STOPPING=1
 //
 // One tick per display refresh: vsync on KMS, a 60 Hz timer headless. Lighting changes after
 // the first frame are prepared on a worker thread; the frame keeps its light until they are done.
+//
+// Content updates: when the bundle file is replaced (atomically, or written in place and closed),
+// a worker thread reads and verifies it; the loop builds its GPU resources, a worker prepares its
+// lighting, and the loop swaps it in (then a worker saves it as the last good copy). Until then, and
+// for good when the new file is refused (corrupt, truncated, unusable: a journal error naming the
+// file and why), the scene shown stays. Knob positions carry over when the new bundle has the same
+// fabric presets and its cloth wears the same one; otherwise they reset to its preset (logged).
 //
 // Test-only fault injection: WEFT_FAULT_HANG_AFTER_TICKS=N makes the loop hang after N ticks (no
 // frames, no watchdog pings), as a stuck driver would; the watchdog test uses it.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
+#include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +47,9 @@
 #include "bundle/bundle_fallback.h"
 #include "core/fabric.h"
 #include "gpu/scene_renderer.h"
+#include "kiosk/bundle_watcher.h"
 #include "kiosk/frame_stats.h"
+#include "kiosk/kiosk_bundle.h"
 #include "kiosk/latest_request_worker.h"
 #include "kiosk/service_notifier.h"
 #include "panel/appearance_state.h"
@@ -95,6 +108,7 @@ private:
   using Clock = std::chrono::steady_clock;
 
   void check_config();
+  void watch_bundle();
   void load_bundle();
   bool open_display();  // false when display kms has none
   void start_knobs();
@@ -110,6 +124,7 @@ private:
   bool poll_knobs();             // applies a new knob state; true when there was one
   void poll_light();             // the probe's newest fit, handed to the lighting worker
   bool take_prepared_lighting(); // true when the worker's lighting was uploaded
+  bool poll_bundle();            // true when a new bundle was swapped in this tick
   void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
@@ -117,6 +132,14 @@ private:
   // exposure_target_ (and exposure_ when none is shown yet).
   void meter_exposure(int width, int height);
   double exposure_bias_ev() const;
+  // Content updates: a verified bundle's renderer is built, its lighting prepared, then swapped in.
+  struct LoadedBundle;
+  struct PendingSwap;
+  void start_swap(LoadedBundle loaded);
+  bool finish_swap();  // true once the pending bundle is the one shown
+  void log_swap_shown();
+  void make_knob_controller(const SceneBundle& sb);
+  void reset_knobs(const SceneBundle& sb, const std::string& why);
   void log_stats(Clock::time_point now);
 
   KioskConfig config_;
@@ -124,8 +147,13 @@ private:
   Clock::time_point boot_;
   bool state_dir_ok_ = true;
 
-  // The bundle.
-  std::optional<bundle::OpenedBundle> opened_;
+  // The bundle shown.
+  struct Shown {
+    std::filesystem::path file;  // the file it came from
+    bool is_last_good = false;   // the last good copy, because the primary was unusable
+    std::string primary_error;
+  } shown_;
+  std::atomic<std::uint64_t> shown_fingerprint_{0};
   std::optional<SceneBundle> scene_;
   std::shared_ptr<const IwasakiBundleData> iwasaki_;
   const methods::RuntimeMethod* method_ = nullptr;  // from the registry: --method, or the bundle's best
@@ -140,7 +168,8 @@ private:
   // objects keep their own (its body).
   std::string knob_fabric_;
   std::vector<Fabric> presets_;
-  std::unique_ptr<input::KnobController> controller_;
+  std::unique_ptr<input::KnobController> controller_;  // replaced (render thread) when a new bundle's presets differ
+  std::mutex controller_m_;                             // the sources' events vs that replacement
   std::atomic<int64_t> last_report_ns_{0};  // the newest HID report's arrival (steady_clock ns)
   std::vector<std::unique_ptr<input::KnobSource>> sources_;
   input::AppearanceState knobs_;
@@ -149,6 +178,8 @@ private:
   // The renderer and what it draws into.
   std::vector<Fabric> cloth_fabrics_;  // the fabric of each cloth object
   std::unique_ptr<gpu::SceneRenderer> renderer_;
+  // Renderers of bundles swapped out, kept until no lighting request made for them is running.
+  std::vector<std::unique_ptr<gpu::SceneRenderer>> retired_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
   std::unique_ptr<gpu::ToneMapper> tonemap_;  // KMS only
 
@@ -158,7 +189,17 @@ private:
   float light_rotation_ = -1;  // degrees; < 0 until the knobs first set it
   std::atomic<long> lighting_prepared_{0};
   std::atomic<double> last_prepare_ms_{0};
-  std::unique_ptr<LatestRequestWorker<SgLighting, gpu::SceneRenderer::PreparedLighting>> lighting_;
+  // Requests name the renderer they are for: one that comes back for a renderer swapped out is dropped.
+  struct LightingRequest {
+    const gpu::SceneRenderer* renderer;
+    SgLighting sgs;
+  };
+  struct LightingResult {
+    const gpu::SceneRenderer* renderer;
+    gpu::SceneRenderer::PreparedLighting lighting;
+  };
+  std::unique_ptr<LatestRequestWorker<LightingRequest, LightingResult>> lighting_;
+  std::uint64_t light_version_ = 0;  // counts relight() calls
   bool first_frame_shown_ = false;
 
   // Exposure: metered at boot and after each lighting change, shown exposure_ easing towards
@@ -166,6 +207,14 @@ private:
   bool meter_next_ = false;
   double exposure_ = 0.0, exposure_target_ = 0.0;  // 0 until the first metering
   Clock::time_point exposure_step_;
+  // Content updates.
+  std::unique_ptr<BundleWatcher> watcher_;
+  std::unique_ptr<LatestRequestWorker<BundleWatcher::Change, LoadedBundle>> loader_;
+  std::unique_ptr<PendingSwap> pending_;
+  std::optional<BundleWatcher::Change> swapped_;  // the change just swapped in, until its frame is drawn
+  std::future<void> saving_;  // the last good copy of the bundle swapped in
+  double swap_read_ms_ = 0, swap_gpu_ms_ = 0, swap_light_ms_ = 0;
+  long bundles_swapped_ = 0;
 
   // The loop.
   long hang_after_ = -1;

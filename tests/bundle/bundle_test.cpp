@@ -156,6 +156,39 @@ TEST(Bundle, RoundTripsEveryElementTypeThroughAMappedFile) {
   EXPECT_EQ(kept[0], f64[0]);
 }
 
+// read() copies the file into memory: the same sections and values as open(), 64-byte aligned,
+// and a file rewritten in place (truncated, then half written, as an interrupted copy leaves
+// it) afterwards changes nothing already read; reading it then is a clean "truncated" error.
+TEST(Bundle, ReadKeepsItsOwnCopyWhileTheFileIsRewrittenInPlace) {
+  const Small small;
+  const std::vector<std::byte> bytes = small.bytes();
+  const auto file = temp_file("read_copy.weftbundle");
+  const auto write = [&](std::size_t n) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(n));
+  };
+  write(bytes.size());
+  const BundleReader r = BundleReader::read(file);
+  const BundleReader mapped = BundleReader::open(file);
+  ASSERT_EQ(r.sections().size(), mapped.sections().size());
+  EXPECT_TRUE(std::equal(r.bytes().begin(), r.bytes().end(), bytes.begin(), bytes.end()));
+  EXPECT_NE(static_cast<const void*>(r.bytes().data()), static_cast<const void*>(mapped.bytes().data()));
+  for (const auto& s : r.sections()) EXPECT_EQ(reinterpret_cast<std::uintptr_t>(r.raw(s.name).data()) % 64, 0u) << s.name;
+
+  write(bytes.size() / 2);
+  const auto positions = r.array<float>("mesh.positions");
+  EXPECT_TRUE(std::equal(positions.begin(), positions.end(), small.positions.begin(), small.positions.end()));
+  EXPECT_EQ(r.json("camera"), small.meta);
+  try {
+    BundleReader::read(file);
+    ADD_FAILURE() << "a half-written file was accepted";
+  } catch (const BundleError& e) {
+    EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(BundleReader::read(file.string() + ".missing"), BundleError);
+}
+
 TEST(Bundle, FabricParametersAreReadIntoAnEditableStruct) {
   std::ifstream in(std::string(WEFT_SOURCE_ASSETS) + "/fabrics/linen_plain.json");
   std::stringstream text;

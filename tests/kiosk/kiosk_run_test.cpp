@@ -2,7 +2,10 @@
 // from another format version at boot → the last good bundle, and the log says why; systemd's
 // notify protocol with a listener standing in for systemd: READY=1 after the first frame,
 // WATCHDOG=1 pings while the loop runs, none once the loop hangs (WEFT_FAULT_HANG_AFTER_TICKS);
-// with stderr as the journal (JOURNAL_STREAM), lines carry sd-daemon priority prefixes.
+// with stderr as the journal (JOURNAL_STREAM), lines carry sd-daemon priority prefixes;
+// content updates while the kiosk runs: a bundle renamed into place is shown (the same picture
+// as a fresh start on it), corrupt, truncated and half-copied ones are refused with a journal
+// error and the picture stays, a half copy completed later is shown.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -89,6 +92,10 @@ protected:
     const Spawned b = spawn({"bake", "--scene", "pillow", "--fabric", "linen_plain", "--no-tables", "--out", (dir_ / "good.weft").string()},
                             {}, dir_ / "bake.log");
     ASSERT_EQ(wait_exit(b), 0) << read_all(dir_ / "bake.log");
+    // Another scene and fabric, for content updates.
+    const Spawned o = spawn({"bake", "--scene", "swatch", "--fabric", "silk_shot", "--no-tables", "--out", (dir_ / "other.weft").string()},
+                            {}, dir_ / "bake_other.log");
+    ASSERT_EQ(wait_exit(o), 0) << read_all(dir_ / "bake_other.log");
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
@@ -349,4 +356,128 @@ TEST_F(KioskRun, SigtermStopsCleanly) {
   kill(s.pid, SIGTERM);
   EXPECT_EQ(wait_exit(s), 0) << read_all(s.log);
   EXPECT_NE(read_all(s.log).find("stopping after"), std::string::npos) << read_all(s.log);
+}
+
+// Content updates: `weft run` on a bundle that is replaced while it runs, with stderr as the journal.
+class KioskContentUpdate : public KioskRun {
+protected:
+  static constexpr auto kDeadline = std::chrono::seconds(120);  // a loaded machine; no timing asserted
+
+  // Starts the kiosk on a copy of good.weft in its own folder; returns once the first frame is up.
+  void start(const std::string& name) {
+    folder_ = dir_ / name;
+    fs::remove_all(folder_);
+    fs::create_directories(folder_);
+    bundle_ = folder_ / "showroom.weft";
+    fs::copy_file(dir_ / "good.weft", bundle_);
+    kiosk_ = spawn({"run", "--bundle", bundle_.string(), "--state-dir", (folder_ / "state").string(), "--display",
+                    "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--size", "96", "72",
+                    "--stats-every", "0", "--screenshot", (folder_ / "last.png").string()},
+                   {}, folder_ / "run.log", Journal::matches_stderr);
+    wait_for("first frame after", 1);
+  }
+  // Waits until the log has `count` lines containing `needle`; returns them.
+  std::vector<std::string> wait_for(const std::string& needle, size_t count) {
+    const auto until = Clock::now() + kDeadline;
+    for (;;) {
+      const std::string log = read_all(kiosk_.log);
+      auto found = lines_with(log, needle);
+      if (found.size() >= count) return found;
+      if (waitpid(kiosk_.pid, nullptr, WNOHANG) != 0) {
+        ADD_FAILURE() << "the kiosk exited while waiting for '" << needle << "'\n" << log;
+        return found;
+      }
+      if (Clock::now() > until) {
+        ADD_FAILURE() << "no " << count << " x '" << needle << "' within the deadline\n" << log;
+        return found;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  // SIGTERM; the screenshot of the last frame shown.
+  std::string stop() {
+    kill(kiosk_.pid, SIGTERM);
+    EXPECT_EQ(wait_exit(kiosk_), 0) << read_all(kiosk_.log);
+    return read_all(folder_ / "last.png");
+  }
+  // Written beside the bundle, then renamed over it: what rsync, systemd-sysupdate or a pull do.
+  void replace_atomically(const std::string& bytes) {
+    const fs::path tmp = folder_ / ".showroom.weft.partial";
+    std::ofstream(tmp, std::ios::binary) << bytes;
+    fs::rename(tmp, bundle_);
+  }
+  // A fresh kiosk's picture of `bundle` (new state dir: its own preset, knobs untouched).
+  std::string fresh_render(const fs::path& bundle, const std::string& name) {
+    std::string log;
+    EXPECT_EQ(run(bundle, dir_ / (name + "_state"), dir_ / (name + ".png"), log), 0) << log;
+    return read_all(dir_ / (name + ".png"));
+  }
+
+  fs::path folder_, bundle_;
+  Spawned kiosk_;
+};
+
+TEST_F(KioskContentUpdate, ABundleRenamedIntoPlaceIsShownWithoutARestart) {
+  const std::string pillow = fresh_render(dir_ / "good.weft", "update_pillow");
+  const std::string swatch = fresh_render(dir_ / "other.weft", "update_swatch");
+  ASSERT_NE(pillow, swatch);
+  start("atomic");
+  replace_atomically(read_all(dir_ / "other.weft"));
+  const auto shown = wait_for("shown", 1);
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_EQ(shown[0].rfind("<6>weft run: bundle " + bundle_.string() + " shown ", 0), 0u) << shown[0];
+  EXPECT_NE(shown[0].find("ms after it changed: scene 'swatch'"), std::string::npos) << shown[0];
+  // The swatch wears silk_shot, the pillow linen_plain: the knobs start over on the new preset.
+  const auto reset = lines_with(read_all(kiosk_.log), "knob state reset to preset 'silk_shot'");
+  EXPECT_EQ(reset.size(), 1u) << read_all(kiosk_.log);
+  EXPECT_EQ(stop(), swatch) << read_all(kiosk_.log);
+  // The new content became the last good copy.
+  EXPECT_EQ(read_all(folder_ / "state" / "last-good.weftbundle"), read_all(dir_ / "other.weft"));
+  EXPECT_EQ(read_all(kiosk_.log).find("<3>"), std::string::npos) << read_all(kiosk_.log);
+}
+
+TEST_F(KioskContentUpdate, CorruptTruncatedAndHalfCopiedBundlesAreRefusedAndTheSceneStays) {
+  const std::string pillow = fresh_render(dir_ / "good.weft", "refused_pillow");
+  const std::string other = read_all(dir_ / "other.weft");
+  start("refused");
+  std::string flipped = other;
+  flipped[other.size() - 100] ^= 0x10;  // in the last section's payload
+  replace_atomically(flipped);
+  auto refused = wait_for("content update refused", 1);
+  replace_atomically(other.substr(0, other.size() / 2));
+  refused = wait_for("content update refused", 2);
+  // A copy written in place (the file truncated, then written) and cut off half way.
+  {
+    std::ofstream in_place(bundle_, std::ios::binary | std::ios::trunc);
+    in_place << other.substr(0, other.size() / 2);
+  }
+  refused = wait_for("content update refused", 3);
+  ASSERT_EQ(refused.size(), 3u);
+  const char* why[] = {"checksum mismatch", "truncated", "truncated"};
+  for (size_t i = 0; i < refused.size(); ++i) {
+    EXPECT_EQ(refused[i].rfind("<3>weft run: content update refused: bundle " + bundle_.string() + ": ", 0), 0u) << refused[i];
+    EXPECT_NE(refused[i].find(why[i]), std::string::npos) << refused[i];
+    EXPECT_NE(refused[i].find("still showing 'pillow'"), std::string::npos) << refused[i];
+  }
+  EXPECT_EQ(lines_with(read_all(kiosk_.log), " shown ").size(), 0u) << read_all(kiosk_.log);
+  EXPECT_EQ(stop(), pillow) << read_all(kiosk_.log);
+  // None of them replaced the last good copy.
+  EXPECT_EQ(read_all(folder_ / "state" / "last-good.weftbundle"), read_all(dir_ / "good.weft"));
+}
+
+TEST_F(KioskContentUpdate, AHalfCopyCompletedLaterIsShown) {
+  const std::string swatch = fresh_render(dir_ / "other.weft", "resumed_swatch");
+  const std::string other = read_all(dir_ / "other.weft");
+  start("resumed");
+  {
+    std::ofstream in_place(bundle_, std::ios::binary | std::ios::trunc);
+    in_place << other.substr(0, other.size() / 3);
+  }
+  wait_for("content update refused", 1);
+  {
+    std::ofstream resumed(bundle_, std::ios::binary | std::ios::app);  // the copy resumed where it stopped
+    resumed << other.substr(other.size() / 3);
+  }
+  wait_for("scene 'swatch'", 1);
+  EXPECT_EQ(stop(), swatch) << read_all(kiosk_.log);
 }

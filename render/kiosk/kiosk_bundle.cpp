@@ -1,0 +1,53 @@
+#include "kiosk/kiosk_bundle.h"
+
+#include <map>
+
+#include "gpu/scene_renderer.h"
+#include "kiosk/kiosk_config_error.h"
+
+namespace weft {
+namespace {
+
+// FNV-1a 64.
+void mix(std::uint64_t& h, const void* data, std::size_t n) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= p[i];
+    h *= 1099511628211ull;
+  }
+}
+
+}  // namespace
+
+std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const auto& s : reader.sections()) {
+    mix(h, s.name.data(), s.name.size() + 1);
+    mix(h, &s.size, sizeof s.size);
+    mix(h, &s.crc, sizeof s.crc);
+  }
+  return h;
+}
+
+KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method) {
+  KioskBundle b;
+  b.scene = read_scene_bundle(reader);
+  if (has_iwasaki_sections(reader) && method != "sgpoint") {
+    std::map<size_t, size_t> vertices;
+    for (size_t i = 0; i < b.scene.scene.objects.size(); ++i) vertices[i] = b.scene.scene.objects[i].mesh.positions.size();
+    b.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+  }
+  b.fingerprint = bundle_fingerprint(reader);
+  return b;
+}
+
+const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
+                                           const std::filesystem::path& file) {
+  const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method : (bundle.iwasaki ? "iwasaki_vertex" : "sgpoint"));
+  if (gpu::uses_seed000_tables(m) && !bundle.iwasaki)
+    throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
+                           " has no seed 000 tables (weft bake without --no-tables)");
+  return m;
+}
+
+}  // namespace weft

@@ -1,0 +1,36 @@
+#pragma once
+// A scene bundle as the kiosk shows it: what it reads from a verified bundle (the scene, every
+// fabric preset, and seed 000's tables unless it draws with sgpoint), the runtime method it
+// draws with, and a fingerprint of the content. Read at boot (through the last-good fallback)
+// and for each content update (kiosk/bundle_watcher.h), the same way both times.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "bundle/bundle_reader.h"
+#include "methods/registry.h"
+#include "runtime/iwasaki_bundle.h"
+#include "runtime/scene_bundle.h"
+
+namespace weft {
+
+struct KioskBundle {
+  SceneBundle scene;
+  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or sgpoint asked for)
+  std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
+};
+
+// Reads what the kiosk needs; `method` is --method (auto, or a registry name). Throws
+// bundle::BundleError naming the section when something is missing or invalid.
+KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
+
+// The method for a bundle: --method, or for auto iwasaki_vertex when the bundle has seed 000
+// tables, else sgpoint. Throws KioskConfigError when the method needs tables the bundle lacks.
+const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
+                                           const std::filesystem::path& file);
+
+// A fingerprint of a verified bundle's content: its sections' names, sizes and checksums.
+std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader);
+
+}  // namespace weft
