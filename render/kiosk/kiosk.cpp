@@ -98,7 +98,13 @@ void Kiosk::load_bundle() {
     throw;
   }
   if (!scene_) fo.accept(opened_->bundle);
-  method_ = &gpu::parse_method(config_.method != "auto" ? config_.method : (iwasaki_ ? "iwasaki_vertex" : "sgpoint"));
+  bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
+  for (const auto& o : scene_->scene.objects)
+    if (o.material == Material::cloth)
+      sheer = sheer || object_fabric(o, scene_->fabrics.at(o.fabric)).optical_thickness > 0.0;
+  method_ = &gpu::parse_method(config_.method != "auto" ? config_.method
+                               : iwasaki_               ? (sheer ? "sheer_vertex" : "iwasaki_vertex")
+                                                        : "sgpoint");
   if (gpu::uses_seed000_tables(*method_) && !iwasaki_)
     throw KioskConfigError("--method " + method_->name + ": bundle " + opened_->file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");

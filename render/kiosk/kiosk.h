@@ -67,7 +67,7 @@ struct KioskConfig {
   std::vector<int> size{640, 480};        // headless frame size
   // auto: iwasaki_vertex when the bundle has seed 000 tables (the same accuracy as per-pixel
   // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/methods/iwasaki/IWASAKI.md),
-  // else sgpoint.
+  // or sheer_vertex when a cloth object is a sheer (seed 004's layer over it, see-through), else sgpoint.
   std::string method = "auto";
   double exposure = 1.0;                  // tone mapping
   double stats_every = 300;               // seconds between stats lines; 0: none
