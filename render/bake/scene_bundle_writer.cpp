@@ -42,6 +42,7 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
         throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
       jo["material"] = "cloth";
       jo["fabric"] = o.fabric;
+      if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <string>
 
 #include "bench/bench_case.h"
 #include "bench/number_text.h"
 #include "bench/stability.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
@@ -105,6 +107,32 @@ void images_section(std::ostream& md, const BenchOptions& a, const BenchResults&
     md << "| " << r.scene << " / " << r.fabric << " / " << r.env << " / " << r.method << " | ![](" << r.image
        << ") | ![](" << r.reference_image << ") | " << (r.error_image.empty() ? "n/a" : "![](" + r.error_image + ")")
        << " |\n";
+}
+
+// The see-through methods (those measured against the thin-layer reference: thin, sheer,
+// sheer_vertex) on each of their cases in one row: the reference, then each method's image.
+void see_through_section(std::ostream& md, const BenchResults& res) {
+  std::vector<std::string> cases;
+  std::map<std::string, std::vector<const Row*>> by_case;
+  for (const auto& r : res.rows) {
+    const methods::RuntimeMethod* m = methods::find_method(r.method);
+    if (!m || m->reference != methods::BenchReference::thin_layer) continue;
+    const std::string key = r.scene + " / " + r.fabric + " / " + r.env;
+    if (!by_case.count(key)) cases.push_back(key);
+    by_case[key].push_back(&r);
+  }
+  if (cases.empty()) return;
+  md << "\n## See-through cloth side by side (thin-layer reference, then each method; relative RMSE)\n\n";
+  for (const auto& key : cases) {
+    const auto& rows = by_case.at(key);
+    md << "**" << key << "**\n\n| reference |";
+    for (const Row* r : rows) md << " " << r->method << " (" << (r->rmse >= 0 ? fmt(r->rmse) : "n/a") << ") |";
+    md << "\n|---|";
+    for (size_t i = 0; i < rows.size(); ++i) md << "---|";
+    md << "\n| ![](" << rows.front()->reference_image << ") |";
+    for (const Row* r : rows) md << " ![](" << r->image << ") |";
+    md << "\n\n";
+  }
 }
 
 // The cost-knob sweeps: SG count, then each of iwasaki's bake knobs.
@@ -283,6 +311,7 @@ void write_report_md(const std::filesystem::path& out, const BenchOptions& a, co
   overview(md, a, res);
   target_error_section(md, a, res);
   images_section(md, a, res);
+  see_through_section(md, res);
   sweep_sections(md, a, res);
   stability_section(md, a, res);
   thin_occluder_section(md, a, res);

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 
+#include "methods/registry.h"
 #include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
@@ -67,6 +68,16 @@ std::vector<StressCase> stress_cases(const std::filesystem::path& dir_, int n) {
   cases.push_back({"back_lit", "all light behind the cloth; views from both sides", linen,
                    {{dir(-50, 0), 20.0, dvec3(10.0)}, {dir(-15, 90), 200.0, dvec3(50.0)}, {dir(-80, 0), 1.0, dvec3(0.5)}},
                    points(n, 10, 85, 5, true)});
+  // The sheer (polyester_voile, τ = 0.4) lit from the viewer's side, from behind (a window: what
+  // shows through the layer is its scattering), and along the cloth (light and views grazing).
+  const Fabric voile = load_fabric_preset("polyester_voile", dir_);
+  cases.push_back({"sheer_front_lit", "voile, the room's SGs, views from the lit side", voile, room_sgs(), points(n, 10, 85, 9)});
+  cases.push_back({"sheer_back_lit", "voile, a bright window behind it and a dim room in front; views from both sides", voile,
+                   {{dir(-30, 0), 30.0, dvec3(40.0, 38.0, 34.0)}, {dir(-60, 150), 4.0, dvec3(3.0)}, {dir(50, 90), 2.0, dvec3(0.4)}},
+                   points(n, 10, 85, 10, true)});
+  cases.push_back({"sheer_grazing", "voile, SGs 3–8° from the cloth's plane on both sides, views 80–88° from the normal", voile,
+                   {{dir(5, 30), 300.0, dvec3(60.0)}, {dir(-3, 200), 300.0, dvec3(60.0)}, {dir(-8, 110), 40.0, dvec3(8.0)}},
+                   points(n, 2, 10, 11, true)});
   cases.push_back({"all_black", "every SG amplitude 0", linen, {{dir(50, 0), 10.0, dvec3(0.0)}, {dir(10, 90), 1.0, dvec3(0.0)}},
                    points(n, 5, 85, 6)});
   cases.push_back({"hot_texel", "one λ = 10⁴ SG of amplitude 10⁶ over a dim ambient", linen,
@@ -91,7 +102,8 @@ std::vector<dvec3> stress_reference(const StressCase& c) {
 StressResult run_stress(const CpuMethod& method, const StressCase& c, const std::vector<dvec3>* reference,
                         int tangent_samples) {
   const ClothBsdf bsdf(c.fabric, tangent_samples);
-  const bool thin = method.name == "thin";
+  const methods::RuntimeMethod* entry = methods::find_method(method.name);
+  const bool thin = entry && entry->reference == methods::BenchReference::thin_layer;  // thin, sheer, sheer_vertex
   const ThinParams thin_p = thin_params(c.fabric);
   StressResult r;
   double se = 0.0, sum_ref = 0.0;

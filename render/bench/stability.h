@@ -1,11 +1,12 @@
 #pragma once
 // Stress cases that push the methods past their assumptions: narrow
 // lights (λ = 10⁴), a window (a strip of narrow SGs: narrow anisotropic light), grazing views (θ_o to 89°), very glossy threads (γ_s = 1°), velvet pile
-// at 90°, back light, an all-black and a single-hot-texel environment. Each case is a fabric,
+// at 90°, back light, a sheer (voile) front-lit, back-lit and grazing, an all-black and a
+// single-hot-texel environment. Each case is a fabric,
 // a set of SGs and a set of (frame, ω_o) points; a sweep evaluates a method at every point,
 // counts non-finite and negative values, and optionally measures the relative RMSE against
 // the canonical model integrated by quadrature (reference/sg_quadrature.h; for `thin`, its
-// own reference: (1 − α)·canonical + reference/thin_quadrature.h).
+// own reference: (1 − α)·canonical + reference/thin_quadrature.h; so for `sheer`).
 // Not covered here: the thin-occluder case (scene visibility): the bench measures it on the
 // `teapot` scene's images (bench/shadow_mask.h); iwasaki runs here without visibility.
 #include <string>

@@ -103,6 +103,8 @@ Fabric parse_fabric(const std::string& text, const std::string& origin) {
     s << "a_1 + a_2 = " << a << " exceeds 1";
     fail(origin, "threads[*].coverage", s.str());
   }
+  if (doc.contains("optical_thickness"))
+    f.optical_thickness = number(doc, "optical_thickness", origin, "", 0.0, kMaxOpticalThickness, true);
   return f;
 }
 

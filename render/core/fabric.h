@@ -14,7 +14,14 @@ namespace weft {
 struct Fabric {
   std::string name;
   std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
+  // Seed 004's optical thickness τ of the cloth as a thin layer (direct transmission e^{−τ/μ}):
+  // > 0 marks a sheer (voile, net) that shows what lies behind it; 0 (the Table II presets) is a
+  // fabric with no thickness of its own, which see-through methods draw at their default τ.
+  double optical_thickness = 0.0;
 };
+
+// Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.
+inline constexpr double kMaxOpticalThickness = 20.0;
 
 // A fabric file that cannot be used. what() names the file, the field and the value.
 class FabricError : public std::runtime_error {

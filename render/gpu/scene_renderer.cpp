@@ -63,7 +63,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
     auto obj = std::make_unique<Object>(Object{&o, nullptr, o.material == Material::cloth, 0, nullptr});
     if (obj->cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
-      obj->handle = cloth_->add_object(i, o.mesh, fabrics[cloth]);
+      obj->handle = cloth_->add_object(i, o.mesh, object_fabric(o, fabrics[cloth]));
       ++cloth;
     } else {
       obj->mesh = std::make_unique<GpuMesh>(o.mesh);
@@ -79,7 +79,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->cloth && cloth++ == cloth_index) {
-      cloth_->set_fabric(o->handle, fabric);  // throws (and changes nothing) for a fabric the method cannot show
+      cloth_->set_fabric(o->handle, object_fabric(*o->source, fabric));  // throws (and changes nothing) for a fabric the method cannot show
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));

@@ -80,7 +80,7 @@ struct KioskConfig {
   std::vector<int> size{640, 480};        // headless frame size
   // auto: iwasaki_vertex when the bundle has seed 000 tables (the same accuracy as per-pixel
   // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/methods/iwasaki/IWASAKI.md),
-  // else sgpoint.
+  // or sheer_vertex when a cloth object is a sheer (seed 004's layer over it, see-through), else sgpoint.
   std::string method = "auto";
   // Tone mapping (image/tone_map.h): exposure metered on the cloth whenever the lighting changes
   // (not on knob edits: a darker fabric shows darker), eased in over kExposureAdaptSeconds, plus

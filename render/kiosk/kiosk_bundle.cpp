@@ -4,6 +4,7 @@
 
 #include "gpu/scene_renderer.h"
 #include "kiosk/kiosk_config_error.h"
+#include "scene/scene.h"
 
 namespace weft {
 namespace {
@@ -43,7 +44,13 @@ KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::str
 
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file) {
-  const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method : (bundle.iwasaki ? "iwasaki_vertex" : "sgpoint"));
+  bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
+  for (const auto& o : bundle.scene.scene.objects)
+    if (o.material == Material::cloth)
+      sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
+  const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
+                                                      : bundle.iwasaki ? (sheer ? "sheer_vertex" : "iwasaki_vertex")
+                                                                       : "sgpoint");
   if (gpu::uses_seed000_tables(m) && !bundle.iwasaki)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");

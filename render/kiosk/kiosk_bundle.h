@@ -25,8 +25,9 @@ struct KioskBundle {
 // bundle::BundleError naming the section when something is missing or invalid.
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
-// The method for a bundle: --method, or for auto iwasaki_vertex when the bundle has seed 000
-// tables, else sgpoint. Throws KioskConfigError when the method needs tables the bundle lacks.
+// The method for a bundle: --method, or for auto (when the bundle has seed 000 tables)
+// sheer_vertex if a cloth object is a sheer, else iwasaki_vertex; sgpoint without tables.
+// Throws KioskConfigError when the method needs tables the bundle lacks.
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file);
 

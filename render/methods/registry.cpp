@@ -7,6 +7,7 @@
 #include "methods/mdfrot/mdfrot_method.h"
 #include "methods/mizutani/mizutani_method.h"
 #include "methods/sgpoint/sgpoint_method.h"
+#include "methods/sheer/sheer_method.h"
 #include "methods/sheen/sheen_method.h"
 #include "methods/thin/thin_method.h"
 
@@ -21,6 +22,7 @@ const std::vector<RuntimeMethod>& registry() {
       mizutani_method(),
       iwasaki_method(),
       iwasaki_vertex_method(),
+      sheer_method(), sheer_vertex_method(),
   };
   return methods;
 }

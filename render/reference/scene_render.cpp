@@ -38,7 +38,7 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
       fabric = &it->second;
     }
     for (int level = 0; level < kLevels; ++level)
-      bsdfs_[level].push_back(fabric ? std::make_unique<ClothBsdf>(*fabric, options_.tangent_samples << level)
+      bsdfs_[level].push_back(fabric ? std::make_unique<ClothBsdf>(object_fabric(obj, *fabric), options_.tangent_samples << level)
                                      : nullptr);
   }
 }

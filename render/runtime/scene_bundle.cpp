@@ -101,6 +101,11 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
         o.material = Material::cloth;
         o.fabric = jo.at("fabric").get<std::string>();
         if (!out.fabrics.count(o.fabric)) throw bad(r, F, "no fabric '" + o.fabric + "' for object '" + o.name + "'");
+        if (jo.contains("optical_thickness")) {
+          o.optical_thickness = jo.at("optical_thickness").get<double>();
+          if (!(o.optical_thickness > 0.0 && o.optical_thickness <= kMaxOpticalThickness))
+            throw bad(r, S, "object '" + o.name + "': optical_thickness outside (0, 20]");
+        }
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
       } else {

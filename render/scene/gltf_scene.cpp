@@ -115,6 +115,7 @@ private:
 
   // Per material (index + 1; 0 is glTF's default material): its fabric ("" = Lambertian).
   std::vector<std::string> fabrics_;
+  std::vector<double> thickness_;  // per material (index + 1): extras.weft.optical_thickness, 0 when absent
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -170,10 +171,19 @@ bool is_preset(const std::filesystem::path& dir, const std::string& name) {
 
 void Importer::resolve_materials() {
   fabrics_.assign(m_.materials.size() + 1, "");
+  thickness_.assign(m_.materials.size() + 1, 0.0);
   bool any_cloth = false;
   for (size_t i = 0; i < m_.materials.size(); ++i) {
     const tinygltf::Material& mat = m_.materials[i];
     std::string& fabric = fabrics_[i + 1];
+    if (mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has("optical_thickness")) {
+      const tinygltf::Value& t = mat.extras.Get("weft").Get("optical_thickness");
+      const std::string where = "materials[" + std::to_string(i) + "] ('" + mat.name + "').extras.weft.optical_thickness";
+      const double tau = t.IsNumber() ? t.GetNumberAsDouble() : -1.0;
+      if (!(tau > 0.0 && tau <= kMaxOpticalThickness))
+        fail(where + ": expected a number in (0, " + std::to_string(int(kMaxOpticalThickness)) + "]");
+      thickness_[i + 1] = tau;
+    }
     if (auto it = options_.fabric_overrides.find(mat.name); it != options_.fabric_overrides.end()) {
       fabric = it->second;
     } else if (mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has("fabric")) {
@@ -455,6 +465,7 @@ Scene Importer::run() {
     if (!fabrics_[i].empty()) {
       o.material = Material::cloth;
       o.fabric = fabrics_[i];
+      o.optical_thickness = thickness_[i];
     } else {
       o.material = Material::lambertian;
       if (i > 0) {

@@ -210,6 +210,9 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     if (material == "cloth") {
       obj.material = Material::cloth;
       obj.fabric = text(field(o, "fabric", where), where + ".fabric");
+      obj.optical_thickness = number_or(o, "optical_thickness", 0.0, where, 0.0, kMaxOpticalThickness);
+      if (o.contains("optical_thickness") && obj.optical_thickness <= 0.0)
+        throw SceneError(where + ".optical_thickness: must be > 0 (leave it out for the fabric's own)");
     } else if (material == "lambertian") {
       obj.material = Material::lambertian;
       obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");
@@ -228,6 +231,11 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     s.objects.push_back(std::move(obj));
   }
   return s;
+}
+
+Fabric object_fabric(const SceneObject& o, Fabric fabric) {
+  if (o.optical_thickness > 0.0) fabric.optical_thickness = o.optical_thickness;
+  return fabric;
 }
 
 Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {

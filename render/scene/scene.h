@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fabric.h"
 #include "scene/mesh.h"
 
 namespace weft {
@@ -34,10 +35,15 @@ struct SceneObject {
   std::string name;
   Material material = Material::lambertian;
   std::string fabric;        // cloth: preset name
+  double optical_thickness = 0.0;  // cloth: > 0 overrides the fabric's τ (object_fabric)
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
 };
+
+// The fabric cloth object `o` is drawn with: `fabric` (its preset's, or a knob's edit of it) with
+// the object's own overrides (its optical thickness, when it gives one).
+Fabric object_fabric(const SceneObject& o, Fabric fabric);
 
 struct Scene {
   std::string name;

@@ -2,6 +2,7 @@
 // clamped-cosine irradiance (core/spherical_gaussian.cpp's Tokuyoshi 2024 fit, term by term)
 // and the horizon lift of methods/sg_lights.cpp. Parity: tests/gpu/method_parity_test.cpp.
 // Needs erf.glsl before it.
+#define SG_LIGHTING_GLSL  // iwasaki.glsl then leaves out the SG uniforms it shares with this file
 #define MAX_SGS 40
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];

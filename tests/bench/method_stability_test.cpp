@@ -1,5 +1,5 @@
 // Every runtime method's C++ evaluation under the stress cases of render/bench/stability.h
-// (λ = 10⁴, a window strip of narrow SGs, grazing views to 89°, γ_s = 1°, velvet, back light,
+// (λ = 10⁴, a window strip of narrow SGs, grazing views to 89°, γ_s = 1°, velvet, back light, a sheer front-lit, back-lit and grazing,
 // all-black and hot-texel environments): no NaN, no Inf, no negative radiance, alpha within [0, 1]. The all-black
 // environment must give exactly 0. Errors against the reference are the bench's (report table).
 #include <gtest/gtest.h>
@@ -26,11 +26,11 @@ TEST_P(MethodStability, FiniteAndNonNegativeUnderStress) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, MethodStability, ::testing::Values("iwasaki", "mizutani", "sgpoint", "sheen", "mdfrot", "thin"));
+INSTANTIATE_TEST_SUITE_P(Methods, MethodStability, ::testing::Values("iwasaki", "mizutani", "sgpoint", "sheen", "mdfrot", "thin", "sheer"));
 
 // The list the sweep runs is the list the bench reports: every CPU method is covered above.
 TEST(MethodStability, CoversEveryCpuMethod) {
   std::vector<std::string> names;
   for (const auto& m : cpu_methods()) names.push_back(m.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"iwasaki", "mizutani", "sgpoint", "sheen", "mdfrot", "thin"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"iwasaki", "mizutani", "sgpoint", "sheen", "mdfrot", "thin", "sheer"}));
 }

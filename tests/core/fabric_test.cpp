@@ -9,11 +9,11 @@ using namespace weft;
 
 static const std::string kDir = WEFT_SOURCE_ASSETS "/fabrics";
 
-TEST(Fabric, AllSixPresetsLoad) {
+TEST(Fabric, AllPresetsLoad) {
   const auto names = list_fabric_presets(kDir);
   const std::vector<std::string> expect = {"linen_plain", "polyester_satin_charmeuse",
-                                           "polyester_satin_charmeuse_back", "silk_crepe_de_chine",
-                                           "silk_shot", "velvet"};
+                                           "polyester_satin_charmeuse_back", "polyester_voile",
+                                           "silk_crepe_de_chine", "silk_shot", "velvet"};
   EXPECT_EQ(names, expect);
   for (const auto& n : names) EXPECT_NO_THROW(load_fabric_preset(n, kDir)) << n;
 }
@@ -52,6 +52,18 @@ static std::string replace(std::string s, const std::string& from, const std::st
     if (!all) break;
   }
   return s;
+}
+
+TEST(Fabric, OpticalThicknessMarksASheer) {
+  EXPECT_EQ(load_fabric_preset("linen_plain", kDir).optical_thickness, 0.0);  // Table II: opaque
+  EXPECT_DOUBLE_EQ(load_fabric_preset("polyester_voile", kDir).optical_thickness, 0.4);
+  const std::string with = replace(linen_text(), "\"threads\"", "\"optical_thickness\": 1.5, \"threads\"");
+  EXPECT_DOUBLE_EQ(parse_fabric(with, "t.json").optical_thickness, 1.5);
+  for (const char* bad : {"0", "-1", "21", "\"thin\""}) {
+    const std::string e =
+        error_of(replace(linen_text(), "\"threads\"", std::string("\"optical_thickness\": ") + bad + ", \"threads\""));
+    EXPECT_NE(e.find("test.json: field 'optical_thickness'"), std::string::npos) << bad << ": " << e;
+  }
 }
 
 TEST(Fabric, MissingFieldIsNamed) {

@@ -123,3 +123,31 @@ TEST(SceneBundle, MissingSectionsAreNamed) {
     EXPECT_EQ(e.section(), "mesh/0/positions") << e.what();
   }
 }
+
+TEST(SceneBundle, CarriesASheersOpticalThickness) {
+  // The voile's τ in its fabric text, and an object's own override in the scene section.
+  SceneBundleInput in = pillow_input();
+  in.scene.objects[0].fabric = "polyester_voile";
+  in.scene.objects[0].optical_thickness = 1.25;
+  in.fabrics["polyester_voile"] = read_all(fs::path(WEFT_SOURCE_ASSETS) / "fabrics" / "polyester_voile.json");
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const SceneBundle out = read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+  EXPECT_DOUBLE_EQ(out.fabrics.at("polyester_voile").optical_thickness, 0.4);
+  EXPECT_DOUBLE_EQ(out.scene.objects[0].optical_thickness, 1.25);
+  EXPECT_EQ(out.scene.objects[1].optical_thickness, 0.0);
+  EXPECT_EQ(out.fabrics.at("silk_crepe_de_chine").optical_thickness, 0.0);  // Table II: opaque
+  // An out-of-range override is refused naming the scene section.
+  in.scene.objects[0].optical_thickness = 40.0;
+  bundle::BundleWriter bad;
+  add_scene_sections(bad, in);
+  const auto bad_bytes = bad.to_bytes();
+  try {
+    read_scene_bundle(bundle::BundleReader::view(bad_bytes, "memory"));
+    FAIL() << "accepted optical_thickness 40";
+  } catch (const bundle::BundleError& e) {
+    EXPECT_EQ(e.section(), "scene") << e.what();
+    EXPECT_NE(std::string(e.what()).find("optical_thickness"), std::string::npos) << e.what();
+  }
+}

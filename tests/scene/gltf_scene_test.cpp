@@ -238,6 +238,20 @@ TEST(GltfScene, FabricFileInExtrasIsResolvedBesideTheGltf) {
   EXPECT_NE(why.find("missing.json"), std::string::npos) << why;
 }
 
+TEST(GltfScene, OpticalThicknessInExtrasMakesTheClothASheer) {
+  GltfBuilder b = quad();
+  EXPECT_EQ(parse(b).objects[0].optical_thickness, 0.0);
+  b.j["materials"][0]["extras"]["weft"]["optical_thickness"] = 0.35;
+  const Scene s = parse(b);
+  EXPECT_EQ(s.objects[0].material, Material::cloth);
+  EXPECT_DOUBLE_EQ(s.objects[0].optical_thickness, 0.35);
+  for (const json& bad : {json(0.0), json(-2), json(50), json("thin")}) {
+    b.j["materials"][0]["extras"]["weft"]["optical_thickness"] = bad;
+    const std::string why = refusal([&] { parse(b); });
+    EXPECT_NE(why.find("extras.weft.optical_thickness"), std::string::npos) << bad.dump() << ": " << why;
+  }
+}
+
 TEST(GltfScene, SceneFileReferencesGltfWithOverridesCameraAndEnvironment) {
   const fs::path dir = fs::temp_directory_path() / "weft_gltf_scene_file_test";
   fs::create_directories(dir);

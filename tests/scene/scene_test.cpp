@@ -240,3 +240,19 @@ TEST(Camera, CentreRayPointsAtTarget) {
   EXPECT_NEAR(std::acos(glm::dot(top, d)), glm::radians(c.fov_deg / 2), 1e-9);
   EXPECT_GT(top.z, d.z);
 }
+
+TEST(SceneFile, ClothOpticalThicknessOverridesTheFabrics) {
+  nlohmann::json j = nlohmann::json::parse(read(kDir / "curtain.json"));
+  EXPECT_EQ(parse_scene(j.dump(), "test.json", kDir).objects[0].optical_thickness, 0.0);  // the fabric's own
+  j["objects"][0]["optical_thickness"] = 0.7;
+  const Scene s = parse_scene(j.dump(), "test.json", kDir);
+  EXPECT_DOUBLE_EQ(s.objects[0].optical_thickness, 0.7);
+  Fabric voile;
+  voile.optical_thickness = 0.4;
+  EXPECT_DOUBLE_EQ(object_fabric(s.objects[0], voile).optical_thickness, 0.7);
+  EXPECT_DOUBLE_EQ(object_fabric(s.objects[1], voile).optical_thickness, 0.4);  // no override: the fabric's
+  for (double bad : {0.0, -1.0, 25.0}) {
+    j["objects"][0]["optical_thickness"] = bad;
+    EXPECT_NE(scene_error(j).find("objects[0].optical_thickness"), std::string::npos) << bad << ": " << scene_error(j);
+  }
+}

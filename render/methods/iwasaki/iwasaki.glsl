@@ -9,14 +9,16 @@
 // hemisphere_grid.glsl before it.
 // Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
 // fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
-#define MAX_SGS 40
 #define MAX_TABLES 512
 const float HALF_PI = 1.57079632679490;
 
 uniform vec3 u_eye;
+#ifndef SG_LIGHTING_GLSL  // the same SG uniforms as sg_lighting.glsl, when a program links both (sheer)
+#define MAX_SGS 40
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
 uniform vec3 u_sg_amplitude[MAX_SGS];
+#endif
 uniform float u_sg_sigma[MAX_SGS];    // σ_k = √(2/λ_k)
 uniform ivec2 u_sg_levels[MAX_SGS];   // the two λ levels of T (WeightingTables::level_weights)
 uniform float u_sg_level_w[MAX_SGS];  // weight of the second

@@ -19,11 +19,9 @@ constexpr int kMaxSgs = 40;  // MAX_SGS in iwasaki.glsl
 
 // Per pixel: the cloth's own draw. Per vertex: the fragment pass over the vertex texels
 // (vertex_pass.h); the draw that interpolates its results is draw_program_.
-GlProgram make_program(IwasakiCloth::Evaluation e) {
-  if (e == IwasakiCloth::Evaluation::per_vertex)
-    return GlProgram(fullscreen_triangle_vs(),
-                     program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"}));
-  return GlProgram(program_source({"iwasaki.vert"}), program_source({"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"}));
+GlProgram make_program(IwasakiCloth::Evaluation e, const IwasakiShaders& s) {
+  if (e == IwasakiCloth::Evaluation::per_vertex) return GlProgram(fullscreen_triangle_vs(), program_source(s.pass_fs));
+  return GlProgram(program_source(s.pixel_vs), program_source(s.pixel_fs));
 }
 
 // The SGs a draw shades with: a fit's empty lobes (zero amplitude) do no work.
@@ -42,6 +40,16 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 }
 }  // namespace
 
+IwasakiShaders iwasaki_shaders() {
+  IwasakiShaders s;
+  s.pixel_vs = {"iwasaki.vert"};
+  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"};
+  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
+  s.vertex_vs = {"iwasaki_vertex.vert"};
+  s.vertex_fs = {"iwasaki_vertex.frag"};
+  return s;
+}
+
 struct IwasakiCloth::Object {
   explicit Object(GpuMesh m) : mesh(std::move(m)) {}
   GpuMesh mesh;
@@ -56,10 +64,10 @@ struct IwasakiCloth::Object {
   SgLighting computed_for;
 };
 
-IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation)
-    : data_(std::move(data)), evaluation_(evaluation), program_(make_program(evaluation)) {
+IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation, IwasakiShaders shaders)
+    : data_(std::move(data)), evaluation_(evaluation), shaders_(std::move(shaders)), program_(make_program(evaluation, shaders_)) {
   if (evaluation_ == Evaluation::per_vertex)
-    draw_program_ = std::make_unique<GlProgram>(program_source({"iwasaki_vertex.vert"}), program_source({"iwasaki_vertex.frag"}));
+    draw_program_ = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs), program_source(shaders_.vertex_fs));
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
@@ -160,6 +168,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
   }
   glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
+  if (shaders_.upload) shaders_.upload(program_, o.bsdf->fabric(), drawn);
   if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
     o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn));
     o.computed_for = drawn;

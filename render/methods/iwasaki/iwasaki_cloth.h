@@ -6,10 +6,12 @@
 // cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
 // interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in a fragment pass with one texel
 // per vertex, vertex_pass.h).
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,10 +28,23 @@
 
 namespace weft::gpu {
 
+// The programs a method drawn on seed 000's data runs (embedded shader names, in link order),
+// and the uniforms it adds: seed 000's own (iwasaki_shaders()), or a layer over it (sheer).
+struct IwasakiShaders {
+  std::vector<std::string_view> pixel_vs, pixel_fs;    // per pixel: the cloth's draw
+  std::vector<std::string_view> pass_fs;               // per vertex: the pass (on fullscreen_triangle_vs())
+  std::vector<std::string_view> vertex_vs, vertex_fs;  // per vertex: the draw interpolating the pass's results
+  // Uniforms of one object's draw beyond seed 000's, on the program in use (per pixel: the draw;
+  // per vertex: the pass), given its fabric and the SGs drawn (zero-amplitude lobes left out).
+  std::function<void(const GlProgram&, const Fabric&, const SgLighting&)> upload;
+};
+IwasakiShaders iwasaki_shaders();
+
 class IwasakiCloth : public ClothMethod {
 public:
   enum class Evaluation { per_pixel, per_vertex };
-  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation = Evaluation::per_pixel);
+  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation = Evaluation::per_pixel,
+                        IwasakiShaders shaders = iwasaki_shaders());
   ~IwasakiCloth() override;
   size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) override;
   void set_fabric(size_t handle, const Fabric& fabric) override;
@@ -47,6 +62,7 @@ private:
   const WeightingTablesTexture& tables_for(const Fabric& fabric);
   std::shared_ptr<const IwasakiBundleData> data_;
   Evaluation evaluation_;
+  IwasakiShaders shaders_;
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
   std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
   std::unique_ptr<KappaTexture> kappa_;

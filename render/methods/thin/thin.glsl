@@ -1,9 +1,13 @@
 // Method `thin` (seed 004): optically thin layer — alpha e^{−τ/μ}, single-scatter diffuse
 // reflection/transmission from the SG irradiance on both sides, composed over a reflection
-// method: the program links one definition of thin_reflection() (thin_over_sgpoint.glsl now;
-// an iwasaki one plugs in the same way). Mirrors methods/thin/thin.cpp; needs sg_lighting.glsl.
+// method: the program links one definition of thin_reflection() and of thin_light_visibility()
+// (thin_over_sgpoint.glsl for `thin`; methods/sheer/sheer.glsl for seed 000 with its visibility).
+// Mirrors methods/thin/thin.cpp; needs sg_lighting.glsl.
 // Radiance reflected by the cloth's own reflection method, n facing the viewer.
 vec3 thin_reflection(vec3 n, vec3 u, vec3 wo);
+// Share of SG k's light reaching the layer on n's side (x) and on the far side (y): thin.h's
+// ThinSideVisibility.
+vec2 thin_light_visibility(int k, vec3 n);
 
 uniform float u_thin_tau;
 uniform vec3 u_thin_albedo;
@@ -29,10 +33,11 @@ vec3 thin_scatter(vec3 n, vec3 wo) {
   if (mu <= 0.0) return vec3(0.0);
   vec3 l = vec3(0.0);
   for (int k = 0; k < u_sg_count; ++k) {
+    vec2 v = thin_light_visibility(k, n);
     float c = dot(u_sg_axis[k], n);
     float mu_front = sg_effective_cosine(u_sg_sharpness[k], c), mu_back = sg_effective_cosine(u_sg_sharpness[k], -c);
-    l += sg_irradiance(k, n) * thin_reflection_kernel(mu, mu_front);
-    l += sg_irradiance(k, -n) * thin_transmission_kernel(mu, mu_back);
+    l += v.x * sg_irradiance(k, n) * thin_reflection_kernel(mu, mu_front);
+    l += v.y * sg_irradiance(k, -n) * thin_transmission_kernel(mu, mu_back);
   }
   return l;
 }

@@ -12,11 +12,13 @@
 //    Runtime: per SG and side, E_k from the SG irradiance and μ₀ the lobe's G-weighted mean
 //    cosine on that side (sg_effective_cosine, methods/sg_lights.h). Reference (reference/thin_quadrature.h): ∫ G(ω)·μ₀·K(μ₀) dω exactly.
 //  - Composition: source = (1 − α)·L_reflection + L_scatter, the reflection method's radiance
-//    scaled by the layer's coverage of the pixel (sgpoint now; iwasaki plugs in here).
-// Parameters: the presets carry no thickness, so τ and A are method settings: τ = 0.5 (seed
-// 004: within 1 % of the multiple-scattering answer for τ ≤ 0.2, their flag used τ = 2), and A
-// the coverage-weighted thread colour normalised to a maximum of 0.8 (a light, thin fabric
-// scatters most of what it stops). Mirrored by methods/thin/thin.glsl.
+//    scaled by the layer's coverage of the pixel (sgpoint for `thin`; seed 000 with its
+//    visibility for `sheer`, methods/sheer/sheer.h).
+// Parameters: τ is the fabric's optical_thickness (a sheer preset such as polyester_voile, or a
+// scene's override); the Table II presets carry none and get τ = 0.5 (seed 004: within 1 % of
+// the multiple-scattering answer for τ ≤ 0.2, their flag used τ = 2). A is the coverage-weighted
+// thread colour normalised to a maximum of 0.8 (a light, thin fabric scatters most of what it
+// stops). Mirrored by methods/thin/thin.glsl.
 #include <span>
 
 #include "core/cloth_bsdf.h"
@@ -29,7 +31,10 @@ struct ThinParams {
   dvec3 albedo{0.8};
 };
 
-ThinParams thin_params(const Fabric& fabric, double tau = 0.5);
+// τ given to a fabric without an optical thickness of its own.
+inline constexpr double kDefaultThinTau = 0.5;
+// The layer of `fabric`: τ its optical_thickness (kDefaultThinTau when it has none), A as above.
+ThinParams thin_params(const Fabric& fabric);
 
 // e^{−τ/μ}, μ floored at 1e-4.
 double thin_alpha(const ThinParams& p, double mu);
@@ -37,8 +42,16 @@ double thin_alpha(const ThinParams& p, double mu);
 dvec3 thin_reflection_kernel(const ThinParams& p, double mu, double mu0);
 dvec3 thin_transmission_kernel(const ThinParams& p, double mu, double mu0);
 
-// Single-scattered radiance toward ω_o (n facing the viewer) from SG light on both sides.
-dvec3 thin_scatter(const ThinParams& p, const dvec3& n, const dvec3& wo, std::span<const SphericalGaussian> sgs);
+// Share of one SG's light that reaches the layer on each side (1: unoccluded): `front` on n's
+// side (the viewer's), `back` on the far side. A method with visibility gives one per SG.
+struct ThinSideVisibility {
+  double front = 1.0, back = 1.0;
+};
+
+// Single-scattered radiance toward ω_o (n facing the viewer) from SG light on both sides, each
+// SG's irradiance on a side scaled by its share there (`visibility`: one per SG, or empty).
+dvec3 thin_scatter(const ThinParams& p, const dvec3& n, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                   std::span<const ThinSideVisibility> visibility = {});
 
 struct ThinShade {
   dvec3 source{0.0};  // premultiplied: added to α·L_behind
@@ -47,7 +60,7 @@ struct ThinShade {
 // The layer over any reflection method: `reflection` is that method's radiance at the frame
 // (n facing ω_o). thin_radiance below is this with sgpoint.
 ThinShade thin_compose(const ThinParams& p, const dvec3& n, const dvec3& wo, std::span<const SphericalGaussian> sgs,
-                       const dvec3& reflection);
+                       const dvec3& reflection, std::span<const ThinSideVisibility> visibility = {});
 
 // The whole `thin` method over sgpoint reflection; `frame.n` is turned to face ω_o.
 ThinShade thin_radiance(const ClothBsdf& bsdf, const ThinParams& p, SurfaceFrame frame, const dvec3& wo,

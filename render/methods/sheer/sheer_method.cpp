@@ -1,0 +1,74 @@
+#include "methods/sheer/sheer_method.h"
+
+#include <memory>
+
+#include "methods/cpu_evaluation.h"
+#include "methods/iwasaki/iwasaki_cloth.h"
+#include "methods/sheer/sheer.h"
+#include "methods/thin/thin_method.h"
+
+namespace weft::methods {
+
+namespace {
+const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl",
+                                             "iwasaki.glsl", "thin.glsl", "sheer.glsl"};
+
+std::vector<std::string_view> with(std::string_view main) {
+  std::vector<std::string_view> parts = kGlsl;
+  parts.push_back(main);
+  return parts;
+}
+
+gpu::IwasakiShaders sheer_shaders() {
+  gpu::IwasakiShaders s;
+  s.pixel_vs = {"iwasaki.vert"};
+  s.pixel_fs = with("sheer.frag");
+  s.pass_fs = with("sheer_vertex_pass.frag");
+  s.vertex_vs = {"sheer_vertex.vert"};
+  s.vertex_fs = {"sheer_vertex.frag"};
+  // sg_lighting.glsl's sharpnesses (the layer's irradiance) and the layer's τ and A.
+  s.upload = [](const gpu::GlProgram& program, const Fabric& fabric, const SgLighting& drawn) {
+    std::vector<float> sharpness;
+    for (const auto& g : drawn) sharpness.push_back(float(g.sharpness));
+    if (!sharpness.empty()) glUniform1fv(program.uniform("u_sg_sharpness"), GLsizei(sharpness.size()), sharpness.data());
+    gpu::upload_thin(program, thin_params(fabric));
+  };
+  return s;
+}
+
+RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
+  RuntimeMethod m;
+  m.see_through = true;
+  m.seed000 = Seed000Tables::required;
+  m.reference = BenchReference::thin_layer;
+  m.bench_scenes = {"curtain"};
+  m.glsl = kGlsl;
+  m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) {
+    return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, sheer_shaders());
+  };
+  return m;
+}
+}  // namespace
+
+RuntimeMethod sheer_method() {
+  RuntimeMethod m = sheer_entry(gpu::IwasakiCloth::Evaluation::per_pixel);
+  m.name = "sheer";
+  m.ladder_position = 7;
+  m.stability_position = 6;
+  m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+              const TableSource& tables) {
+    const TableBsdf t = stress_table_bsdf(b.fabric(), tables);
+    const ThinShade s = sheer_radiance(t.bsdf, *t.tables, thin_params(b.fabric()), f, wo, sgs);
+    return CpuShade{s.source, s.alpha};
+  };
+  return m;
+}
+
+RuntimeMethod sheer_vertex_method() {
+  RuntimeMethod m = sheer_entry(gpu::IwasakiCloth::Evaluation::per_vertex);
+  m.name = "sheer_vertex";
+  m.ladder_position = 8;
+  return m;
+}
+
+}  // namespace weft::methods

@@ -1,0 +1,24 @@
+// Method `sheer_vertex`, step 1 (methods/iwasaki/vertex_pass.h): the sheer layer (sheer.glsl) at
+// every mesh vertex, one fragment per vertex i at texel (i mod W, i div W), with the vertex's own
+// SDF values: premultiplied source and alpha. sheer_vertex.vert reads them by gl_VertexID.
+uniform highp sampler2D u_vertex_position;
+uniform highp sampler2D u_vertex_normal;
+uniform highp sampler2D u_vertex_warp;
+uniform int u_vertex_width;
+uniform int u_vertex_count;
+out vec4 o_radiance;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  int i = p.y * u_vertex_width + p.x;
+  if (i >= u_vertex_count) {
+    o_radiance = vec4(0.0);
+    return;
+  }
+  sheer_position = texelFetch(u_vertex_position, p, 0).xyz;
+  sheer_mesh_normal = texelFetch(u_vertex_normal, p, 0).xyz;
+  sheer_warp = texelFetch(u_vertex_warp, p, 0).xyz;
+  sheer_corners = ivec3(i);
+  sheer_bary = vec3(1.0, 0.0, 0.0);
+  vec3 n = normalize(sheer_mesh_normal);
+  o_radiance = thin_radiance(n, normalize(sheer_warp - dot(sheer_warp, n) * n), normalize(u_eye - sheer_position));
+}
