@@ -63,6 +63,13 @@ CommandAction add_bench_command(CLI::App& app) {
   return [a] {
     a->assets = assets_dir();
     a->envs = join_env_specs(a->envs);
+    for (const auto& env : a->envs) {  // a bad spec stops the run before any bake
+      try {
+        if (env != "scene") parse_env_spec(env);
+      } catch (const EnvSpecError& e) {
+        throw UsageError(std::string("--envs: ") + e.what());
+      }
+    }
     try {
       return bench::run_bench(*a);
     } catch (const bench::InvalidOption& e) {
