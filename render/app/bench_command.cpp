@@ -4,6 +4,7 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "bench/bench_run.h"
+#include "lighting/env_spec.h"
 
 namespace weft {
 
@@ -14,11 +15,17 @@ CommandAction add_bench_command(CLI::App& app) {
                 "Smoke run: swatch/linen_plain at 64x48, reference SG grid 4, 8 tangent samples, "
                 "iwasaki tables grid 12 and SDF 16, 2 stress points per case; the target-error row, and "
                 "sweeps of tangent samples 1,3 and SVD error 0.1,0.01 unless given");
+  sub->add_option("--sweep", a->sweep,
+                  "Preset: 'sky' (pillow and drape, linen and satin, procedural skies with the sun at 0-60 deg, "
+                  "bigger and hazier suns, the bundled maps turned 90 deg; iwasaki and iwasaki_vertex at 320x240; "
+                  "writes low_sun.csv/.md with the SG fit's irradiance error) or 'sky-smoke' (its smoke version)");
   sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
   sub->add_option("--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
   sub->add_option("--scenes", a->scenes, "Scenes: preset names or .json/.gltf/.glb paths")->delimiter(',')->capture_default_str();
   sub->add_option("--fabrics", a->fabrics, "Fabrics: preset names or .json paths ('scene': each scene's own)")->delimiter(',')->capture_default_str();
-  sub->add_option("--envs", a->envs, "Environment maps: names or .exr paths ('scene': each scene's own)")->delimiter(',')->capture_default_str();
+  sub->add_option("--envs", a->envs, "Environments: map names or .exr paths, NAME@DEG (rotated about +Z), "
+                  "sky:elev=E,size=S,haze=T,azim=A,albedo=G (procedural; its key=value items may follow "
+                  "it in this list) ('scene': each scene's own)")->delimiter(',')->capture_default_str();
   sub->add_option("--methods", a->methods, "GPU methods (default: all available)")->delimiter(',');
   sub->add_option("--speed-width", a->speed_width, "Speed: frame width")->capture_default_str();
   sub->add_option("--speed-height", a->speed_height, "Speed: frame height")->capture_default_str();
@@ -55,6 +62,14 @@ CommandAction add_bench_command(CLI::App& app) {
       ->delimiter(',');
   return [a] {
     a->assets = assets_dir();
+    a->envs = join_env_specs(a->envs);
+    for (const auto& env : a->envs) {  // a bad spec stops the run before any bake
+      try {
+        if (env != "scene") parse_env_spec(env);
+      } catch (const EnvSpecError& e) {
+        throw UsageError(std::string("--envs: ") + e.what());
+      }
+    }
     try {
       return bench::run_bench(*a);
     } catch (const bench::InvalidOption& e) {

@@ -7,7 +7,9 @@
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "app/asset_paths.h"
 #include "lighting/env_map.h"
+#include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/preview_png.h"
 #include "lighting/sg_fit.h"
@@ -42,7 +44,10 @@ int run_fit(const FitArgs& a) {
   EnvMapRepairs repairs;
   EnvMap map;
   try {
-    map = load_env_map(a.map, policy, &repairs);
+    map = is_env_spec(a.map) ? load_env(a.map, assets_dir() / "envmaps", policy, &repairs)
+                             : load_env_map(a.map, policy, &repairs);
+  } catch (const EnvSpecError& e) {
+    throw UsageError(e.what());
   } catch (const EnvMapError& e) {
     throw UsageError(e.what());  // a bad input file: exit code 2
   }
@@ -113,7 +118,7 @@ int run_fit(const FitArgs& a) {
 CommandAction add_fit_command(CLI::App& app) {
   auto a = std::make_shared<FitArgs>();
   CLI::App* sub = app.add_subcommand("fit", "Fit spherical Gaussians to an equirectangular OpenEXR environment map");
-  sub->add_option("map", a->map, "Environment map (.exr, equirectangular, +Z up, Blender orientation)")->required();
+  sub->add_option("map", a->map, "Environment map (.exr, equirectangular, +Z up, Blender orientation), NAME@DEG (rotated about +Z) or sky:elev=E,azim=A,size=S,haze=T,albedo=G")->required();
   sub->add_option("--count,-k", a->count, "Number of SGs K")->capture_default_str();
   sub->add_flag("--json", a->json, "Print the fit and its error as one JSON object");
   sub->add_option("--preview", a->preview, "Write a PNG: the map (left) and its fit (right), tone mapped");

@@ -4,6 +4,7 @@
 
 #include "bench/number_text.h"
 #include "lighting/env_map.h"
+#include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
 
 namespace weft::bench {
@@ -30,9 +31,15 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
   if (c.fabrics.empty()) throw InvalidOption("--scenes: " + scene_name + " has no cloth");
   c.fabric_label = fabric_arg == "scene" ? c.fabrics.begin()->first : fabric_arg;
   c.env = env_arg == "scene" ? c.scene.environment : env_arg;
-  const auto env_file = env_map_file(c.env, a.assets / "envmaps");
-  if (!std::filesystem::exists(env_file)) throw InvalidOption("--envs: no environment map " + env_file.string());
-  const EnvMap map = load_env_map(env_file, NonFinitePolicy::clamp, nullptr);
+  EnvMap map;
+  try {
+    const auto env_file = env_spec_file(c.env, a.assets / "envmaps");
+    if (!env_file.empty() && !std::filesystem::exists(env_file))
+      throw InvalidOption("--envs: no environment map " + env_file.string());
+    map = load_env(c.env, a.assets / "envmaps", NonFinitePolicy::clamp, nullptr);
+  } catch (const EnvSpecError& e) {
+    throw InvalidOption(std::string("--envs: ") + e.what());
+  }
   SgFitOptions fit;
   fit.count = a.sg_count;
   c.sgs = fit_sgs(map, fit);
@@ -41,7 +48,7 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
     const std::filesystem::path p(name);
     return p.has_parent_path() || p.has_extension() ? p.stem().string() : name;
   };
-  c.tag = label(scene_name) + "_" + label(c.fabric_label) + "_" + env_map_label(c.env);
+  c.tag = label(scene_name) + "_" + label(c.fabric_label) + "_" + env_spec_label(c.env);
   if (scene_name == kThinOccluderScene)
     c.shadow = std::make_shared<ShadowMask>(sun_shadow_mask(c.scene, c.sgs, a.width, a.height));
   return c;

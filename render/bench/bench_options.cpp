@@ -65,6 +65,7 @@ void validate(const BenchOptions& a) {
 std::string command_line(const BenchOptions& a) {
   std::ostringstream c;
   c << "weft bench";
+  if (!a.sweep.empty()) c << " --sweep " << a.sweep;
   if (a.quick) c << " --quick";
   else
     c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --envs " << joined(a.envs)

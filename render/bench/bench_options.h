@@ -16,6 +16,7 @@ public:
 
 struct BenchOptions {
   bool quick = false;
+  std::string sweep;  // a preset of scenes, maps and methods (sky_sweep.h): "sky", "sky-smoke"
   std::string out = "bench-out";
   std::string cache;  // default: <out>/reference-cache
   std::filesystem::path assets;  // scenes/, fabrics/, envmaps/

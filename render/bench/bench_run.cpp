@@ -13,6 +13,7 @@
 #include "bench/reference_set.h"
 #include "bench/report.h"
 #include "bench/row_measure.h"
+#include "bench/sky_sweep.h"
 #include "bench/stability.h"
 #include "bench/stopwatch.h"
 #include "bench/table_bakes.h"
@@ -72,6 +73,7 @@ std::vector<StabilityCell> stability_cells(const BenchOptions& a) {
 
 int run_bench(BenchOptions a) {
   apply_quick(a);
+  apply_sweep(a);
   validate(a);
   const auto available = gpu::method_names();
   const bool has_iwasaki = std::find(available.begin(), available.end(), "iwasaki") != available.end();
@@ -105,6 +107,7 @@ int run_bench(BenchOptions a) {
   write_results_csv(out, a, res);
   write_chart(out, a, res);
   write_report_md(out, a, res);
+  write_sky_sweep(out, a, res);
   std::cout << "{\"out\":\"" << a.out << "\",\"rows\":" << res.rows.size() << ",\"seconds\":" << fmt(res.seconds, 4)
             << ",\"csv\":\"" << (out / "results.csv").string() << "\",\"chart\":\"" << (out / "chart.png").string()
             << "\",\"report\":\"" << (out / "report.md").string() << "\"}\n";

@@ -275,7 +275,7 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
          "renderer,note,bundle_bytes,shadow_pixels,shadow_relative_rmse,shadow_brightness_ratio,band_brightness_ratio,"
          "lambert_relative_rmse,lambert_brightness_ratio\n";
   for (const auto& r : rows)
-    csv << r.scene << "," << r.fabric << "," << r.env << "," << r.method << "," << a.speed_width << "," << a.speed_height
+    csv << r.scene << "," << r.fabric << "," << (r.env.find(',') == std::string::npos ? r.env : "\"" + r.env + "\"") << "," << r.method << "," << a.speed_width << "," << a.speed_height
         << "," << fmt(r.ms, 6) << "," << r.frames << "," << a.width << "," << a.height << ","
         << (r.rmse >= 0 ? fmt(r.rmse, 6) : "") << "," << r.cloth_pixels << ",\"" << renderer << "\",\"" << r.note
         << "\"," << (r.bundle_bytes ? std::to_string(r.bundle_bytes) : "") << ","

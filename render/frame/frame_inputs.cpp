@@ -5,6 +5,7 @@
 
 #include "runtime/scene_bundle.h"
 #include "bundle/bundle_reader.h"
+#include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
 #include "reference/environment_samples.h"
@@ -49,11 +50,14 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   }
   in.env = a.env.empty() ? in.scene.environment : a.env;
 
-  const auto env_file = env_map_file(in.env, a.assets / "envmaps");
-  if (!std::filesystem::exists(env_file)) throw FrameInputError("--env: no environment map " + env_file.string());
   EnvMapRepairs repairs;
   try {
-    in.map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, &repairs));
+    const auto env_file = env_spec_file(in.env, a.assets / "envmaps");
+    if (!env_file.empty() && !std::filesystem::exists(env_file))
+      throw FrameInputError("--env: no environment map " + env_file.string());
+    in.map = std::make_shared<EnvMap>(load_env(in.env, a.assets / "envmaps", NonFinitePolicy::clamp, &repairs));
+  } catch (const EnvSpecError& e) {
+    throw FrameInputError(std::string("--env: ") + e.what());
   } catch (const EnvMapError& e) {
     throw FrameInputError(e.what());
   }

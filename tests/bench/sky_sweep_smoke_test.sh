@@ -1,0 +1,37 @@
+#!/bin/sh
+# Smoke test of `weft bench --sweep sky-smoke`: the swatch under a sun on the horizon, a larger
+# sun at 20° and a turned bundled map; low_sun.csv has a finite iwasaki and iwasaki_vertex error
+# per environment and the fit's irradiance error within the 3 % bound; bad specs exit 2.
+set -eu
+WEFT="$1"
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+expect_usage_error() {
+  set +e
+  "$WEFT" bench "$@" --out "$OUT/bad" >"$OUT/bad.log" 2>&1; rc=$?
+  set -e
+  [ "$rc" = 2 ] || fail "$* exited $rc, expected 2"
+}
+expect_usage_error --sweep bogus
+expect_usage_error --sweep sky-smoke --envs sky:elev=95
+expect_usage_error --sweep sky-smoke --envs sky:elev=5,colour=3
+grep -q "unknown sky parameter 'colour'" "$OUT/bad.log" || fail "message should name the unknown key"
+expect_usage_error --sweep sky-smoke --envs nosuchmap@90
+
+"$WEFT" bench --sweep sky-smoke --out "$OUT/s" >/dev/null || fail "sweep run"
+CSV="$OUT/s/low_sun.csv"
+[ -s "$CSV" ] || fail "no low_sun.csv"
+[ "$(tail -n +2 "$CSV" | wc -l)" = 3 ] || fail "expected 3 cases in low_sun.csv"
+grep -q '^swatch,linen_plain,"sky:elev=20,size=2",' "$CSV" || fail "the sky spec should be one quoted CSV field"
+grep -q '^swatch,linen_plain,studio@90,' "$CSV" || fail "no row for studio@90"
+# Fields after the quoted env: strip it first.
+sed 's/"[^"]*"/ENV/' "$CSV" | tail -n +2 | while IFS=, read -r scene fabric env iw vx fit probe ms; do
+  awk -v a="$iw" -v b="$vx" -v f="$fit" -v p="$probe" -v t="$ms" \
+    'BEGIN { exit !(a > 0 && a < 1 && b > 0 && b < 1 && f >= 0 && f <= 0.03 && p >= 0 && p < 0.1 && t > 0) }' ||
+    fail "$env: iwasaki $iw, vertex $vx, fit $fit, probe $probe, $ms ms"
+done
+grep -q "^Summary: iwasaki worst" "$OUT/s/low_sun.md" || fail "low_sun.md has no summary"
+grep -q "sky:elev=0" "$OUT/s/results.csv" || fail "results.csv has no sky row"
+echo "bench --sweep sky-smoke: ok"
