@@ -3,7 +3,6 @@
 // visibility PCA for occluded cloth, κ).
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 
 #include "app/asset_paths.h"
@@ -27,52 +26,12 @@ struct BakeArgs {
   int fit_sgs = 0;
   bool only_scene_fabrics = false;
   bool no_tables = false;
-  double target_error = 0.0;
   int sdf_resolution = 128;  // the paper's
   int lambertian_sdf_resolution = 64;
   int grid = 0;
   std::vector<int> samples;
-  std::string reference_cache;  // empty: $XDG_CACHE_HOME/weft/bake-references (or ~/.cache/...)
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h)
 };
-
-std::filesystem::path reference_cache_dir(const std::string& flag) {
-  if (!flag.empty()) return flag;
-  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "weft/bake-references";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache/weft/bake-references";
-  return std::filesystem::temp_directory_path() / "weft-bake-references";
-}
-
-// --target-error: the scene-level search (bake/scene_selection.h); its table on stderr.
-std::string add_selected_sections(bundle::BundleWriter& writer, const SceneBundleInput& in, const BakeArgs& a) {
-  SceneSelectionOptions o;
-  o.target_error = a.target_error;
-  o.cache = reference_cache_dir(a.reference_cache);
-  o.grid = a.grid;
-  o.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
-  o.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
-  std::map<std::string, Fabric> fabrics;
-  for (const auto& obj : in.scene.objects)
-    if (obj.material == Material::cloth && !fabrics.count(obj.fabric))
-      fabrics.emplace(obj.fabric, parse_fabric(in.fabrics.at(obj.fabric), obj.fabric));
-  const SceneSelection s = select_scene_settings(in.scene, fabrics, in.fabrics, in.sgs, o);
-  add_selection_sections(writer, s, o);
-  std::fprintf(stderr, "%-14s %s\n", "setting", s.description.c_str());
-  std::string views;
-  for (double e : s.chosen.view_errors) views += (views.empty() ? "" : " / ") + std::to_string(e).substr(0, 6);
-  std::fprintf(stderr, "%-14s %.4f (views %s) against target %g: %s\n", "image error", s.chosen.error, views.c_str(),
-               a.target_error,
-               s.reached ? "reached" : "UNREACHABLE with these knobs; took the closest setting");
-  std::fprintf(stderr, "%-14s %.2f MB (tables + visibility + kappa)\n", "bytes", s.chosen.bytes / 1e6);
-  std::fprintf(stderr, "%-14s %.1f ms per %dx%d frame (this machine)\n", "frame", s.chosen.ms, o.views.width,
-               o.views.height);
-  std::fprintf(stderr, "%-14s %zu settings measured on %zu views (%d references rendered, %d cached), %.1f s\n",
-               "search", s.tried.size(), s.chosen.view_errors.size(), s.references_rendered, s.references_cached,
-               s.seconds);
-  char buf[200];
-  std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", a.target_error, s.description.c_str(),
-                s.chosen.error, s.reached ? "" : " (unreachable: closest)");
-  return buf;
-}
 
 void progress(int step, int steps, const std::string& what) {
   std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str());
@@ -132,9 +91,11 @@ int run_bake(const BakeArgs& a) {
         throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
       opt.tangent_samples = {a.samples[0], a.samples[1]};
     }
+    SceneSelectionOptions select = a.select;
+    select.grid = a.grid, select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     try {
-      tables_line = a.target_error > 0 ? add_selected_sections(writer, in, a)
-                                       : add_baked_sections(writer, in.scene, in.fabrics, opt);
+      tables_line = select.target_error > 0 ? add_selected_sections(writer, in.scene, in.fabrics, in.sgs, select)
+                                            : add_baked_sections(writer, in.scene, in.fabrics, opt);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
@@ -167,27 +128,21 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--scene", a->scene, "Scene: a preset (assets/scenes/NAME.json) or a path to a .json scene or a .gltf/.glb file")->required();
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: each object's own; a glTF naming no cloth: every material)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
-  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")
-      ->check(CLI::Range(1, 64));
+  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
-  sub->add_option("--target-error", a->target_error,
-                  "Choose every cost knob (tangent samples, sharpness levels, SVD ranks, SDF resolution, PCA terms, "
-                  "per-vertex or per-pixel) so that the image error on the scene's views stays at most this, at the "
-                  "least cost, by measuring against reference renders (0: the paper's settings)")
+  sub->add_option("--target-error", a->select.target_error,
+                  "Choose every cost knob (samples, levels, SVD, SDF, PCA, per-vertex or per-pixel) for this image "
+                  "error on the scene's views at the least cost, measured against references (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
-  sub->add_option("--reference-cache", a->reference_cache,
-                  "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
+  sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
-      ->check(CLI::Range(8, 256))
-      ->capture_default_str();
+      ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution,
                   "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
-      ->check(CLI::Range(8, 256))
-      ->capture_default_str();
-  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")
-      ->check(CLI::Range(4, 128));
+      ->check(CLI::Range(8, 256))->capture_default_str();
+  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };
 }

@@ -10,6 +10,7 @@
 #include "bake/setting_truncation.h"
 #include "bake/sigmoid_gain.h"
 #include "bake/weighting_bake.h"
+#include "runtime/paper_tangent_samples.h"
 #include "bench/image_metrics.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
@@ -84,6 +85,34 @@ public:
     }
   }
   static constexpr int kKnobs = 6;
+
+  // The paper's setting (seed 000: its tangent samples, 9 levels, SVD 0.01, SDF 128², PCA
+  // 0.01 rad), each knob at the nearest value it offers (the next larger where none is equal).
+  SceneSetting paper(int method) const {
+    SceneSetting s;
+    s.method = method;
+    auto nearest = [](const auto& values, auto v) {
+      int i = 0;
+      while (i + 1 < int(values.size()) && values[i] < v) ++i;
+      return i;
+    };
+    for (int j = 0; j < 2; ++j) {
+      int n = 1;
+      for (const auto& [name, f] : fabrics_) n = std::max(n, paper_tangent_samples(f)[j]);
+      s.samples[j] = curved_[j] ? nearest(knobs_.tangent_samples, n) : 0;
+    }
+    int stride = 0;
+    while (stride + 1 < int(knobs_.level_strides.size()) && knobs_.level_strides[stride] > 1) ++stride;
+    s.levels = stride;
+    s.svd = 0;
+    while (s.svd + 1 < int(knobs_.svd_errors.size()) && knobs_.svd_errors[s.svd] > 0.01 + 1e-12) ++s.svd;
+    if (occluded_) {
+      s.sdf = nearest(knobs_.sdf_resolutions, 128);
+      s.pca = 0;
+      while (s.pca + 1 < int(knobs_.pca_errors.size()) && knobs_.pca_errors[s.pca] > 0.01 + 1e-12) ++s.pca;
+    }
+    return s;
+  }
 
   IwasakiBundleData data(const SceneSetting& s) {
     IwasakiBundleData d;
@@ -206,10 +235,11 @@ bool cheaper(const SettingMeasure& a, const SettingMeasure& b) {
   return a.bytes < b.bytes;
 }
 
-// One method's search: up from the cheapest setting, then back down. Returns its end point.
+// One method's search from the paper's setting: up while the error is above the target (the
+// step that lowers it most per byte added), then down while it holds (the step that saves the
+// most bytes). Returns its end point; above the target when the method cannot reach it.
 SettingMeasure search_method(Search& search, int method, double target) {
-  SceneSetting s;
-  s.method = method;
+  SceneSetting s = search.paper(method);
   SettingMeasure cur = search.measure(s);
   while (cur.error > target) {
     std::optional<SettingMeasure> best;
@@ -220,8 +250,7 @@ SettingMeasure search_method(Search& search, int method, double target) {
       const SettingMeasure m = search.measure(n);
       const double drop = cur.error - m.error;
       if (drop <= 0.0) continue;
-      const double added = std::max(double(m.bytes) - double(cur.bytes), 1024.0);
-      const double gain = drop / added;
+      const double gain = drop / std::max(double(m.bytes) - double(cur.bytes), 1024.0);
       if (gain > best_gain) best_gain = gain, best = m;
     }
     if (!best) break;  // no knob lowers the error any more: the method's floor
@@ -229,20 +258,18 @@ SettingMeasure search_method(Search& search, int method, double target) {
     cur = *best;
   }
   if (cur.error > target) {
-    // Best of this method: the least error measured with it.
     for (const SettingMeasure& m : search.tried())
       if (m.setting.method == method && m.error < cur.error) cur = m;
     return cur;
   }
-  // Down: the step that saves most bytes while the target holds, until none does.
   while (true) {
     std::optional<SettingMeasure> best;
     for (int k = 0; k < Search::kKnobs; ++k) {
       SceneSetting n = s;
       if (--Search::knob(n, k) < 0) continue;
       const SettingMeasure m = search.measure(n);
-      if (m.error > target) continue;
-      if (!best || m.bytes < best->bytes) best = m;
+      if (m.error > target || m.bytes > cur.bytes) continue;
+      if (!best || m.bytes < best->bytes || (m.bytes == best->bytes && m.error < best->error)) best = m;
     }
     if (!best) break;
     s = best->setting;

@@ -7,9 +7,11 @@
 // the least cost: frame time first (per-vertex before per-pixel; measured times within 10 %
 // count as equal), then bundle bytes.
 //
-// The search measures, it does not model: from the cheapest setting it steps the knob whose
-// next value lowers the error most per byte it adds, until the target is met, then steps knobs
-// back down while the target still holds. Tables are baked once per tangent-sample pair (at the
+// The search measures, it does not model: from the paper's setting it steps up the knob whose
+// next value lowers the error most per byte it adds while the target is missed, then steps
+// down the knob that saves the most bytes while the target still holds, until none does (the
+// error is not monotone in each knob at cheap settings, so the search starts where the paper
+// calibrated the method). Tables are baked once per tangent-sample pair (at the
 // richest λ levels and SVD error) and visibility once per SDF resolution (at the richest PCA
 // error); the cheaper values of the other knobs are cut from those bakes
 // (bake/setting_truncation.h), so the bundle written is the one measured. When no setting of
@@ -42,7 +44,7 @@ struct SelectionKnobs {
 };
 
 struct SceneSelectionOptions {
-  double target_error = 0.05;
+  double target_error = 0.0;   // must be > 0
   SelectionViewOptions views;
   std::filesystem::path cache;  // reference renders
   SelectionKnobs knobs;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -35,6 +36,12 @@ void add_camera(bench::InputHash& h, const Camera& c) {
 }
 
 }  // namespace
+
+std::filesystem::path default_reference_cache() {
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "weft/bake-references";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache/weft/bake-references";
+  return std::filesystem::temp_directory_path() / "weft-bake-references";
+}
 
 std::vector<Camera> selection_views(const Camera& camera, const SelectionViewOptions& o) {
   std::vector<Camera> views{camera};

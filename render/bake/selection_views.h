@@ -24,6 +24,9 @@ struct SelectionViewOptions {
   int sg_grid = 8, tangent_samples = 16;  // the reference's quadrature (as the bench's)
 };
 
+// $XDG_CACHE_HOME/weft/bake-references, else ~/.cache/weft/bake-references, else under /tmp.
+std::filesystem::path default_reference_cache();
+
 // The scene camera first, then the turned ones.
 std::vector<Camera> selection_views(const Camera& camera, const SelectionViewOptions& options);
 

@@ -99,7 +99,9 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
                      (c.svd - t.svd) + (c.sdf - t.sdf) + (c.pca - t.pca);
     const bool one_step_down = t.method == c.method && down == 1 && t.samples[0] <= c.samples[0] &&
                                t.samples[1] <= c.samples[1] && t.levels <= c.levels && t.svd <= c.svd;
-    if (one_step_down) EXPECT_GT(m.error, target) << describe(t, small_options(cache, target).knobs, false);
+    if (one_step_down) {
+      EXPECT_GT(m.error, target) << describe(t, small_options(cache, target).knobs, false);
+    }
   }
 }
 
