@@ -12,6 +12,7 @@
 #include "bake/bundle_fabrics.h"
 #include "bake/scene_bake.h"
 #include "bake/scene_bundle_writer.h"
+#include "bake/selection_bundle.h"
 #include "bundle/bundle_writer.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
@@ -25,11 +26,11 @@ struct BakeArgs {
   int fit_sgs = 0;
   bool only_scene_fabrics = false;
   bool no_tables = false;
-  double target_error = 0.0;
   int sdf_resolution = 128;  // the paper's
   int lambertian_sdf_resolution = 64;
   int grid = 0;
   std::vector<int> samples;
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h)
 };
 
 void progress(int step, int steps, const std::string& what) {
@@ -82,7 +83,6 @@ int run_bake(const BakeArgs& a) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
     opt.progress = open_progress_bar;
-    opt.target_error = a.target_error;
     opt.visibility.resolution = a.sdf_resolution;
     opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.grid;
@@ -91,8 +91,11 @@ int run_bake(const BakeArgs& a) {
         throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
       opt.tangent_samples = {a.samples[0], a.samples[1]};
     }
+    SceneSelectionOptions select = a.select;
+    select.grid = a.grid, select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     try {
-      tables_line = add_baked_sections(writer, in.scene, in.fabrics, opt);
+      tables_line = select.target_error > 0 ? add_selected_sections(writer, in.scene, in.fabrics, in.sgs, select)
+                                            : add_baked_sections(writer, in.scene, in.fabrics, opt);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
@@ -125,23 +128,21 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--scene", a->scene, "Scene: a preset (assets/scenes/NAME.json) or a path to a .json scene or a .gltf/.glb file")->required();
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: each object's own; a glTF naming no cloth: every material)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
-  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")
-      ->check(CLI::Range(1, 64));
+  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
-  sub->add_option("--target-error", a->target_error,
-                  "Choose tangent samples, sharpness levels and SVD ranks for this error (0: the paper's settings)")
+  sub->add_option("--target-error", a->select.target_error,
+                  "Choose every cost knob (samples, levels, SVD, SDF, PCA, per-vertex or per-pixel) for this image "
+                  "error on the scene's views at the least cost, measured against references (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
+  sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
-      ->check(CLI::Range(8, 256))
-      ->capture_default_str();
+      ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution,
                   "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
-      ->check(CLI::Range(8, 256))
-      ->capture_default_str();
-  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")
-      ->check(CLI::Range(4, 128));
+      ->check(CLI::Range(8, 256))->capture_default_str();
+  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };
 }

@@ -1,0 +1,324 @@
+#include "bake/scene_selection.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "bake/setting_truncation.h"
+#include "bake/sigmoid_gain.h"
+#include "bake/weighting_bake.h"
+#include "runtime/paper_tangent_samples.h"
+#include "bench/image_metrics.h"
+#include "gl/offscreen_target.h"
+#include "gpu/egl_context.h"
+#include "gpu/scene_renderer.h"
+
+namespace weft {
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+bool straight(const Fabric& f, int thread) {
+  const auto& o = f.threads[thread].curve.offsets_deg();
+  return std::all_of(o.begin(), o.end(), [&](double x) { return x == o.front(); });
+}
+
+size_t visibility_bytes(const ObjectVisibility& v) {
+  return 4 * (v.mean.size() + v.basis.size() + v.coefficients.size());
+}
+
+// The search's state: bakes by what they depend on, measures by setting, one GLES context.
+class Search {
+public:
+  Search(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
+         const ViewReferences& refs, const SceneSelectionOptions& o)
+      : scene_(scene), fabrics_(fabrics), sgs_(sgs), refs_(refs), o_(o), knobs_(o.knobs),
+        ctx_(gpu::EglContext::headless()), target_(o.views.width, o.views.height) {
+    for (int j = 0; j < 2; ++j)
+      for (const auto& [name, f] : fabrics_) curved_[j] = curved_[j] || !straight(f, j);
+    views_ = refs.cameras;
+    for (const auto& o2 : scene_.objects)
+      if (o2.material == Material::cloth) cloth_.push_back(fabrics_.at(o2.fabric));
+    // Occluded at all? The cheapest SDF tells (an unoccluded scene stores no visibility).
+    occluded_ = !visibility(0).empty();
+    if (occluded_) {
+      const auto t0 = std::chrono::steady_clock::now();
+      kappa_ = fit_sigmoid_gain_table(SigmoidGainTableSpec{});
+      say("kappa table fitted (" + number(std::round(since(t0) * 10) / 10) + " s)");
+    }
+  }
+
+  bool occluded() const { return occluded_; }
+  bool curved(int thread) const { return curved_[thread]; }
+
+  // Index limits of the knobs that matter for this scene (0: fixed at the first value).
+  int knob_count(int k) const {
+    switch (k) {
+      case 0: return curved_[0] ? int(knobs_.tangent_samples.size()) : 1;
+      case 1: return curved_[1] ? int(knobs_.tangent_samples.size()) : 1;
+      case 2: return int(knobs_.level_strides.size());
+      case 3: return int(knobs_.svd_errors.size());
+      case 4: return occluded_ ? int(knobs_.sdf_resolutions.size()) : 1;
+      default: return occluded_ ? int(knobs_.pca_errors.size()) : 1;
+    }
+  }
+  static int& knob(SceneSetting& s, int k) {
+    switch (k) {
+      case 0: return s.samples[0];
+      case 1: return s.samples[1];
+      case 2: return s.levels;
+      case 3: return s.svd;
+      case 4: return s.sdf;
+      default: return s.pca;
+    }
+  }
+  static constexpr int kKnobs = 6;
+
+  // The paper's setting (seed 000: its tangent samples, 9 levels, SVD 0.01, SDF 128², PCA
+  // 0.01 rad), each knob at the nearest value it offers (the next larger where none is equal).
+  SceneSetting paper(int method) const {
+    SceneSetting s;
+    s.method = method;
+    auto nearest = [](const auto& values, auto v) {
+      int i = 0;
+      while (i + 1 < int(values.size()) && values[i] < v) ++i;
+      return i;
+    };
+    for (int j = 0; j < 2; ++j) {
+      int n = 1;
+      for (const auto& [name, f] : fabrics_) n = std::max(n, paper_tangent_samples(f)[j]);
+      s.samples[j] = curved_[j] ? nearest(knobs_.tangent_samples, n) : 0;
+    }
+    int stride = 0;
+    while (stride + 1 < int(knobs_.level_strides.size()) && knobs_.level_strides[stride] > 1) ++stride;
+    s.levels = stride;
+    s.svd = 0;
+    while (s.svd + 1 < int(knobs_.svd_errors.size()) && knobs_.svd_errors[s.svd] > 0.01 + 1e-12) ++s.svd;
+    if (occluded_) {
+      s.sdf = nearest(knobs_.sdf_resolutions, 128);
+      s.pca = 0;
+      while (s.pca + 1 < int(knobs_.pca_errors.size()) && knobs_.pca_errors[s.pca] > 0.01 + 1e-12) ++s.pca;
+    }
+    return s;
+  }
+
+  IwasakiBundleData data(const SceneSetting& s) {
+    IwasakiBundleData d;
+    for (const auto& [name, f] : fabrics_)
+      d.tables.emplace(name, truncate_tables(tables(name, s.samples), knobs_.svd_errors[s.svd],
+                                             knobs_.level_strides[s.levels]));
+    if (occluded_) {
+      for (const auto& [object, v] : visibility(s.sdf))
+        d.visibility.emplace(object, truncate_visibility(v, knobs_.pca_errors[s.pca]));
+      d.kappa = kappa_;
+    }
+    return d;
+  }
+
+  const SettingMeasure& measure(const SceneSetting& s) {
+    if (auto it = measured_.find(s); it != measured_.end()) return it->second;
+    auto bundle = std::make_shared<const IwasakiBundleData>(data(s));
+    SettingMeasure m;
+    m.setting = s;
+    for (const auto& [name, t] : bundle->tables) m.bytes += t.bytes();
+    for (const auto& [object, v] : bundle->visibility) m.bytes += visibility_bytes(v);
+    if (bundle->kappa) m.bytes += 4 * bundle->kappa->normalized_gains().size();
+    ctx_.make_current();
+    gpu::SceneRenderer renderer(scene_, cloth_, gpu::parse_method(knobs_.methods[s.method]), 16, bundle);
+    renderer.set_lighting(sgs_);
+    target_.bind();
+    const int w = o_.views.width, h = o_.views.height;
+    for (size_t v = 0; v < views_.size(); ++v) {
+      renderer.draw(views_[v], w, h);
+      glFinish();
+      if (v == 0 && o_.timed_frames > 0) {
+        std::vector<double> ms;
+        for (int i = 0; i < o_.timed_frames; ++i) {
+          const auto t0 = std::chrono::steady_clock::now();
+          renderer.draw(views_[v], w, h);
+          glFinish();
+          ms.push_back(1e3 * since(t0));
+        }
+        std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+        m.ms = ms[ms.size() / 2];
+      }
+      const Image img = gpu::read_linear_image(w, h);
+      const double e = bench::cloth_error(img, refs_.images[v].image, refs_.images[v].kinds).relative_rmse;
+      m.view_errors.push_back(e);
+      m.error = std::max(m.error, e);
+    }
+    char buf[160];
+    std::snprintf(buf, sizeof buf, ": error %.4f, %.2f MB, %.1f ms", m.error, m.bytes / 1e6, m.ms);
+    say(describe(s, knobs_, occluded_) + buf);
+    tried_.push_back(m);
+    return measured_.emplace(s, std::move(m)).first->second;
+  }
+
+  const std::vector<SettingMeasure>& tried() const { return tried_; }
+  void say(const std::string& line) const {
+    if (o_.log) o_.log(line);
+  }
+
+private:
+  const Scene& scene_;
+  const std::map<std::string, Fabric>& fabrics_;
+  const SgLighting& sgs_;
+  const ViewReferences& refs_;
+  const SceneSelectionOptions& o_;
+  const SelectionKnobs& knobs_;
+  std::array<bool, 2> curved_{false, false};
+  std::vector<Camera> views_;
+  std::vector<Fabric> cloth_;
+  bool occluded_ = false;
+  std::optional<SigmoidGainTable> kappa_;
+  std::map<std::pair<std::string, std::array<int, 2>>, WeightingTables> tables_;
+  std::map<int, std::map<size_t, ObjectVisibility>> visibility_;
+  std::map<SceneSetting, SettingMeasure> measured_;
+  std::vector<SettingMeasure> tried_;
+  gpu::EglContext ctx_;
+  gpu::OffscreenTarget target_;
+
+  // Tables of one fabric at a tangent-sample pair (knob indices), at the richest levels and SVD error.
+  const WeightingTables& tables(const std::string& fabric, std::array<int, 2> samples) {
+    const Fabric& f = fabrics_.at(fabric);
+    std::array<int, 2> n{};
+    for (int j = 0; j < 2; ++j) n[j] = straight(f, j) ? 1 : knobs_.tangent_samples[samples[j]];
+    const auto key = std::make_pair(fabric, n);
+    if (auto it = tables_.find(key); it != tables_.end()) return it->second;
+    BakeSettings b;
+    b.tangent_samples = n;
+    b.svd_error = *std::min_element(knobs_.svd_errors.begin(), knobs_.svd_errors.end());
+    if (o_.grid > 0) b.xi_resolution = b.wo_resolution = b.wi_resolution = o_.grid;
+    const auto t0 = std::chrono::steady_clock::now();
+    WeightingTables t = bake_weighting_tables(f, b);
+    say("tables " + fabric + " " + std::to_string(n[0]) + "+" + std::to_string(n[1]) + " samples baked (" +
+        number(std::round(since(t0) * 10) / 10) + " s)");
+    return tables_.emplace(key, std::move(t)).first->second;
+  }
+
+  // Every occluded object's visibility at an SDF resolution (knob index), at the richest PCA error.
+  const std::map<size_t, ObjectVisibility>& visibility(int sdf) {
+    if (auto it = visibility_.find(sdf); it != visibility_.end()) return it->second;
+    std::map<size_t, ObjectVisibility> out;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+      SceneVisibilityOptions vo = o_.visibility;
+      vo.resolution = knobs_.sdf_resolutions[sdf];
+      vo.pca.target_rms_error = *std::min_element(knobs_.pca_errors.begin(), knobs_.pca_errors.end());
+      if (scene_.objects[i].material != Material::cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
+      if (auto v = bake_object_visibility(scene_, i, vo)) out.emplace(i, std::move(*v));
+    }
+    say("visibility at SDF " + std::to_string(knobs_.sdf_resolutions[sdf]) + " baked for " +
+        std::to_string(out.size()) + " object(s) (" + number(std::round(since(t0) * 10) / 10) + " s)");
+    return visibility_.emplace(sdf, std::move(out)).first->second;
+  }
+};
+
+// The cheaper of two settings that both hold the target: per-vertex before per-pixel, then
+// frame time (within 10 %: equal), then bytes.
+bool cheaper(const SettingMeasure& a, const SettingMeasure& b) {
+  if (a.setting.method != b.setting.method) return a.setting.method < b.setting.method;
+  if (a.ms < 0.9 * b.ms) return true;
+  if (b.ms < 0.9 * a.ms) return false;
+  return a.bytes < b.bytes;
+}
+
+// One method's search from the paper's setting: up while the error is above the target (the
+// step that lowers it most per byte added), then down while it holds (the step that saves the
+// most bytes). Returns its end point; above the target when the method cannot reach it.
+SettingMeasure search_method(Search& search, int method, double target) {
+  SceneSetting s = search.paper(method);
+  SettingMeasure cur = search.measure(s);
+  while (cur.error > target) {
+    std::optional<SettingMeasure> best;
+    double best_gain = 0.0;
+    for (int k = 0; k < Search::kKnobs; ++k) {
+      SceneSetting n = s;
+      if (++Search::knob(n, k) >= search.knob_count(k)) continue;
+      const SettingMeasure m = search.measure(n);
+      const double drop = cur.error - m.error;
+      if (drop <= 0.0) continue;
+      const double gain = drop / std::max(double(m.bytes) - double(cur.bytes), 1024.0);
+      if (gain > best_gain) best_gain = gain, best = m;
+    }
+    if (!best) break;  // no knob lowers the error any more: the method's floor
+    s = best->setting;
+    cur = *best;
+  }
+  if (cur.error > target) {
+    for (const SettingMeasure& m : search.tried())
+      if (m.setting.method == method && m.error < cur.error) cur = m;
+    return cur;
+  }
+  while (true) {
+    std::optional<SettingMeasure> best;
+    for (int k = 0; k < Search::kKnobs; ++k) {
+      SceneSetting n = s;
+      if (--Search::knob(n, k) < 0) continue;
+      const SettingMeasure m = search.measure(n);
+      if (m.error > target || m.bytes > cur.bytes) continue;
+      if (!best || m.bytes < best->bytes || (m.bytes == best->bytes && m.error < best->error)) best = m;
+    }
+    if (!best) break;
+    s = best->setting;
+    cur = *best;
+  }
+  return cur;
+}
+
+}  // namespace
+
+std::string describe(const SceneSetting& s, const SelectionKnobs& k, bool visibility) {
+  std::string d = k.methods[s.method] + ", " + std::to_string(k.tangent_samples[s.samples[0]]) + "+" +
+                  std::to_string(k.tangent_samples[s.samples[1]]) + " samples, " +
+                  std::to_string((BakeSettings{}.lambda_levels - 1) / k.level_strides[s.levels] + 1) + " levels, SVD " + number(k.svd_errors[s.svd]);
+  if (visibility)
+    d += ", SDF " + std::to_string(k.sdf_resolutions[s.sdf]) + ", PCA " + number(k.pca_errors[s.pca]) + " rad";
+  return d;
+}
+
+SceneSelection select_scene_settings(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                                     const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
+                                     const SceneSelectionOptions& o) {
+  if (!(o.target_error > 0.0)) throw std::invalid_argument("target error must be > 0");
+  const auto t0 = std::chrono::steady_clock::now();
+  SceneSelection out;
+  const ViewReferences refs = view_references(scene, fabrics, fabric_texts, sgs, o.views, o.cache, o.log);
+  out.references_rendered = refs.rendered, out.references_cached = refs.cached;
+  Search search(scene, fabrics, sgs, refs, o);
+  std::optional<SettingMeasure> chosen;
+  for (int m = 0; m < int(o.knobs.methods.size()); ++m) {
+    const SettingMeasure end = search_method(search, m, o.target_error);
+    if (end.error <= o.target_error) {
+      if (!chosen || cheaper(end, *chosen)) chosen = end;
+      break;  // a later method costs more frame time
+    }
+  }
+  out.reached = chosen.has_value();
+  if (!chosen) {
+    // Below what the method can reach: the least error measured, the cheaper on a tie.
+    for (const SettingMeasure& m : search.tried())
+      if (!chosen || m.error < chosen->error || (m.error == chosen->error && cheaper(m, *chosen))) chosen = m;
+  }
+  out.chosen = *chosen;
+  out.method = o.knobs.methods[chosen->setting.method];
+  out.description = describe(chosen->setting, o.knobs, search.occluded());
+  out.data = search.data(chosen->setting);
+  out.tried = search.tried();
+  out.seconds = since(t0);
+  return out;
+}
+
+}  // namespace weft

@@ -1,0 +1,93 @@
+#pragma once
+// "Model no more than the scene needs" (DESIGN.md §4) for a whole scene: the setting of every
+// cost knob of seed 000's method (tangent samples per thread, λ levels, SVD error, SDF
+// resolution, PCA error, per-vertex or per-pixel shading) is chosen so that the image error —
+// relative RMSE over the cloth pixels (bench/image_metrics.h) of the GPU frame against the
+// reference, the worst of the scene's views (bake/selection_views.h) — stays ≤ the target at
+// the least cost: frame time first (per-vertex before per-pixel; measured times within 10 %
+// count as equal), then bundle bytes.
+//
+// The search measures, it does not model: from the paper's setting it steps up the knob whose
+// next value lowers the error most per byte it adds while the target is missed, then steps
+// down the knob that saves the most bytes while the target still holds, until none does (the
+// error is not monotone in each knob at cheap settings, so the search starts where the paper
+// calibrated the method). Tables are baked once per tangent-sample pair (at the
+// richest λ levels and SVD error) and visibility once per SDF resolution (at the richest PCA
+// error); the cheaper values of the other knobs are cut from those bakes
+// (bake/setting_truncation.h), so the bundle written is the one measured. When no setting of
+// a method reaches the target the next method is searched; when none does, the setting with
+// the least error is taken and `reached` is false.
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bake/scene_visibility.h"
+#include "bake/selection_views.h"
+#include "core/fabric.h"
+#include "core/spherical_gaussian.h"
+#include "runtime/iwasaki_bundle.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+// The values each knob may take, cheapest first.
+struct SelectionKnobs {
+  std::vector<int> tangent_samples{1, 2, 3, 4, 6, 8, 12, 16};  // per thread (a straight thread keeps 1)
+  std::vector<int> level_strides{4, 2, 1};                     // of the 9 baked levels: 3, 5, 9 levels
+  std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01, 0.005};
+  std::vector<int> sdf_resolutions{32, 64, 128};
+  std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS
+  std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // cheapest frame first
+};
+
+struct SceneSelectionOptions {
+  double target_error = 0.0;   // must be > 0
+  SelectionViewOptions views;
+  std::filesystem::path cache;  // reference renders
+  SelectionKnobs knobs;
+  int grid = 0;                 // > 0: T tables' direction grids n×n instead of the paper's 48 (tests)
+  SceneVisibilityOptions visibility;  // resolution and PCA target are the knobs'; the rest is kept
+  int timed_frames = 3;         // frames timed per setting (view 0, after a warm-up)
+  std::function<void(const std::string&)> log;  // progress lines
+};
+
+// One point of the search: an index into each knob's list.
+struct SceneSetting {
+  int method = 0;
+  std::array<int, 2> samples{0, 0};
+  int levels = 0, svd = 0, sdf = 0, pca = 0;
+  auto operator<=>(const SceneSetting&) const = default;
+};
+
+struct SettingMeasure {
+  SceneSetting setting;
+  double error = 0.0;               // the worst view's
+  std::vector<double> view_errors;  // per view
+  double ms = 0.0;                  // median frame time of view 0 at the views' size
+  size_t bytes = 0;                 // tables + visibility (+ κ when there is visibility)
+};
+
+struct SceneSelection {
+  SettingMeasure chosen;
+  bool reached = false;
+  std::string method;                  // the chosen setting's runtime method
+  std::string description;             // the chosen setting in words
+  std::vector<SettingMeasure> tried;   // in the order measured
+  IwasakiBundleData data;              // the chosen setting's tables, visibility and κ
+  int references_rendered = 0, references_cached = 0;
+  double seconds = 0.0;
+};
+
+// Describes a setting ("iwasaki_vertex, 3+3 samples, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad").
+std::string describe(const SceneSetting& s, const SelectionKnobs& knobs, bool visibility);
+
+// `fabric_texts` (preset → fabric file text) key the reference cache. Needs a headless GLES
+// context (EGL; llvmpipe will do). Throws std::invalid_argument for a target ≤ 0.
+SceneSelection select_scene_settings(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                                     const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
+                                     const SceneSelectionOptions& options);
+
+}  // namespace weft

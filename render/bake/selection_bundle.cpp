@@ -1,0 +1,89 @@
+#include "bake/selection_bundle.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/iwasaki_bundle_writer.h"
+
+namespace weft {
+
+std::string selection_json(const SceneSelection& s, const SceneSelectionOptions& o) {
+  const SceneSetting& c = s.chosen.setting;
+  const SelectionKnobs& k = o.knobs;
+  nlohmann::json tangent = nlohmann::json::object();
+  for (const auto& [preset, t] : s.data.tables) tangent[preset] = {t.tangent_samples[0], t.tangent_samples[1]};
+  nlohmann::json j = {{"target_error", o.target_error},
+                      {"reached", s.reached},
+                      {"error", s.chosen.error},
+                      {"view_errors", s.chosen.view_errors},
+                      {"frame_ms", s.chosen.ms},
+                      {"bytes", s.chosen.bytes},
+                      {"method", s.method},
+                      {"setting", s.description},
+                      {"tangent_samples", tangent},
+                      {"lambda_levels", s.data.tables.empty() ? 0 : s.data.tables.begin()->second.level_count()},
+                      {"svd_error", k.svd_errors[c.svd]},
+                      {"views", {{"count", o.views.count}, {"spread_deg", o.views.spread_deg},
+                                 {"width", o.views.width}, {"height", o.views.height}}},
+                      {"settings_measured", s.tried.size()}};
+  if (!s.data.visibility.empty()) {
+    j["sdf_resolution"] = k.sdf_resolutions[c.sdf];
+    j["pca_rms_error"] = k.pca_errors[c.pca];
+  }
+  return j.dump();
+}
+
+std::string selection_summary(const SceneSelection& s, const SceneSelectionOptions& o) {
+  std::string views, out;
+  char buf[400];
+  for (double e : s.chosen.view_errors) {
+    std::snprintf(buf, sizeof buf, "%s%.4f", views.empty() ? "" : " / ", e);
+    views += buf;
+  }
+  std::snprintf(buf, sizeof buf, "%-14s %s\n", "setting", s.description.c_str());
+  out += buf;
+  std::snprintf(buf, sizeof buf, "%-14s %.4f (views %s) against target %g: %s\n", "image error", s.chosen.error,
+                views.c_str(), o.target_error,
+                s.reached ? "reached" : "UNREACHABLE with these knobs; took the closest setting");
+  out += buf;
+  std::snprintf(buf, sizeof buf, "%-14s %.2f MB (tables + visibility + kappa)\n", "bytes", s.chosen.bytes / 1e6);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine)\n", "frame", s.chosen.ms,
+                o.views.width, o.views.height);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "%-14s %zu settings measured on %zu views (%d references rendered, %d cached), %.1f s\n",
+                "search", s.tried.size(), s.chosen.view_errors.size(), s.references_rendered, s.references_cached,
+                s.seconds);
+  return out + buf;
+}
+
+void add_selection_sections(bundle::BundleWriter& writer, const SceneSelection& s, const SceneSelectionOptions& o) {
+  add_iwasaki_sections(writer, s.data);
+  writer.add_json(kSelectionSection, selection_json(s, o));
+}
+
+}  // namespace weft
+
+namespace weft {
+
+std::string add_selected_sections(bundle::BundleWriter& writer, const Scene& scene,
+                                  const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
+                                  const SceneSelectionOptions& o) {
+  std::map<std::string, Fabric> fabrics;
+  for (const auto& obj : scene.objects)
+    if (obj.material == Material::cloth && !fabrics.count(obj.fabric))
+      fabrics.emplace(obj.fabric, parse_fabric(fabric_texts.at(obj.fabric), obj.fabric));
+  SceneSelectionOptions with = o;
+  if (with.cache.empty()) with.cache = default_reference_cache();
+  if (!with.log) with.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
+  const SceneSelection s = select_scene_settings(scene, fabrics, fabric_texts, sgs, with);
+  add_selection_sections(writer, s, with);
+  std::fputs(selection_summary(s, o).c_str(), stderr);
+  char buf[300];
+  std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", o.target_error, s.description.c_str(),
+                s.chosen.error, s.reached ? "" : " (unreachable: closest)");
+  return buf;
+}
+
+}  // namespace weft
