@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
-# End to end on a real kernel: boots Debian 12's kernel under QEMU (TCG) with this
-# machine's root shared read-only over virtio-9p, runs `weft run` on bochs' /dev/dri/card0 (real
-# DRM/KMS + GBM + EGL, Mesa kms_swrast) and the panel simulator as a real uhid device, turns a
-# knob, unplugs and replugs the panel, and checks the screen through QEMU's `screendump`.
+# End to end on a real kernel, from the Debian package: builds the .deb from BUILD_DIR's install
+# rules (CPack, prefix /usr), boots Debian 12's kernel under QEMU (TCG) with this machine's root
+# shared read-only over virtio-9p and the package's contents (dpkg-deb -x) laid over it, runs the
+# packaged /usr/bin/weft on bochs' /dev/dri/card0 (real DRM/KMS + GBM + EGL, Mesa kms_swrast) and
+# the packaged panel simulator as a real uhid device, turns a knob, unplugs and replugs the panel,
+# and checks the screen through QEMU's `screendump`.
 # How to run it and what it proves: tests/kiosk/KIOSK_VM.md.
 #
-# usage: kiosk_vm_test.sh WEFT WEFT_PANEL_SIM UHID_PANEL_TEST OUT_DIR
+# usage: kiosk_vm_test.sh WEFT BUILD_DIR UHID_PANEL_TEST OUT_DIR
+#   WEFT: the build tree's weft (bakes the bundle and renders the references on the host)
 # exit: 0 pass, 1 fail, 77 skipped (no qemu or no kernel package obtainable).
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/.." && pwd)
 [ $# -eq 4 ] || { sed -n 2,10p "$0"; exit 2; }
 weft=$(readlink -f "$1")
-sim=$(readlink -f "$2")
+build=$(readlink -f "$2")
 uhid_test=$(readlink -f "$3")
 mkdir -p "$4" || exit 2
 work=$(readlink -f "$4")
@@ -71,7 +74,7 @@ rm -rf "$ird" && mkdir -p "$ird"/{bin,proc,sys,dev,modules}
 cp /bin/busybox "$ird/bin/busybox"
 cp "$here/kiosk_vm/guest_init.sh" "$ird/init" && chmod +x "$ird/init"
 : >"$ird/modules/order"
-for m in virtio_pci 9pnet_virtio 9p bochs uhid hid_generic; do
+for m in virtio_pci 9pnet_virtio 9p overlay bochs uhid hid_generic; do
   modprobe -d "$kdir" -S "$kver" --show-depends "$m" >"$work/deps.txt" 2>&1 || fail "no module $m in $kver: $(cat "$work/deps.txt")"
   while read -r _ ko _; do
     name=$(basename "$ko")
@@ -82,7 +85,39 @@ for m in virtio_pci 9pnet_virtio 9p bochs uhid hid_generic; do
 done
 say "kernel $kver, $(wc -l <"$ird/modules/order") modules for the initramfs"
 
-# 4. On the host: the bundle, the knob scripts, and the headless reference renders the VM's
+# 4. The Debian package: the files of `./setup.sh package`'s .deb (the same install rules, run with
+#    the /usr prefix into a staging folder; BUILD_DIR is not reconfigured) with its maintainer
+#    scripts and conffiles, built by dpkg-deb. (cpack itself first builds every target of the tree,
+#    tests included; this needs only the installed programs built.) The guest unpacks the .deb
+#    over its root (kiosk_vm/guest_init.sh).
+pkg="$work/package"
+rm -rf "$pkg" && mkdir -p "$pkg/root/DEBIAN"
+DESTDIR="$pkg/root" cmake --install "$build" --prefix /usr --strip >"$work/install.log" 2>&1 ||
+  fail "cmake --install $build failed (cmake --build $build first): $(tail -3 "$work/install.log")"
+cpack_value() { sed -n "s/^set($1 \"\(.*\)\")$/\1/p" "$build/CPackConfig.cmake"; }
+cat >"$pkg/root/DEBIAN/control" <<CONTROL
+Package: weft
+Version: $(cpack_value CPACK_PACKAGE_VERSION)
+Architecture: $(dpkg --print-architecture)
+Maintainer: $(cpack_value CPACK_PACKAGE_CONTACT)
+Depends: systemd, udev
+Description: $(cpack_value CPACK_PACKAGE_DESCRIPTION_SUMMARY)
+CONTROL
+install -m 0755 "$repo/../debian/debian/postinst" "$repo/../debian/debian/prerm" "$repo/../debian/debian/postrm" "$pkg/root/DEBIAN/"
+install -m 0644 "$build/debian/debian/conffiles" "$pkg/root/DEBIAN/"
+deb="$pkg/weft_$(cpack_value CPACK_PACKAGE_VERSION)_$(dpkg --print-architecture).deb"
+dpkg-deb --root-owner-group -b "$pkg/root" "$deb" >"$work/dpkg-deb.log" 2>&1 || fail "dpkg-deb -b failed: $(tail -3 "$work/dpkg-deb.log")"
+rm -rf "$pkg/root"
+dpkg-deb -c "$deb" | awk '{print $NF}' >"$work/package.files"
+for f in ./usr/bin/weft ./usr/libexec/weft/weft-offline ./usr/libexec/weft/weft-panel-sim \
+         ./usr/share/weft/fabrics/linen_plain.json ./usr/lib/systemd/system/weft.service; do
+  grep -qx -- "$f" "$work/package.files" || fail "the package has no ${f#.}"
+done
+prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build/CMakeCache.txt")
+[ "$prefix" = /usr ] || say "note: $build is configured for $prefix, so the package's unit and weft.conf name $prefix paths; the guest has no systemd and runs /usr/bin/weft itself"
+say "package $(basename "$deb") ($(du -k "$deb" | cut -f1) KiB, $(wc -l <"$work/package.files") entries)"
+
+# 5. On the host: the bundle, the knob scripts, and the headless reference renders the VM's
 #    screen is checked against (same bundle, same knob turns, same size, no VM).
 shots="$work/shots"
 rm -rf "$shots" "$work/ref" && mkdir -p "$shots" "$work/ref"
@@ -109,9 +144,11 @@ say "bundle and host reference renders ready"
 
 out="$work/out"
 rm -rf "$out" && mkdir -p "$out"
+# The guest runs the package's programs (its root is this machine's with the .deb unpacked over it);
+# the uhid unit test is a test binary, from the build tree.
 cat >"$out/guest.env" <<ENV
-WEFT=$weft
-SIM=$sim
+WEFT=/usr/bin/weft
+SIM=/usr/libexec/weft/weft-panel-sim
 UHID_TEST=$uhid_test
 BUNDLE=$bundle
 PANEL_CONFIG=$work/panel.json
@@ -119,10 +156,10 @@ TURN1=$work/turn1.knobs
 TURN2=$work/turn2.knobs
 WAIT_S=$VM_TIMEOUT
 ENV
-printf 'OUT=%s\nGUEST_STEPS=%s\n' "$out" "$here/kiosk_vm/guest_steps.sh" >"$ird/vm.env"
+printf 'OUT=%s\nGUEST_STEPS=%s\nDEB=%s\n' "$out" "$here/kiosk_vm/guest_steps.sh" "$deb" >"$ird/vm.env"
 (cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$work/initramfs.cpio.gz" || fail "cannot pack the initramfs"
 
-# 5. Boot. TCG (no KVM here): 2 vCPUs, 2 GiB; the bochs display (QEMU's -vga std) advertises
+# 6. Boot. TCG (no KVM here): 2 vCPUs, 2 GiB; the bochs display (QEMU's -vga std) advertises
 #    MODE_W x MODE_H as its preferred mode through EDID; the monitor answers screendump on a socket.
 mon="$work/monitor.sock"
 rm -f "$mon" "$work/console.log"
@@ -173,8 +210,11 @@ wait $qemu_pid
 trap - EXIT TERM INT
 say "VM powered off $(since_boot) s after qemu started"
 
-# 6. Verdict: the kiosk's own account, then the pictures.
+# 7. Verdict: the package was what ran, the kiosk's own account, then the pictures.
 status=0
+grep -q "^weft: /usr/bin/weft from the package" "$out/guest.log" || { say "FAIL: the guest did not run the package's /usr/bin/weft"; status=1; }
+grep -q '"radiance"' "$out/eval.json" 2>/dev/null ||
+  { say "FAIL: the packaged weft eval (weft-offline from /usr/libexec/weft, presets from /usr/share/weft) failed in the guest: $(tail -2 "$out/eval.log" 2>/dev/null)"; status=1; }
 echo "--- kiosk log (guest) ---"; grep -v 'stats: ' "$out/kiosk.log"; echo "---"
 [ "$(cat "$out/uhid_test.rc")" = 0 ] || { say "FAIL: the real-uhid unit test failed in the guest:"; cat "$out/uhid_test.log"; status=1; }
 grep -q "PASSED.*1 test" "$out/uhid_test.log" || { say "FAIL: the real-uhid unit test did not run in the guest"; status=1; }

@@ -5,7 +5,7 @@
 # (the host takes its screendump in between). Everything it learns goes to OUT/*.log.
 set -u
 OUT=$1
-. "$OUT/guest.env"  # WEFT SIM UHID_TEST BUNDLE PANEL_CONFIG TURN1 TURN2 WAIT_S
+. "$OUT/guest.env"  # WEFT SIM (the package's) UHID_TEST BUNDLE PANEL_CONFIG TURN1 TURN2 WAIT_S
 export HOME=/run TMPDIR=/run XDG_RUNTIME_DIR=/run  # /tmp is the host's, read-only
 up() { cut -d' ' -f1 /proc/uptime; }
 mark() {
@@ -52,7 +52,16 @@ wait_idle() {  # SINCE SECONDS
 stats_lines() { grep -c 'stats: ' "$OUT/kiosk.log"; }
 
 echo "guest: $(uname -r), $(nproc) CPUs, steps start at $(up) s" >"$OUT/guest.log"
+# The programs are the package's: dpkg-deb -x laid them over the root (guest_init.sh); the host's
+# own root has no /usr/bin/weft.
+[ -x "$WEFT" ] && [ -x "$SIM" ] || die "the package's $WEFT or $SIM is missing"
+echo "weft: $WEFT from the package ($(stat -c %s "$WEFT") bytes), helpers: $(ls /usr/libexec/weft | tr '\n' ' ')" >>"$OUT/guest.log"
 mark userspace
+
+# The offline side of the package: weft execs /usr/libexec/weft/weft-offline, which reads the
+# linen_plain preset from /usr/share/weft (one radiance value, 4 tangent samples: seconds under TCG).
+"$WEFT" eval --fabric linen_plain --view 0.5,0.2,0.8 --sg -0.3,0.1,0.9,20,1,1,1 --tangent-samples 4 --tolerance 0.2 >"$OUT/eval.json" 2>"$OUT/eval.log"
+echo "eval exit $?" >>"$OUT/eval.log"
 
 # The uhid panel against the real kernel and hidapi, as a unit test (skips outside such a VM).
 "$UHID_TEST" --gtest_filter='UhidPanel.RealUhid*' >"$OUT/uhid_test.log" 2>&1
