@@ -27,7 +27,8 @@ struct BakeArgs {
   bool only_scene_fabrics = false;
   bool no_tables = false;
   int sdf_resolution = 128;  // the paper's
-  int lambertian_sdf_resolution = 64;
+  // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
+  int lambertian_sdf_resolution = 32, lambda_levels = 3;
   int grid = 0;
   std::vector<int> samples;
   SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h)
@@ -83,9 +84,8 @@ int run_bake(const BakeArgs& a) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
     opt.progress = open_progress_bar;
-    opt.visibility.resolution = a.sdf_resolution;
-    opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
-    opt.grid = a.grid;
+    opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
+    opt.grid = a.grid, opt.lambda_levels = a.lambda_levels;
     if (!a.samples.empty()) {
       if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
         throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
@@ -139,10 +139,10 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();
-  sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution,
-                  "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
+  sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution, "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
       ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
+  sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables over 4..1024 (the paper's: 9)")->check(CLI::Range(2, 33))->capture_default_str();
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };
 }

@@ -44,8 +44,8 @@ CommandAction add_bench_command(CLI::App& app) {
                   "iwasaki tables: xi/omega grids NxN (0: the paper's 48; --quick uses 12)")
       ->capture_default_str();
   sub->add_option("--target-error", a->target_error,
-                  "Add an 'iwasaki (target E)' row per case, baked with the settings `weft bake --target-error E` "
-                  "picks, next to the paper-default iwasaki row (0: off)")
+                  "Add 'iwasaki (target E)' and 'iwasaki_vertex (target E)' rows per case, with the setting "
+                  "`weft bake --target-error E` picks for each, next to their paper-default rows (0: off)")
       ->capture_default_str();
   sub->add_option("--sweep-tangent-samples", a->sweep_tangent_samples,
                   "iwasaki tangent samples per thread to sweep on the first scene with its own fabric and map "

@@ -47,6 +47,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     if (opt.grid > 0) settings.xi_resolution = settings.wo_resolution = settings.wi_resolution = opt.grid;
     if (opt.tangent_samples[0] > 0 && opt.tangent_samples[1] > 0) settings.tangent_samples = opt.tangent_samples;
     if (opt.svd_error > 0) settings.svd_error = opt.svd_error;
+    if (opt.lambda_levels > 0) settings.lambda_levels = opt.lambda_levels;
     settings.validate();
     auto bar = open_stage(opt, "T tables " + o.fabric);
     WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {

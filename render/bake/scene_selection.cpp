@@ -51,8 +51,10 @@ public:
     views_ = refs.cameras;
     for (const auto& o2 : scene_.objects)
       if (o2.material == Material::cloth) cloth_.push_back(fabrics_.at(o2.fabric));
-    // Occluded at all? The cheapest SDF tells (an unoccluded scene stores no visibility).
-    occluded_ = !visibility(0).empty();
+    // Occluded at all? The paper's SDF tells (an unoccluded scene stores no visibility).
+    int paper_sdf = 0;
+    while (paper_sdf + 1 < int(knobs_.sdf_resolutions.size()) && knobs_.sdf_resolutions[paper_sdf] < 128) ++paper_sdf;
+    occluded_ = !visibility(paper_sdf).empty();
     if (occluded_) {
       const auto t0 = std::chrono::steady_clock::now();
       kappa_ = fit_sigmoid_gain_table(SigmoidGainTableSpec{});
@@ -238,9 +240,10 @@ bool cheaper(const SettingMeasure& a, const SettingMeasure& b) {
 // One method's search from the paper's setting: up while the error is above the target (the
 // step that lowers it most per byte added), then down while it holds (the step that saves the
 // most bytes). Returns its end point; above the target when the method cannot reach it.
-SettingMeasure search_method(Search& search, int method, double target) {
+SettingMeasure search_method(Search& search, int method, double& target, double paper_margin) {
   SceneSetting s = search.paper(method);
   SettingMeasure cur = search.measure(s);
+  if (paper_margin >= 0.0) target = cur.error + paper_margin;
   while (cur.error > target) {
     std::optional<SettingMeasure> best;
     double best_gain = 0.0;
@@ -292,20 +295,24 @@ std::string describe(const SceneSetting& s, const SelectionKnobs& k, bool visibi
 SceneSelection select_scene_settings(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                                      const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
                                      const SceneSelectionOptions& o) {
-  if (!(o.target_error > 0.0)) throw std::invalid_argument("target error must be > 0");
+  if (!(o.target_error > 0.0) && !(o.paper_margin >= 0.0)) throw std::invalid_argument("target error must be > 0");
   const auto t0 = std::chrono::steady_clock::now();
   SceneSelection out;
   const ViewReferences refs = view_references(scene, fabrics, fabric_texts, sgs, o.views, o.cache, o.log);
   out.references_rendered = refs.rendered, out.references_cached = refs.cached;
   Search search(scene, fabrics, sgs, refs, o);
   std::optional<SettingMeasure> chosen;
+  double target = o.target_error;
   for (int m = 0; m < int(o.knobs.methods.size()); ++m) {
-    const SettingMeasure end = search_method(search, m, o.target_error);
-    if (end.error <= o.target_error) {
+    double method_target = o.target_error;
+    const SettingMeasure end = search_method(search, m, method_target, o.paper_margin);
+    target = method_target;
+    if (end.error <= method_target) {
       if (!chosen || cheaper(end, *chosen)) chosen = end;
       break;  // a later method costs more frame time
     }
   }
+  out.target = target;
   out.reached = chosen.has_value();
   if (!chosen) {
     // Below what the method can reach: the least error measured, the cheaper on a tie.
@@ -316,6 +323,8 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
   out.method = o.knobs.methods[chosen->setting.method];
   out.description = describe(chosen->setting, o.knobs, search.occluded());
   out.data = search.data(chosen->setting);
+  for (const SettingMeasure& m : search.tried())
+    if (m.setting == search.paper(chosen->setting.method)) out.paper = m;
   out.tried = search.tried();
   out.seconds = since(t0);
   return out;

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,14 +38,17 @@ namespace weft {
 struct SelectionKnobs {
   std::vector<int> tangent_samples{1, 2, 3, 4, 6, 8, 12, 16};  // per thread (a straight thread keeps 1)
   std::vector<int> level_strides{4, 2, 1};                     // of the 9 baked levels: 3, 5, 9 levels
-  std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01, 0.005};
+  std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01};  // the richest is the paper's: its bake
   std::vector<int> sdf_resolutions{32, 64, 128};
   std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS
   std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // cheapest frame first
 };
 
 struct SceneSelectionOptions {
-  double target_error = 0.0;   // must be > 0
+  double target_error = 0.0;   // must be > 0 (unless paper_margin is set)
+  // ≥ 0: the target is instead the paper setting's own measured error plus this margin, per
+  // method (the cheapest setting as good as the paper's: how the default bake was derived).
+  double paper_margin = -1.0;
   SelectionViewOptions views;
   std::filesystem::path cache;  // reference renders
   SelectionKnobs knobs;
@@ -72,6 +76,8 @@ struct SettingMeasure {
 
 struct SceneSelection {
   SettingMeasure chosen;
+  double target = 0.0;                 // the target held (target_error, or paper's error + margin)
+  std::optional<SettingMeasure> paper; // the paper setting's measure (of the chosen method) when measured
   bool reached = false;
   std::string method;                  // the chosen setting's runtime method
   std::string description;             // the chosen setting in words

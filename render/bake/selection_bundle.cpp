@@ -13,7 +13,7 @@ std::string selection_json(const SceneSelection& s, const SceneSelectionOptions&
   const SelectionKnobs& k = o.knobs;
   nlohmann::json tangent = nlohmann::json::object();
   for (const auto& [preset, t] : s.data.tables) tangent[preset] = {t.tangent_samples[0], t.tangent_samples[1]};
-  nlohmann::json j = {{"target_error", o.target_error},
+  nlohmann::json j = {{"target_error", s.target},
                       {"reached", s.reached},
                       {"error", s.chosen.error},
                       {"view_errors", s.chosen.view_errors},
@@ -44,11 +44,17 @@ std::string selection_summary(const SceneSelection& s, const SceneSelectionOptio
   std::snprintf(buf, sizeof buf, "%-14s %s\n", "setting", s.description.c_str());
   out += buf;
   std::snprintf(buf, sizeof buf, "%-14s %.4f (views %s) against target %g: %s\n", "image error", s.chosen.error,
-                views.c_str(), o.target_error,
+                views.c_str(), s.target,
                 s.reached ? "reached" : "UNREACHABLE with these knobs; took the closest setting");
   out += buf;
   std::snprintf(buf, sizeof buf, "%-14s %.2f MB (tables + visibility + kappa)\n", "bytes", s.chosen.bytes / 1e6);
   out += buf;
+  if (s.paper) {
+    std::snprintf(buf, sizeof buf, "%-14s %s: error %.4f, %.2f MB, %.1f ms\n", "paper setting",
+                  describe(s.paper->setting, o.knobs, !s.data.visibility.empty()).c_str(), s.paper->error,
+                  s.paper->bytes / 1e6, s.paper->ms);
+    out += buf;
+  }
   std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine)\n", "frame", s.chosen.ms,
                 o.views.width, o.views.height);
   out += buf;
@@ -81,7 +87,7 @@ std::string add_selected_sections(bundle::BundleWriter& writer, const Scene& sce
   add_selection_sections(writer, s, with);
   std::fputs(selection_summary(s, o).c_str(), stderr);
   char buf[300];
-  std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", o.target_error, s.description.c_str(),
+  std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", s.target, s.description.c_str(),
                 s.chosen.error, s.reached ? "" : " (unreachable: closest)");
   return buf;
 }

@@ -30,7 +30,7 @@ struct BenchOptions {
   int stress_points = 24;
   bool no_stability = false;
   int bake_grid = 0;           // iwasaki tables' ξ/ω grids n×n; 0: the paper's 48 (12 with --quick)
-  double target_error = 0.05;  // > 0: an `iwasaki (target E)` row baked by bake_selection.h
+  double target_error = 0.05;  // > 0: `iwasaki (target E)`, `iwasaki_vertex (target E)` rows (bake/scene_selection.h)
   // Cost-knob sweep: SG counts fitted to the first scene's own map, accuracy against the
   // reference lit by the map itself (so the fit's error counts), speed over 5 frames.
   std::vector<int> sweep_sg_counts;

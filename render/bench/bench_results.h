@@ -1,6 +1,8 @@
 #pragma once
 // What one `weft bench` run measured, as its report and CSVs print it.
 #include <string>
+
+#include "bench/number_text.h"
 #include <vector>
 
 #include "bench/ladder.h"
@@ -53,10 +55,15 @@ struct StabilityCell {
   StressResult r;
 };
 
+// The method column of a seed 000 method's target-error row: "iwasaki_vertex (target 0.1)".
+inline std::string target_label(const std::string& method, double target) {
+  return method + " (target " + fmt(target) + ")";
+}
+
 struct BenchResults {
   std::vector<std::string> missing;  // the ladder's methods this build's runtime lacks
   bool run_iwasaki = false;          // iwasaki is among the measured methods
-  std::string target_label;          // the target-error rows' method label
+  std::string target_label;          // iwasaki's target-error rows' method label
   std::vector<Row> rows;
   std::string renderer;              // GL_RENDERER of the rows' frames
   std::string thin_occluder_case;    // what the thin-occluder table's text says of its case

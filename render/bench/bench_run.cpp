@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
+#include "bake/scene_selection.h"
 #include "bench/bench_case.h"
 #include "bench/bench_results.h"
 #include "bench/knob_sweeps.h"
@@ -23,23 +26,39 @@ namespace weft::bench {
 
 namespace {
 
-// The iwasaki row baked with the settings `weft bake --target-error` picks ("model no more
-// than a scene needs"), next to the paper-default row of the same case.
-Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, TableBakes& bakes,
-                     RowMeasure& measure, const std::string& label) {
-  IwasakiBakeOptions o = bakes.paper_options();
+// The row of a seed 000 method (iwasaki or iwasaki_vertex) with the setting `weft bake
+// --target-error` picks for it (bake/scene_selection.h, the method held fixed), next to the
+// paper-default row of the same case; its views' references cached beside the bench's.
+Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, RowMeasure& measure,
+                     const std::filesystem::path& cache) {
+  SceneSelectionOptions o;
   o.target_error = a.target_error;
-  const auto bundle = bakes.bake(TableBakes::key(c.scene, c.fabrics) + " target " + fmt(a.target_error), c.scene,
-                                 c.fabrics, o);
-  Row r = measure.measure(c, m, label, "iwasaki_target", bundle);
-  r.note = "bake_selection.h at error target " + fmt(a.target_error);
+  o.cache = cache / "selection-views";
+  o.grid = a.bake_grid;
+  o.knobs.methods = {m.name};
+  if (a.quick) o.views.width = 64, o.views.height = 48, o.views.sg_grid = 4, o.views.tangent_samples = 8;
+  std::map<std::string, std::string> texts;
+  for (const auto& [name, f] : c.fabrics) {
+    std::ifstream in(fabric_file(name, a.assets / "fabrics"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    texts[name] = text.str();
+  }
+  std::cerr << "weft bench: selecting " << m.name << " settings for " << c.tag << " at target " << fmt(a.target_error)
+            << " ..." << std::flush;
+  const SceneSelection sel = select_scene_settings(c.scene, c.fabrics, texts, c.sgs, o);
+  std::cerr << " " << fmt(sel.seconds) << " s: " << sel.description << "\n";
+  Row r = measure.measure(c, m, target_label(m.name, a.target_error), m.name + "_target",
+                          std::make_shared<const IwasakiBundleData>(sel.data));
+  r.note = "scene_selection.h at target " + fmt(a.target_error) + ": " + sel.description + ", views' error " +
+           fmt(sel.chosen.error) + (sel.reached ? "" : " (unreachable: closest)");
   return r;
 }
 
 // Speed and accuracy rows: every method on every scene × fabric × environment (with the
 // target-error row after each iwasaki row).
 void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, TableBakes& bakes, RowMeasure& measure,
-                 BenchResults& res) {
+                 const std::filesystem::path& cache, BenchResults& res) {
   for (const auto& scene_name : a.scenes) {
     for (const auto& fabric_arg : a.fabrics) {
       for (const auto& env_arg : a.envs) {
@@ -48,8 +67,8 @@ void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, Tab
         for (const auto& m : run) {
           if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
           res.rows.push_back(measure.measure(c, m, m.name, m.name, bakes.tables_for(m.name, c.scene, c.fabrics)));
-          if (m.name == "iwasaki" && a.target_error > 0)
-            res.rows.push_back(target_error_row(a, c, m, bakes, measure, res.target_label));
+          if ((m.name == "iwasaki" || m.name == "iwasaki_vertex") && a.target_error > 0)
+            res.rows.push_back(target_error_row(a, c, m, measure, cache));
         }
       }
     }
@@ -83,7 +102,7 @@ int run_bench(BenchOptions a) {
   BenchResults res;
   res.missing = ladder_run.missing;
   res.run_iwasaki = std::any_of(run.begin(), run.end(), [](const LadderEntry& e) { return e.name == "iwasaki"; });
-  res.target_label = "iwasaki (target " + fmt(a.target_error) + ")";
+  res.target_label = target_label("iwasaki", a.target_error);
 
   const std::filesystem::path out(a.out);
   const std::filesystem::path cache = a.cache.empty() ? out / "reference-cache" : std::filesystem::path(a.cache);
@@ -94,7 +113,7 @@ int run_bench(BenchOptions a) {
   RowMeasure measure(a, out, references);
   res.paper_sdf_resolution = bakes.paper_options().visibility.resolution;
 
-  ladder_rows(a, run, bakes, measure, res);
+  ladder_rows(a, run, bakes, measure, cache, res);
   res.renderer = measure.renderer();
   sweep_sg_counts(a, run, bakes, references, out, res);
   sweep_bake_knobs(a, has_iwasaki, bakes, references, out, res);
