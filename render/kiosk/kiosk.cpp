@@ -310,10 +310,7 @@ void Kiosk::show_first_frame() {
   // a quarter-size frame), so that a knob state restored at boot shows the picture it showed
   // when the knobs were turned (knob edits never re-meter).
   renderer_->set_lighting(scene_->sgs);
-  target_->bind();
-  const int mw = std::max(8, width_ / 4), mh = std::max(8, height_ / 4);
-  renderer_->draw(scene_->scene.camera, mw, mh);
-  meter_exposure(mw, mh);
+  meter_as_baked();
   poll_knobs();
   if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
   draw_frame(0);
@@ -523,7 +520,6 @@ bool Kiosk::finish_swap() {
   shown_fingerprint_ = p->bundle.fingerprint;
   swapped_ = p->change;
   knob_fabric_ = knob_fabric(*scene_);
-  meter_next_ = true;  // a new scene: its own exposure
   // The bundle shown becomes the last good copy, written (and fsynced) off the render thread.
   if (state_dir_ok_) {
     if (saving_.valid()) saving_.wait();  // the previous one, rarely still running
@@ -536,6 +532,8 @@ bool Kiosk::finish_swap() {
     log_info("knob state carried over (the same fabric presets and the same fabric on the cloth)");
   else
     reset_knobs(*scene_, knobs_differ);
+  // A new scene is metered as at boot, before the knobs dress it.
+  meter_as_baked();
   // The knobs onto the new renderer: the same positions, or the reset ones.
   knob_version_ = ~0ull;
   if (!poll_knobs()) apply_knob_state(knobs_);
@@ -627,6 +625,14 @@ void Kiosk::draw_frame(double turn_deg) {
 }
 
 double Kiosk::exposure_bias_ev() const { return config_.exposure_bias + std::log2(config_.exposure); }
+
+void Kiosk::meter_as_baked() {
+  target_->bind();
+  const int mw = std::max(8, width_ / 4), mh = std::max(8, height_ / 4);
+  renderer_->draw(scene_->scene.camera, mw, mh);
+  exposure_ = 0.0;  // shown at once, not eased in from another scene's
+  meter_exposure(mw, mh);
+}
 
 void Kiosk::meter_exposure(int width, int height) {
   std::vector<float> rgba(size_t(width) * height * 4);

@@ -131,6 +131,8 @@ private:
   // The cloth of the frame just drawn into target_ (its lower-left width × height) →
   // exposure_target_ (and exposure_ when none is shown yet).
   void meter_exposure(int width, int height);
+  // The bundle as baked (its fabrics, the light set) on a quarter-size frame → exposure_ at once.
+  void meter_as_baked();
   double exposure_bias_ev() const;
   // Content updates: a verified bundle's renderer is built, its lighting prepared, then swapped in.
   struct LoadedBundle;
