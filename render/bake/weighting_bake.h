@@ -26,9 +26,11 @@ struct BakeSettings {
   int wo_resolution = 48;                    // ω_o node grid n×n (paper: 48×48)
   int wi_resolution = 48;                    // ω_i nodes where W is sampled, n×n
   double cell_per_lobe = 0.75;               // quadrature cell spacing ≤ this × 1/√λ
-  // λ = 2/σ²: the paper samples σ from 1/√2 to 1/(16√2) logarithmically, i.e. λ 4..1024.
-  double lambda_min = 4.0, lambda_max = 1024.0;
-  int lambda_levels = 9;                     // log-spaced, both ends included
+  // λ = 2/σ²: the paper samples σ from 1/√2 to 1/(16√2) logarithmically, i.e. λ 4..1024. The
+  // levels reach down to 1/16 here, below the SG fit's broadest lobe (sg_fit.h, λ = 0.1): a sky's
+  // fit holds several lobes at λ ≈ 2, and T read at λ = 4 for them shades the swatch 15 % off.
+  double lambda_min = 1.0 / 16.0, lambda_max = 1024.0;
+  int lambda_levels = 15;                    // log-spaced, both ends included (×2 apart)
   double svd_error = 0.01;                   // per (t, λ): ‖T − T_r‖_F / ‖T‖_F ≤ this
   int max_rank = 0;                          // 0: no cap
 

@@ -22,7 +22,7 @@ struct LinenSwatch {
     BakeSettings s;  // coarser than the paper's 48² grids to keep the test short
     s.tangent_samples = {3, 3};
     s.xi_resolution = s.wo_resolution = s.wi_resolution = 32;
-    s.lambda_levels = 5;
+    s.lambda_levels = 8;  // ×4 apart over the default λ range
     return s;
   }();
   WeightingTables tables = bake_weighting_tables(linen, settings);
@@ -83,6 +83,17 @@ TEST(IwasakiSwatch, GrazingViewUnderLowSharpLights) {
                 {at_elevation(-140, 12), 400.0, dvec3(0.8)},
                 {at_elevation(95, 25), 300.0, dvec3(0.6)}},
                {at_elevation(-160, 6), at_elevation(-120, 10), at_elevation(170, 16), at_elevation(-95, 12)}, 0.08);
+}
+
+// A sky's fit holds 4–5 broad lobes (λ ≈ 1.7–2.5) and may go down to λ = 0.1 (sg_fit.h). T's
+// levels must reach that low: read at its sharpest-but-one level λ = 4 (σ 0.71 rad instead of
+// 1 rad), T averages W over too narrow a cone: 13–15 % too bright under a λ = 2 zenith lobe,
+// 0.9–1.6 % with levels down to λ = 1/16 (the 60° lobe: 8–10 %, 1.3–1.6 %). Broader still, the circular-Gaussian split of Eq. 11
+// is the limit: 3.6–4.9 % at λ = 1 (34–36 % with T clamped at λ = 4).
+TEST(IwasakiSwatch, BroadSkyLobesWithinTwoPercent) {
+  expect_close({{dvec3(0, 0, 1), 2.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.02);
+  expect_close({{at_elevation(40, 60), 2.0, dvec3(1.0)}}, {dvec3(0.3, 0.2, 0.93), dvec3(-0.2, -0.3, 0.93)}, 0.02);
+  expect_close({{dvec3(0, 0, 1), 1.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.06);
 }
 
 TEST(IwasakiSwatch, LinearInAlbedoWithoutRebake) {
