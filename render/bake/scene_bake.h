@@ -25,7 +25,7 @@ struct IwasakiBakeOptions {
   int grid = 0;               // > 0: ξ, ω_o and ω_i grids n×n instead of the paper's 48×48 (tests, previews)
   std::array<int, 2> tangent_samples{0, 0};  // > 0: override the paper's (or the selection's) counts
   double svd_error = 0.0;     // > 0: override the SVD truncation target (the paper's 0.01, or the selection's)
-  int lambda_levels = 0;      // > 0: sharpness levels over λ 4..1024 instead of the paper's 9
+  int lambda_levels = 0;      // > 0: sharpness levels over the settings' λ range instead of their own count
   // Either half alone (`weft bench` sweeps one knob and reuses the other half of its bundle).
   bool bake_tables = true;      // weighting tables for each cloth fabric
   bool bake_visibility = true;  // per-object visibility, and κ when any object is occluded
