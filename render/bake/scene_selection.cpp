@@ -18,6 +18,14 @@
 
 namespace weft {
 
+std::vector<int> level_strides_of(int levels) {
+  std::vector<int> strides;
+  for (int stride = std::max(levels - 1, 1); stride >= 1; --stride)
+    if ((levels - 1) % stride == 0 && (levels - 1) / stride + 1 >= 3) strides.push_back(stride);
+  if (strides.empty()) strides.push_back(1);
+  return strides;
+}
+
 namespace {
 
 double since(std::chrono::steady_clock::time_point t) {

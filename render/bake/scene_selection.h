@@ -27,6 +27,7 @@
 
 #include "bake/scene_visibility.h"
 #include "bake/selection_views.h"
+#include "bake/weighting_bake.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "runtime/iwasaki_bundle.h"
@@ -34,10 +35,14 @@
 
 namespace weft {
 
+// The strides that cut `levels` baked λ levels exactly (both ends kept) to 3 levels or more,
+// coarsest first: every divisor of the intervals, e.g. 15 levels → 7, 2, 1 (3, 8, 15 levels).
+std::vector<int> level_strides_of(int levels);
+
 // The values each knob may take, cheapest first.
 struct SelectionKnobs {
   std::vector<int> tangent_samples{1, 2, 3, 4, 6, 8, 12, 16};  // per thread (a straight thread keeps 1)
-  std::vector<int> level_strides{4, 2, 1};                     // of the 9 baked levels: 3, 5, 9 levels
+  std::vector<int> level_strides = level_strides_of(BakeSettings{}.lambda_levels);  // cuts of the baked levels
   std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01};  // the richest is the paper's: its bake
   std::vector<int> sdf_resolutions{32, 64, 128};
   std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS

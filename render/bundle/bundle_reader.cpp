@@ -256,6 +256,39 @@ struct OwnedBytes {
   }
 };
 
+// A regular file opened for reading, with its size at opening; closed when it goes.
+struct RegularFile {
+  std::string origin;
+  int fd = -1;
+  std::size_t size = 0;
+
+  explicit RegularFile(const std::filesystem::path& file) : origin(file.string()) {
+    fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw os_error("cannot open");
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) throw closing(os_error("cannot stat"));
+    if (!S_ISREG(st.st_mode)) throw closing(BundleError(origin, "file", "", "not a regular file"));
+    size = std::size_t(st.st_size);
+  }
+  RegularFile(const RegularFile&) = delete;
+  RegularFile& operator=(const RegularFile&) = delete;
+  ~RegularFile() {
+    if (fd >= 0) ::close(fd);
+  }
+
+  BundleError os_error(const std::string& what) const {
+    return BundleError(origin, "file", "", what + ": " + std::strerror(errno));
+  }
+
+ private:
+  // A constructor that throws runs no destructor: close here.
+  BundleError closing(BundleError e) {
+    ::close(fd);
+    fd = -1;
+    return e;
+  }
+};
+
 }  // namespace
 
 std::uint64_t SectionInfo::element_count() const {
@@ -273,38 +306,18 @@ BundleReader BundleReader::view(std::span<const std::byte> bytes, std::string or
 }
 
 BundleReader BundleReader::open(const std::filesystem::path& file) {
-  const std::string origin = file.string();
-  auto os_error = [&](const std::string& what) {
-    return BundleError(origin, "file", "", what + ": " + std::strerror(errno));
-  };
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw os_error("cannot open");
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) {
-    const BundleError e = os_error("cannot stat");
-    ::close(fd);
-    throw e;
-  }
-  if (!S_ISREG(st.st_mode)) {
-    ::close(fd);
-    throw BundleError(origin, "file", "", "not a regular file");
-  }
+  const RegularFile f(file);
   auto mapping = std::make_shared<Mapping>();
-  mapping->length = std::size_t(st.st_size);
+  mapping->length = f.size;
   if (mapping->length > 0) {
-    void* p = ::mmap(nullptr, mapping->length, PROT_READ, MAP_PRIVATE, fd, 0);
-    if (p == MAP_FAILED) {
-      const BundleError e = os_error("cannot mmap");
-      ::close(fd);
-      throw e;
-    }
+    void* p = ::mmap(nullptr, mapping->length, PROT_READ, MAP_PRIVATE, f.fd, 0);
+    if (p == MAP_FAILED) throw f.os_error("cannot mmap");
     mapping->address = p;
   }
-  ::close(fd);  // the mapping keeps the file contents reachable
-
+  // Closing the file leaves the mapping, which keeps its contents reachable.
   const std::span<const std::byte> bytes(static_cast<const std::byte*>(mapping->address),
                                          mapping->length);
-  BundleReader r = view(bytes, origin);
+  BundleReader r = view(bytes, f.origin);
   r.keep_alive_ = std::move(mapping);
   return r;
 }
@@ -346,39 +359,19 @@ std::span<const std::byte> BundleReader::raw(std::string_view name) const {
 }
 
 BundleReader BundleReader::read(const std::filesystem::path& file) {
-  const std::string origin = file.string();
-  auto os_error = [&](const std::string& what) {
-    return BundleError(origin, "file", "", what + ": " + std::strerror(errno));
-  };
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw os_error("cannot open");
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) {
-    const BundleError e = os_error("cannot stat");
-    ::close(fd);
-    throw e;
-  }
-  if (!S_ISREG(st.st_mode)) {
-    ::close(fd);
-    throw BundleError(origin, "file", "", "not a regular file");
-  }
+  const RegularFile f(file);
   // Up to the end of file as it is while reading: a file that shrinks or grows meanwhile reads
   // as what was there, and the verifier judges that.
-  auto owned = std::make_shared<OwnedBytes>(std::size_t(st.st_size) + 1);
+  auto owned = std::make_shared<OwnedBytes>(f.size + 1);
   for (;;) {
     if (owned->length == owned->capacity) owned->grow();
-    const ssize_t n = ::read(fd, owned->data + owned->length, owned->capacity - owned->length);
+    const ssize_t n = ::read(f.fd, owned->data + owned->length, owned->capacity - owned->length);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const BundleError e = os_error("cannot read");
-      ::close(fd);
-      throw e;
-    }
+    if (n < 0) throw f.os_error("cannot read");
     if (n == 0) break;
     owned->length += std::size_t(n);
   }
-  ::close(fd);
-  BundleReader r = view({owned->data, owned->length}, origin);
+  BundleReader r = view({owned->data, owned->length}, f.origin);
   r.keep_alive_ = std::move(owned);
   return r;
 }

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "gpu/scene_renderer.h"
 #include "kiosk/kiosk_config_error.h"
 #include "scene/scene.h"
@@ -38,8 +40,16 @@ KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::str
     for (size_t i = 0; i < b.scene.scene.objects.size(); ++i) vertices[i] = b.scene.scene.objects[i].mesh.positions.size();
     b.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
   }
+  if (reader.has("bake/selection")) b.baked_for = selected_method(reader.json("bake/selection"));
   b.fingerprint = bundle_fingerprint(reader);
   return b;
+}
+
+std::string selected_method(std::string_view selection_json) {
+  const auto j = nlohmann::json::parse(selection_json, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return {};
+  const auto at = j.find("method");
+  return at != j.end() && at->is_string() ? at->get<std::string>() : std::string();
 }
 
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
@@ -48,8 +58,10 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
   for (const auto& o : bundle.scene.scene.objects)
     if (o.material == Material::cloth)
       sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
+  const bool searched = bundle.baked_for == "iwasaki" || bundle.baked_for == "iwasaki_vertex";
+  const std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
   const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
-                                                      : bundle.iwasaki ? (sheer ? "sheer_vertex" : "iwasaki_vertex")
+                                                      : bundle.iwasaki ? (sheer ? "sheer_vertex" : opaque)
                                                                        : "sgpoint");
   if (gpu::uses_seed000_tables(m) && !bundle.iwasaki)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +

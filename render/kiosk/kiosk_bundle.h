@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "bundle/bundle_reader.h"
 #include "methods/registry.h"
@@ -19,15 +20,21 @@ struct KioskBundle {
   SceneBundle scene;
   std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or sgpoint asked for)
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
+  std::string baked_for;  // the method `weft bake --target-error` measured (bake/selection); empty: none
 };
+
+// The "method" a bake/selection section records; empty when the text has none or is not JSON
+// (readers may ignore that section).
+std::string selected_method(std::string_view selection_json);
 
 // Reads what the kiosk needs; `method` is --method (auto, or a registry name). Throws
 // bundle::BundleError naming the section when something is missing or invalid.
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
 // The method for a bundle: --method, or for auto (when the bundle has seed 000 tables)
-// sheer_vertex if a cloth object is a sheer, else iwasaki_vertex; sgpoint without tables.
-// Throws KioskConfigError when the method needs tables the bundle lacks.
+// sheer_vertex if a cloth object is a sheer, else the per-pixel or per-vertex method the bake's
+// search chose (baked_for), else iwasaki_vertex; sgpoint without tables. Throws
+// KioskConfigError when the method needs tables the bundle lacks.
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file);
 

@@ -1,0 +1,57 @@
+// Which method `weft run --method auto` shows for a bundle: the bake's searched choice, a sheer,
+// or the per-vertex default; and the bake/selection text it reads that choice from.
+#include <gtest/gtest.h>
+
+#include "core/fabric.h"
+#include "kiosk/kiosk_bundle.h"
+#include "kiosk/kiosk_config_error.h"
+
+namespace weft {
+namespace {
+
+KioskBundle cloth_bundle(const std::string& preset, bool tables) {
+  KioskBundle b;
+  b.scene.fabrics.emplace(preset, load_fabric_preset(preset, WEFT_SOURCE_ASSETS "/fabrics"));
+  SceneObject o;
+  o.name = "cloth";
+  o.material = Material::cloth;
+  o.fabric = preset;
+  b.scene.scene.objects.push_back(o);
+  if (tables) b.iwasaki = std::make_shared<IwasakiBundleData>();
+  return b;
+}
+
+TEST(KioskMethod, AutoTakesTheMethodTheBakeSearchChose) {
+  KioskBundle b = cloth_bundle("linen_plain", true);
+  EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki_vertex");
+  b.baked_for = "iwasaki";
+  EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki");
+  b.baked_for = "iwasaki_vertex";
+  EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki_vertex");
+  b.baked_for = "mizutani";  // not a choice the search makes: ignored
+  EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki_vertex");
+  b.baked_for = "iwasaki";
+  EXPECT_EQ(kiosk_method("sgpoint", b, "x.weft").name, "sgpoint");  // --method wins
+}
+
+TEST(KioskMethod, ASheerOrNoTablesDecideBeforeTheSearchedChoice) {
+  KioskBundle sheer = cloth_bundle("polyester_voile", true);
+  sheer.baked_for = "iwasaki";
+  EXPECT_EQ(kiosk_method("auto", sheer, "x.weft").name, "sheer_vertex");
+  KioskBundle bare = cloth_bundle("linen_plain", false);
+  bare.baked_for = "iwasaki";
+  EXPECT_EQ(kiosk_method("auto", bare, "x.weft").name, "sgpoint");
+  EXPECT_THROW(kiosk_method("iwasaki", bare, "x.weft"), KioskConfigError);
+}
+
+TEST(KioskMethod, SelectedMethodReadsTheSelectionSection) {
+  EXPECT_EQ(selected_method(R"({"target_error": 0.05, "method": "iwasaki", "reached": true})"), "iwasaki");
+  EXPECT_EQ(selected_method(R"({"target_error": 0.05})"), "");
+  EXPECT_EQ(selected_method(R"({"method": 3})"), "");
+  EXPECT_EQ(selected_method("[\"method\"]"), "");
+  EXPECT_EQ(selected_method("{\"method\": \"iwa"), "");  // cut off
+  EXPECT_EQ(selected_method(""), "");
+}
+
+}  // namespace
+}  // namespace weft
