@@ -25,21 +25,11 @@
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
+#include "support/parity_bake_settings.h"
 
 using namespace weft;
 
 namespace {
-
-// Small, fast bake settings: parity does not need converged tables, only the same ones.
-BakeSettings small_settings() {
-  BakeSettings s;
-  s.tangent_samples = {2, 3};
-  s.xi_resolution = s.wo_resolution = s.wi_resolution = 16;
-  s.lambda_levels = 4;
-  s.lambda_min = 2.0;
-  s.lambda_max = 256.0;
-  return s;
-}
 
 SgLighting test_lights() {
   // A few lobes of different sharpness, one from low on the side so the floor shadows the pillow.
@@ -69,7 +59,7 @@ void check_parity(const Case& c, gpu::Method method) {
       cloth_index = i;
     }
   auto data = std::make_shared<IwasakiBundleData>();
-  data->tables.emplace(c.fabric, bake_weighting_tables(fabric, small_settings()));
+  data->tables.emplace(c.fabric, bake_weighting_tables(fabric, test::parity_bake_settings()));
   SceneVisibilityOptions vo;
   vo.resolution = 16;
   if (auto v = bake_object_visibility(scene, cloth_index, vo)) data->visibility.emplace(cloth_index, std::move(*v));

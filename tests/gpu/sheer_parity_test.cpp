@@ -26,20 +26,11 @@
 #include "methods/sheer/sheer.h"
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
+#include "support/parity_bake_settings.h"
 
 using namespace weft;
 
 namespace {
-
-BakeSettings small_settings() {
-  BakeSettings s;
-  s.tangent_samples = {2, 3};
-  s.xi_resolution = s.wo_resolution = s.wi_resolution = 16;
-  s.lambda_levels = 4;
-  s.lambda_min = 2.0;
-  s.lambda_max = 256.0;
-  return s;
-}
 
 // The curtain hangs in the x = const plane facing ±x (the camera is at +x, the window at −x):
 // lobes on both sides, one low and grazing so the pleats and the floor shadow part of it.
@@ -63,7 +54,7 @@ void check_parity(const std::string& method_name) {
       cloth_index = i;
     }
   auto data = std::make_shared<IwasakiBundleData>();
-  data->tables.emplace(fabric.name, bake_weighting_tables(fabric, small_settings()));
+  data->tables.emplace(fabric.name, bake_weighting_tables(fabric, test::parity_bake_settings()));
   SceneVisibilityOptions vo;
   vo.resolution = 16;
   auto baked = bake_object_visibility(scene, cloth_index, vo);
