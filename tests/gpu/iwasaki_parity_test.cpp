@@ -26,6 +26,7 @@
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
 #include "support/parity_bake_settings.h"
+#include "support/ray_pixels.h"
 
 using namespace weft;
 
@@ -96,23 +97,14 @@ void check_parity(const Case& c, gpu::Method method) {
       // Away from triangle edges and silhouettes: the two sides may pick different triangles there.
       const double b0 = 1 - hit->b1 - hit->b2;
       if (std::min({b0, hit->b1, hit->b2}) < 0.02) continue;
-      bool interior = true;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto nh = rays.intersect(scene.camera.position, camera_ray(scene.camera, w, h, x + dx + 0.5, y + dy + 0.5));
-          interior = interior && nh && nh->object == cloth_index;
-        }
-      if (!interior) continue;
+      if (!test::interior_pixel(rays, scene.camera, w, h, x, y, cloth_index)) continue;
       const auto& tri = mesh.triangles[hit->triangle];
       const dvec3 bary(b0, hit->b1, hit->b2);
       // The radiance at surface point (bary over `corners`, SDF blended over `sdf_corners`).
       auto radiance = [&](dvec3 b, std::array<uint32_t, 3> sdf_corners, dvec3 sdf_bary, bool with_visibility) {
-        dvec3 p(0), n(0), warp(0);
-        for (int k = 0; k < 3; ++k) {
-          p += b[k] * mesh.positions[tri[k]];
-          n += b[k] * mesh.normals[tri[k]];
-          warp += b[k] * mesh.warps[tri[k]];
-        }
+        const test::MeshPoint m = test::mesh_point(mesh, tri, b);
+        const dvec3 p = m.position, warp = m.warp;
+        dvec3 n = m.normal;
         const dvec3 wo = glm::normalize(scene.camera.position - p);
         n = glm::normalize(n);
         if (glm::dot(n, wo) < 0) n = -n;

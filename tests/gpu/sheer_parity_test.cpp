@@ -27,6 +27,7 @@
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
 #include "support/parity_bake_settings.h"
+#include "support/ray_pixels.h"
 
 using namespace weft;
 
@@ -108,22 +109,13 @@ void check_parity(const std::string& method_name) {
       if (!hit || hit->object != cloth_index) continue;
       const double b0 = 1 - hit->b1 - hit->b2;
       if (std::min({b0, hit->b1, hit->b2}) < 0.02) continue;
-      bool interior = true;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto nh = rays.intersect(cam.position, camera_ray(cam, w, h, x + dx + 0.5, y + dy + 0.5));
-          interior = interior && nh && nh->object == cloth_index;
-        }
-      if (!interior) continue;
+      if (!test::interior_pixel(rays, cam, w, h, x, y, cloth_index)) continue;
       const auto& tri = mesh.triangles[hit->triangle];
       const dvec3 bary(b0, hit->b1, hit->b2);
       auto shade = [&](dvec3 b, std::array<uint32_t, 3> corners, dvec3 sdf_bary, bool with_visibility) {
-        dvec3 p(0), n(0), warp(0);
-        for (int k = 0; k < 3; ++k) {
-          p += b[k] * mesh.positions[tri[k]];
-          n += b[k] * mesh.normals[tri[k]];
-          warp += b[k] * mesh.warps[tri[k]];
-        }
+        const test::MeshPoint m = test::mesh_point(mesh, tri, b);
+        const dvec3 p = m.position, warp = m.warp;
+        dvec3 n = m.normal;
         const dvec3 wo = glm::normalize(cam.position - p);
         const SurfaceFrame mesh_frame = SurfaceFrame::from_normal_warp(n, warp);
         SurfaceFrame facing = mesh_frame;
