@@ -40,16 +40,6 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 }
 
 // The preset the bundle's (last) cloth object wears: where the fabric knob starts.
-uint32_t default_preset(const SceneBundle& sb) {
-  uint32_t index = 0;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) {
-      const auto at = sb.fabrics.find(o.fabric);
-      if (at != sb.fabrics.end()) index = uint32_t(std::distance(sb.fabrics.begin(), at));
-    }
-  return index;
-}
-
 // The fabric the knobs dress: the last cloth object's (a chair's cushions); cloth in other
 // fabrics keeps its own.
 std::string knob_fabric(const SceneBundle& sb) {
@@ -57,6 +47,12 @@ std::string knob_fabric(const SceneBundle& sb) {
   for (const auto& o : sb.scene.objects)
     if (o.material == Material::cloth) fabric = o.fabric;
   return fabric;
+}
+
+// The preset the knobs start from: the one they dress.
+uint32_t default_preset(const SceneBundle& sb) {
+  const auto at = sb.fabrics.find(knob_fabric(sb));
+  return at != sb.fabrics.end() ? uint32_t(std::distance(sb.fabrics.begin(), at)) : 0;
 }
 
 std::vector<Fabric> preset_list(const SceneBundle& sb) {
@@ -245,7 +241,6 @@ bool Kiosk::open_display() {
 
 void Kiosk::make_knob_controller(const SceneBundle& sb) {
   presets_ = preset_list(sb);
-  knob_fabric_ = knob_fabric(sb);
   input::KnobControllerOptions ko;
   ko.state_file = state_dir_ok_ ? std::filesystem::path(config_.state_dir) / "knobs.json" : std::filesystem::path();
   ko.default_preset = default_preset(sb);
@@ -519,7 +514,6 @@ bool Kiosk::finish_swap() {
   shown_ = {config_.bundle, false, ""};
   shown_fingerprint_ = p->bundle.fingerprint;
   swapped_ = p->change;
-  knob_fabric_ = knob_fabric(*scene_);
   // The bundle shown becomes the last good copy, written (and fsynced) off the render thread.
   if (state_dir_ok_) {
     if (saving_.valid()) saving_.wait();  // the previous one, rarely still running
@@ -575,10 +569,11 @@ void Kiosk::log_swap_shown() {
 void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   const Fabric f = apply_knobs(presets_.at(std::min<size_t>(s.preset_index, presets_.size() - 1)), s);
   try {
+    const std::string dressed = knob_fabric(*scene_);
     size_t c = 0;
     for (const auto& o : scene_->scene.objects)
       if (o.material == Material::cloth) {
-        if (o.fabric == knob_fabric_) renderer_->set_fabric(c, f);
+        if (o.fabric == dressed) renderer_->set_fabric(c, f);
         ++c;
       }
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for

@@ -168,7 +168,6 @@ private:
   // The knobs: every fabric in the bundle is a preset the fabric knob selects. They dress the
   // cloth objects baked in the last cloth object's fabric (a chair's cushions); other cloth
   // objects keep their own (its body).
-  std::string knob_fabric_;
   std::vector<Fabric> presets_;
   std::unique_ptr<input::KnobController> controller_;  // replaced (render thread) when a new bundle's presets differ
   std::mutex controller_m_;                             // the sources' events vs that replacement
