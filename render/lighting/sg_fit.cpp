@@ -153,36 +153,42 @@ EnvMap blur_to_lobe(const EnvMap& m, double lambda_b) {
   const double reach = 3.5 / std::sqrt(lambda_b);  // radians; the kernel is e^{-6} there
   const int dy = static_cast<int>(std::ceil(reach / (kPi / m.height))) + 1;
   std::vector<dvec3> power(m.texels.size(), dvec3(0.0));
-  std::vector<dvec3> dir(m.texels.size());
-  for (int y = 0; y < m.height; ++y)
-    for (int x = 0; x < m.width; ++x) dir[static_cast<size_t>(y) * m.width + x] = m.direction(x, y);
-  std::vector<std::pair<size_t, double>> weights;
-  for (int y = 0; y < m.height; ++y)
-    for (int x = 0; x < m.width; ++x) {
-      const dvec3& dj = dir[static_cast<size_t>(y) * m.width + x];
-      weights.clear();
-      double z = 0.0;
-      for (int ty = std::max(0, y - dy); ty <= std::min(m.height - 1, y + dy); ++ty) {
-        const double elevation = kPi * (0.5 - (ty + 0.5) / m.height);
-        const double cos_e = std::max(std::cos(elevation), 1e-3);
-        const int dx = static_cast<int>(std::ceil(reach / cos_e / (2.0 * kPi / m.width))) + 1;
-        const int x_lo = 2 * dx + 1 >= m.width ? 0 : x - dx, x_hi = 2 * dx + 1 >= m.width ? m.width - 1 : x + dx;
-        for (int tx = x_lo; tx <= x_hi; ++tx) {
-          const int wx = ((tx % m.width) + m.width) % m.width;
-          const size_t t = static_cast<size_t>(ty) * m.width + wx;
-          const double k = m.solid_angle(ty) * std::exp(lambda_b * (glm::dot(dir[t], dj) - 1.0));
-          weights.emplace_back(t, k);
-          z += k;
-        }
+  std::vector<double> row_omega(m.height);
+  for (int y = 0; y < m.height; ++y) row_omega[y] = m.solid_angle(y);
+  // The kernel around a texel depends on its row only (turning about +Z maps the row onto
+  // itself): one set of (row, column offset, weight) taps per row, from its first texel.
+  struct Tap {
+    int row, offset;
+    double k;
+  };
+  std::vector<Tap> taps;
+  for (int y = 0; y < m.height; ++y) {
+    const dvec3 dj = m.direction(0, y);
+    taps.clear();
+    double z = 0.0;
+    for (int ty = std::max(0, y - dy); ty <= std::min(m.height - 1, y + dy); ++ty) {
+      const double elevation = kPi * (0.5 - (ty + 0.5) / m.height);
+      const double cos_e = std::max(std::cos(elevation), 1e-3);
+      const int dx = static_cast<int>(std::ceil(reach / cos_e / (2.0 * kPi / m.width))) + 1;
+      const int lo = 2 * dx + 1 >= m.width ? 0 : -dx, hi = 2 * dx + 1 >= m.width ? m.width - 1 : dx;
+      for (int off = lo; off <= hi; ++off) {
+        const int wx = ((off % m.width) + m.width) % m.width;
+        const double k = row_omega[ty] * std::exp(lambda_b * (glm::dot(m.direction(wx, ty), dj) - 1.0));
+        taps.push_back({ty, off, k});
+        z += k;
       }
-      const dvec3 p = m.solid_angle(y) * dvec3(m.at(x, y)) / z;
-      for (const auto& [t, k] : weights) power[t] += k * p;
     }
+    for (int x = 0; x < m.width; ++x) {
+      const dvec3 p = row_omega[y] * dvec3(m.at(x, y)) / z;
+      for (const Tap& t : taps)
+        power[static_cast<size_t>(t.row) * m.width + ((x + t.offset) % m.width + m.width) % m.width] += t.k * p;
+    }
+  }
   EnvMap out(m.width, m.height);
   for (int y = 0; y < m.height; ++y)
     for (int x = 0; x < m.width; ++x) {
       const size_t t = static_cast<size_t>(y) * m.width + x;
-      out.texels[t] = glm::vec3(power[t] / m.solid_angle(y));
+      out.texels[t] = glm::vec3(power[t] / row_omega[y]);
     }
   return out;
 }
