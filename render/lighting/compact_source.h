@@ -4,10 +4,12 @@
 // leaving it to a least-squares fit of a blurred grid, which may split it over two lobes.
 //
 // Found by growing the 8-connected region of texels around the brightest one whose luminance
-// is at least `threshold` of the peak's. It counts as a compact source when the region stays
-// within `max_radius_deg` of the peak (a few texels at the coarsest map the probe fits), its
-// mean radiance is at least `min_contrast` times that of the ring of texels around it (the
-// background), and its power above that background is at least `min_power_share` of the map's.
+// is at least `threshold` of the peak's (the core), then one texel further (the texels its edge
+// covers partly); the background is the mean radiance of the ring of texels around that. It
+// counts as a compact source when the core stays within `max_radius_deg` of the peak (a few
+// texels at the coarsest map the probe fits), its mean luminance is at least `min_contrast`
+// times the background's, and the power above the background is at least `min_power_share` of
+// the map's.
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -17,9 +19,9 @@
 namespace weft {
 
 struct CompactSourceOptions {
-  double threshold = 0.02;        // region: luminance ≥ threshold × the peak texel's
-  double max_radius_deg = 6.0;    // every region texel within this angle of the peak texel
-  double min_contrast = 20.0;     // region mean radiance ≥ this × the background's (luminance)
+  double threshold = 0.02;        // core: luminance ≥ threshold × the peak texel's
+  double max_radius_deg = 6.0;    // every core texel within this angle of the peak texel
+  double min_contrast = 20.0;     // core mean luminance ≥ this × the background's
   double min_power_share = 0.01;  // power above the background ≥ this × the map's power
 };
 
