@@ -201,7 +201,7 @@ EnvMap blur_to_lobe(const EnvMap& m, double lambda_b) {
 void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_lambda, double max_lambda,
                 SgLighting& sgs) {
   if (static_cast<int>(sgs.size()) >= count) return;  // a full warm start
-  const Samples coarse = samples_of(resample(map, 32, 16));
+  const Samples coarse = samples_of(resample(map, 32, 16));  // the sizes of the table below
   const size_t n = coarse.size();
   // Candidate sharpnesses: doubling from min to what the 32×16 grid resolves, (16/π)² ≈ 26;
   // LM sharpens further on the fit grid.
@@ -210,12 +210,17 @@ void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_la
   for (double l = std::max(min_lambda, 0.25); l <= seed_max * 1.0001; l *= 2.0) lambdas.push_back(l);
   if (lambdas.empty() || lambdas.back() < seed_max) lambdas.push_back(seed_max);
 
-  // exp(λ(d_a·d_i − 1)) for every candidate axis a (texel centres), texel i and λ.
-  std::vector<std::vector<double>> kernel(lambdas.size(), std::vector<double>(n * n));
+  // exp(λ(d_a·d_i − 1)) for every candidate axis a (texel centres), texel i and λ. It depends on
+  // the two rows and the column difference only (turning about +Z), so it is tabulated as
+  // kernel[l][(row_a·H + row_i)·W + (col_i − col_a) mod W].
+  constexpr int W = 32, H = 16;
+  std::vector<double> kernel(lambdas.size() * H * H * W);
   for (size_t l = 0; l < lambdas.size(); ++l)
-    for (size_t a = 0; a < n; ++a)
-      for (size_t i = 0; i < n; ++i)
-        kernel[l][a * n + i] = std::exp(lambdas[l] * (glm::dot(coarse.d[a], coarse.d[i]) - 1.0));
+    for (int ra = 0; ra < H; ++ra)
+      for (int ri = 0; ri < H; ++ri)
+        for (int dc = 0; dc < W; ++dc)
+          kernel[((l * H + ra) * H + ri) * W + dc] =
+              std::exp(lambdas[l] * (glm::dot(coarse.d[ra * W], coarse.d[ri * W + dc]) - 1.0));
 
   // Score of a unit lobe against the residual projections p_c = ⟨R_c, G⟩: the error reduction of
   // adding it with the best non-negative amplitude, Σ_c max(p_c, 0)² / ‖G‖².
@@ -239,8 +244,12 @@ void seed_lobes(const EnvMap& map, const Samples& fine, int count, double min_la
     for (size_t l = 0; l < lambdas.size(); ++l) {
       for (size_t a = 0; a < n; ++a) {
         dvec3 p(0.0);
-        const double* k = &kernel[l][a * n];
-        for (size_t i = 0; i < n; ++i) p += k[i] * residual[i];
+        const int ra = static_cast<int>(a) / W, ca = static_cast<int>(a) % W;
+        for (int ri = 0; ri < H; ++ri) {
+          const double* k = &kernel[((l * H + ra) * H + ri) * W];
+          const dvec3* r = &residual[static_cast<size_t>(ri) * W];
+          for (int ci = 0; ci < W; ++ci) p += k[(ci - ca) & (W - 1)] * r[ci];
+        }
         const double s = score(p, lambdas[l]);
         if (s > best_score) best_score = s, best = {coarse.d[a], lambdas[l], glm::max(p, dvec3(0.0)) / lobe_norm2(lambdas[l])};
       }
