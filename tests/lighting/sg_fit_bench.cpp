@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <string>
 #include <vector>
@@ -37,13 +38,22 @@ int main(int argc, char** argv) {
                                    "sky:elev=10,haze=6", "sky:elev=0,size=2", "sky:elev=0,size=5", "sky:elev=0,haze=6",
                                    "studio",      "courtyard",          "city",               "interior",
                                    "studio@90",   "courtyard@90",       "city@90",            "interior@90"};
-  // Arguments: environments to run instead of the list above; --lobes prints each fit's lobes.
+  // Arguments: environments to run instead of the list above; --lobes prints each fit's lobes;
+  // --weight W and --min-sharpness L set both fits' irradiance weight and λ floor (the study of
+  // docs/bench/low_sun/fit_error.md).
   bool print_lobes = false;
+  SgFitOptions probe_options = LightProbeConfig{}.fit;
+  SgFitOptions fit_options;  // `weft fit`'s defaults
   std::vector<std::string> given;
-  for (int i = 1; i < argc; ++i) (std::string(argv[i]) == "--lobes" ? (void)(print_lobes = true) : given.push_back(argv[i]));
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--lobes") print_lobes = true;
+    else if (a == "--weight" && i + 1 < argc) fit_options.irradiance_weight = probe_options.irradiance_weight = std::atof(argv[++i]);
+    else if (a == "--min-sharpness" && i + 1 < argc) fit_options.min_sharpness = probe_options.min_sharpness = std::atof(argv[++i]);
+    else given.push_back(a);
+  }
   if (!given.empty()) envs = given;
-  const SgFitOptions probe_options = LightProbeConfig{}.fit;
-  const SgFitOptions fit_options;  // `weft fit`'s defaults
+  std::printf("irradiance weight %g, min sharpness %g\n", fit_options.irradiance_weight, fit_options.min_sharpness);
   std::printf("CPU ms of this thread; probe: 128x64 map, median of 5 warm updates (cold: the first)\n");
   std::printf("%-22s %8s %8s %9s %9s %8s %8s %9s %9s\n", "env", "fit_err%", "fit_ms", "fit_lmin", "fit_lmax",
               "prb_err%", "prb_ms", "prb_cold", "prb_lmin");
