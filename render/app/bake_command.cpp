@@ -3,7 +3,6 @@
 // visibility PCA for occluded cloth, κ).
 #include <chrono>
 #include <cstdio>
-#include <iostream>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
@@ -29,9 +28,8 @@ struct BakeArgs {
   int sdf_resolution = 128;  // the paper's
   // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
-  int grid = 0;
   std::vector<int> samples;
-  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h)
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h); holds --grid
 };
 
 void progress(int step, int steps, const std::string& what) {
@@ -78,24 +76,26 @@ int run_bake(const BakeArgs& a) {
   }
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
-  add_scene_sections(writer, in);
   std::string tables_line = "no seed 000 tables (--no-tables)";
+  const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
+  if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
     opt.progress = open_progress_bar;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
-    opt.grid = a.grid, opt.lambda_levels = a.lambda_levels;
+    opt.grid = a.select.grid, opt.lambda_levels = a.lambda_levels;
     if (!a.samples.empty()) {
       if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
         throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
       opt.tangent_samples = {a.samples[0], a.samples[1]};
     }
+    const bool fitted = a.sgs_file.empty() && a.fit_sgs == 0;  // the search chooses their count too
+    const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
     SceneSelectionOptions select = a.select;
-    select.grid = a.grid, select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
+    select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     try {
-      tables_line = select.target_error > 0 ? add_selected_sections(writer, in.scene, in.fabrics, in.sgs, select)
-                                            : add_baked_sections(writer, in.scene, in.fabrics, opt);
+      tables_line = search ? add_selected_bundle(writer, in, select, sg_map) : add_baked_sections(writer, in.scene, in.fabrics, opt);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
@@ -105,7 +105,7 @@ int run_bake(const BakeArgs& a) {
   try {
     writer.write_file(a.out);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
   size_t triangles = 0;
@@ -133,15 +133,15 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
   sub->add_option("--target-error", a->select.target_error,
-                  "Choose every cost knob (samples, levels, SVD, SDF, PCA, per-vertex or per-pixel) for this image "
-                  "error on the scene's views at the least cost, measured against references (0: the paper's)")
+                  "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, per-vertex or "
+                  "per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution, "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
       ->check(CLI::Range(8, 256))->capture_default_str();
-  sub->add_option("--grid", a->grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
+  sub->add_option("--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
   return [a] { return run_bake(*a); };

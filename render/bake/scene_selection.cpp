@@ -15,6 +15,7 @@
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "gpu/scene_renderer.h"
+#include "methods/sg_lighting_uniforms.h"
 
 namespace weft {
 
@@ -58,7 +59,11 @@ public:
       for (const auto& [name, f] : fabrics_) curved_[j] = curved_[j] || !straight(f, j);
     views_ = refs.cameras;
     for (const auto& o2 : scene_.objects)
-      if (o2.material == Material::cloth) cloth_.push_back(fabrics_.at(o2.fabric));
+      if (o2.material == Material::cloth) {
+        cloth_.push_back(fabrics_.at(o2.fabric));
+        cloth_vertices_.emplace_back(o2.fabric, double(o2.mesh.positions.size()));
+      }
+    for (PixelKind k : refs.images.at(0).kinds) cloth_pixels_ += k == PixelKind::cloth ? 1.0 : 0.0;
     // Occluded at all? The paper's SDF tells (an unoccluded scene stores no visibility).
     int paper_sdf = 0;
     while (paper_sdf + 1 < int(knobs_.sdf_resolutions.size()) && knobs_.sdf_resolutions[paper_sdf] < 128) ++paper_sdf;
@@ -81,7 +86,8 @@ public:
       case 2: return int(knobs_.level_strides.size());
       case 3: return int(knobs_.svd_errors.size());
       case 4: return occluded_ ? int(knobs_.sdf_resolutions.size()) : 1;
-      default: return occluded_ ? int(knobs_.pca_errors.size()) : 1;
+      case 5: return occluded_ ? int(knobs_.pca_errors.size()) : 1;
+      default: return std::max<int>(knobs_.sg_counts.size(), 1);
     }
   }
   static int& knob(SceneSetting& s, int k) {
@@ -91,13 +97,15 @@ public:
       case 2: return s.levels;
       case 3: return s.svd;
       case 4: return s.sdf;
-      default: return s.pca;
+      case 5: return s.pca;
+      default: return s.sgs;
     }
   }
-  static constexpr int kKnobs = 6;
+  static constexpr int kKnobs = 7;
 
   // The paper's setting (seed 000: its tangent samples, 9 levels, SVD 0.01, SDF 128², PCA
-  // 0.01 rad), each knob at the nearest value it offers (the next larger where none is equal).
+  // 0.01 rad; the product card's 10 SGs), each knob at the nearest value it offers (the next
+  // larger where none is equal).
   SceneSetting paper(int method) const {
     SceneSetting s;
     s.method = method;
@@ -121,6 +129,7 @@ public:
       s.pca = 0;
       while (s.pca + 1 < int(knobs_.pca_errors.size()) && knobs_.pca_errors[s.pca] > 0.01 + 1e-12) ++s.pca;
     }
+    if (!knobs_.sg_counts.empty()) s.sgs = nearest(knobs_.sg_counts, 10);
     return s;
   }
 
@@ -145,9 +154,12 @@ public:
     for (const auto& [name, t] : bundle->tables) m.bytes += t.bytes();
     for (const auto& [object, v] : bundle->visibility) m.bytes += visibility_bytes(v);
     if (bundle->kappa) m.bytes += 4 * bundle->kappa->normalized_gains().size();
+    const SgLighting& sgs = lighting(s.sgs);
+    m.sg_count = int(sgs.size());
+    m.work = work(s, *bundle, m.sg_count);
     ctx_.make_current();
     gpu::SceneRenderer renderer(scene_, cloth_, gpu::parse_method(knobs_.methods[s.method]), 16, bundle);
-    renderer.set_lighting(sgs_);
+    renderer.set_lighting(sgs);
     target_.bind();
     const int w = o_.views.width, h = o_.views.height;
     for (size_t v = 0; v < views_.size(); ++v) {
@@ -177,6 +189,17 @@ public:
   }
 
   const std::vector<SettingMeasure>& tried() const { return tried_; }
+
+  // The SGs of a setting: the fit at its count, or the SGs given when the count is not searched.
+  const SgLighting& lighting(int sg_index) {
+    if (knobs_.sg_counts.empty()) return sgs_;
+    const int count = knobs_.sg_counts[sg_index];
+    if (auto it = fits_.find(count); it != fits_.end()) return it->second;
+    const auto t0 = std::chrono::steady_clock::now();
+    SgLighting fit = o_.fit(count);
+    say(std::to_string(count) + " SGs fitted (" + number(std::round(since(t0) * 10) / 10) + " s)");
+    return fits_.emplace(count, std::move(fit)).first->second;
+  }
   void say(const std::string& line) const {
     if (o_.log) o_.log(line);
   }
@@ -196,9 +219,26 @@ private:
   std::map<std::pair<std::string, std::array<int, 2>>, WeightingTables> tables_;
   std::map<int, std::map<size_t, ObjectVisibility>> visibility_;
   std::map<SceneSetting, SettingMeasure> measured_;
+  std::map<int, SgLighting> fits_;
+  std::vector<std::pair<std::string, double>> cloth_vertices_;  // fabric, vertex count per cloth object
+  double cloth_pixels_ = 0.0;                                   // of view 0's reference
   std::vector<SettingMeasure> tried_;
   gpu::EglContext ctx_;
   gpu::OffscreenTarget target_;
+
+  // The modelled frame cost of view 0: points shaded (cloth vertices per vertex, cloth pixels per
+  // pixel) × SGs × tangent samples of the points' fabric (the runtime loops over both products).
+  double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) const {
+    double vertices = 0.0, vertex_samples = 0.0;
+    for (const auto& [fabric, n] : cloth_vertices_) {
+      const auto& t = d.tables.at(fabric).tangent_samples;
+      vertices += n;
+      vertex_samples += n * double(t[0] + t[1]);
+    }
+    if (vertices == 0.0) return 0.0;
+    const bool per_vertex = knobs_.methods[s.method].find("vertex") != std::string::npos;
+    return double(sg_count) * (per_vertex ? vertex_samples : cloth_pixels_ * vertex_samples / vertices);
+  }
 
   // Tables of one fabric at a tangent-sample pair (knob indices), at the richest levels and SVD error.
   const WeightingTables& tables(const std::string& fabric, std::array<int, 2> samples) {
@@ -209,6 +249,8 @@ private:
     if (auto it = tables_.find(key); it != tables_.end()) return it->second;
     BakeSettings b;
     b.tangent_samples = n;
+    b.lambda_levels = knobs_.baked_levels;
+    b.lambda_min = knobs_.baked_lambda_min;
     b.svd_error = *std::min_element(knobs_.svd_errors.begin(), knobs_.svd_errors.end());
     if (o_.grid > 0) b.xi_resolution = b.wo_resolution = b.wi_resolution = o_.grid;
     const auto t0 = std::chrono::steady_clock::now();
@@ -236,18 +278,18 @@ private:
   }
 };
 
-// The cheaper of two settings that both hold the target: per-vertex before per-pixel, then
-// frame time (within 10 %: equal), then bytes.
+// The cheaper of two settings: per-vertex before per-pixel, then the modelled frame cost,
+// then bytes.
 bool cheaper(const SettingMeasure& a, const SettingMeasure& b) {
   if (a.setting.method != b.setting.method) return a.setting.method < b.setting.method;
-  if (a.ms < 0.9 * b.ms) return true;
-  if (b.ms < 0.9 * a.ms) return false;
+  if (a.work != b.work) return a.work < b.work;
   return a.bytes < b.bytes;
 }
 
 // One method's search from the paper's setting: up while the error is above the target (the
-// step that lowers it most per byte added), then down while it holds (the step that saves the
-// most bytes). Returns its end point; above the target when the method cannot reach it.
+// step that lowers it most per byte added), then down while it holds (the step to the cheapest
+// setting: frame cost, then bytes). Returns its end point; above the target when the method
+// cannot reach it.
 SettingMeasure search_method(Search& search, int method, double& target, double paper_margin) {
   SceneSetting s = search.paper(method);
   SettingMeasure cur = search.measure(s);
@@ -279,8 +321,8 @@ SettingMeasure search_method(Search& search, int method, double& target, double 
       SceneSetting n = s;
       if (--Search::knob(n, k) < 0) continue;
       const SettingMeasure m = search.measure(n);
-      if (m.error > target || m.bytes > cur.bytes) continue;
-      if (!best || m.bytes < best->bytes || (m.bytes == best->bytes && m.error < best->error)) best = m;
+      if (m.error > target || cheaper(cur, m)) continue;
+      if (!best || cheaper(m, *best) || (!cheaper(*best, m) && m.error < best->error)) best = m;
     }
     if (!best) break;
     s = best->setting;
@@ -294,9 +336,10 @@ SettingMeasure search_method(Search& search, int method, double& target, double 
 std::string describe(const SceneSetting& s, const SelectionKnobs& k, bool visibility) {
   std::string d = k.methods[s.method] + ", " + std::to_string(k.tangent_samples[s.samples[0]]) + "+" +
                   std::to_string(k.tangent_samples[s.samples[1]]) + " samples, " +
-                  std::to_string((BakeSettings{}.lambda_levels - 1) / k.level_strides[s.levels] + 1) + " levels, SVD " + number(k.svd_errors[s.svd]);
+                  std::to_string((k.baked_levels - 1) / k.level_strides[s.levels] + 1) + " levels, SVD " + number(k.svd_errors[s.svd]);
   if (visibility)
     d += ", SDF " + std::to_string(k.sdf_resolutions[s.sdf]) + ", PCA " + number(k.pca_errors[s.pca]) + " rad";
+  if (!k.sg_counts.empty()) d += ", " + std::to_string(k.sg_counts[s.sgs]) + " SGs";
   return d;
 }
 
@@ -304,6 +347,10 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
                                      const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
                                      const SceneSelectionOptions& o) {
   if (!(o.target_error > 0.0) && !(o.paper_margin >= 0.0)) throw std::invalid_argument("target error must be > 0");
+  if (!o.knobs.sg_counts.empty() && !o.fit) throw std::invalid_argument("SG counts to search need a fit");
+  for (int k : o.knobs.sg_counts)
+    if (k < 1 || k > gpu::kMaxSgs)
+      throw std::invalid_argument("SG count " + std::to_string(k) + " outside 1.." + std::to_string(gpu::kMaxSgs));
   const auto t0 = std::chrono::steady_clock::now();
   SceneSelection out;
   const ViewReferences refs = view_references(scene, fabrics, fabric_texts, sgs, o.views, o.cache, o.log);
@@ -331,6 +378,7 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
   out.method = o.knobs.methods[chosen->setting.method];
   out.description = describe(chosen->setting, o.knobs, search.occluded());
   out.data = search.data(chosen->setting);
+  out.sgs = search.lighting(chosen->setting.sgs);
   for (const SettingMeasure& m : search.tried())
     if (m.setting == search.paper(chosen->setting.method)) out.paper = m;
   out.tried = search.tried();

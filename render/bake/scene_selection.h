@@ -1,11 +1,13 @@
 #pragma once
 // "Model no more than the scene needs" (DESIGN.md §4) for a whole scene: the setting of every
-// cost knob of seed 000's method (tangent samples per thread, λ levels, SVD error, SDF
-// resolution, PCA error, per-vertex or per-pixel shading) is chosen so that the image error —
-// relative RMSE over the cloth pixels (bench/image_metrics.h) of the GPU frame against the
-// reference, the worst of the scene's views (bake/selection_views.h) — stays ≤ the target at
-// the least cost: frame time first (per-vertex before per-pixel; measured times within 10 %
-// count as equal), then bundle bytes.
+// cost knob of seed 000's method (SG count of the map's fit, tangent samples per thread, λ
+// levels, SVD error, SDF resolution, PCA error, per-vertex or per-pixel shading) is chosen so
+// that the image error — relative RMSE over the cloth pixels (bench/image_metrics.h) of the GPU
+// frame against the reference, the worst of the scene's views (bake/selection_views.h) — stays
+// ≤ the target at the least cost: frame time first, then bundle bytes. Frame time is modelled,
+// not timed (timings on a shared machine are noise at these differences): per-vertex before
+// per-pixel, then the shading work, shaded points × SGs × tangent samples (the runtime's loops,
+// methods/iwasaki/iwasaki.glsl); the measured ms is reported beside it.
 //
 // The search measures, it does not model: from the paper's setting it steps up the knob whose
 // next value lowers the error most per byte it adds while the target is missed, then steps
@@ -42,11 +44,16 @@ std::vector<int> level_strides_of(int levels);
 // The values each knob may take, cheapest first.
 struct SelectionKnobs {
   std::vector<int> tangent_samples{1, 2, 3, 4, 6, 8, 12, 16};  // per thread (a straight thread keeps 1)
-  std::vector<int> level_strides = level_strides_of(BakeSettings{}.lambda_levels);  // cuts of the baked levels
+  int baked_levels = BakeSettings{}.lambda_levels;               // λ levels the tables are baked with,
+  double baked_lambda_min = BakeSettings{}.lambda_min;           // log-spaced from this to BakeSettings' λ max
+  std::vector<int> level_strides = level_strides_of(baked_levels);  // cuts of the baked levels
   std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01};  // the richest is the paper's: its bake
   std::vector<int> sdf_resolutions{32, 64, 128};
   std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS
   std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // cheapest frame first
+  // SG counts of the scene map's fit (SceneSelectionOptions::fit); empty: the SGs given only.
+  // At most methods/sg_lighting_uniforms.h's kMaxSgs (40).
+  std::vector<int> sg_counts;
 };
 
 struct SceneSelectionOptions {
@@ -60,6 +67,10 @@ struct SceneSelectionOptions {
   int grid = 0;                 // > 0: T tables' direction grids n×n instead of the paper's 48 (tests)
   SceneVisibilityOptions visibility;  // resolution and PCA target are the knobs'; the rest is kept
   int timed_frames = 3;         // frames timed per setting (view 0, after a warm-up)
+  // SGs fitted to the scene's map for a count: needed when knobs.sg_counts is set. The views'
+  // references are then still rendered under the SGs given to select_scene_settings, which
+  // should be richer than any count searched (weft bake gives a 24-SG fit).
+  std::function<SgLighting(int count)> fit;
   std::function<void(const std::string&)> log;  // progress lines
 };
 
@@ -68,6 +79,7 @@ struct SceneSetting {
   int method = 0;
   std::array<int, 2> samples{0, 0};
   int levels = 0, svd = 0, sdf = 0, pca = 0;
+  int sgs = 0;  // index into knobs.sg_counts (0 when it is empty)
   auto operator<=>(const SceneSetting&) const = default;
 };
 
@@ -76,6 +88,8 @@ struct SettingMeasure {
   double error = 0.0;               // the worst view's
   std::vector<double> view_errors;  // per view
   double ms = 0.0;                  // median frame time of view 0 at the views' size
+  double work = 0.0;                // modelled frame cost of view 0: shaded points × SGs × tangent samples
+  int sg_count = 0;                 // SGs it was drawn with
   size_t bytes = 0;                 // tables + visibility (+ κ when there is visibility)
 };
 
@@ -88,15 +102,18 @@ struct SceneSelection {
   std::string description;             // the chosen setting in words
   std::vector<SettingMeasure> tried;   // in the order measured
   IwasakiBundleData data;              // the chosen setting's tables, visibility and κ
+  SgLighting sgs;                      // the chosen setting's SGs (its fit when the SG count was searched)
   int references_rendered = 0, references_cached = 0;
   double seconds = 0.0;
 };
 
-// Describes a setting ("iwasaki_vertex, 3+3 samples, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad").
+// Describes a setting ("iwasaki_vertex, 3+3 samples, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad",
+// then ", 8 SGs" when the SG count is searched).
 std::string describe(const SceneSetting& s, const SelectionKnobs& knobs, bool visibility);
 
 // `fabric_texts` (preset → fabric file text) key the reference cache. Needs a headless GLES
-// context (EGL; llvmpipe will do). Throws std::invalid_argument for a target ≤ 0.
+// context (EGL; llvmpipe will do). Throws std::invalid_argument for a target ≤ 0, or SG counts
+// without a fit or outside 1..kMaxSgs.
 SceneSelection select_scene_settings(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                                      const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
                                      const SceneSelectionOptions& options);

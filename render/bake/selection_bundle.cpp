@@ -1,10 +1,13 @@
 #include "bake/selection_bundle.h"
 
 #include <cstdio>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "bake/iwasaki_bundle_writer.h"
+#include "lighting/env_map.h"
+#include "lighting/sg_fit.h"
 
 namespace weft {
 
@@ -24,6 +27,7 @@ std::string selection_json(const SceneSelection& s, const SceneSelectionOptions&
                       {"tangent_samples", tangent},
                       {"lambda_levels", s.data.tables.empty() ? 0 : s.data.tables.begin()->second.level_count()},
                       {"svd_error", k.svd_errors[c.svd]},
+                      {"sg_count", s.chosen.sg_count},
                       {"views", {{"count", o.views.count}, {"spread_deg", o.views.spread_deg},
                                  {"width", o.views.width}, {"height", o.views.height}}},
                       {"settings_measured", s.tried.size()}};
@@ -55,8 +59,8 @@ std::string selection_summary(const SceneSelection& s, const SceneSelectionOptio
                   s.paper->bytes / 1e6, s.paper->ms);
     out += buf;
   }
-  std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine)\n", "frame", s.chosen.ms,
-                o.views.width, o.views.height);
+  std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine); modelled cost %.3g (points x SGs x samples)\n",
+                "frame", s.chosen.ms, o.views.width, o.views.height, s.chosen.work);
   out += buf;
   std::snprintf(buf, sizeof buf, "%-14s %zu settings measured on %zu views (%d references rendered, %d cached), %.1f s\n",
                 "search", s.tried.size(), s.chosen.view_errors.size(), s.references_rendered, s.references_cached,
@@ -73,9 +77,9 @@ void add_selection_sections(bundle::BundleWriter& writer, const SceneSelection& 
 
 namespace weft {
 
-std::string add_selected_sections(bundle::BundleWriter& writer, const Scene& scene,
-                                  const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
-                                  const SceneSelectionOptions& o) {
+SceneSelection select_for_bundle(const Scene& scene, const std::map<std::string, std::string>& fabric_texts,
+                                 const SgLighting& sgs, const SceneSelectionOptions& o,
+                                 const std::filesystem::path& sg_map) {
   std::map<std::string, Fabric> fabrics;
   for (const auto& obj : scene.objects)
     if (obj.material == Material::cloth && !fabrics.count(obj.fabric))
@@ -83,9 +87,28 @@ std::string add_selected_sections(bundle::BundleWriter& writer, const Scene& sce
   SceneSelectionOptions with = o;
   if (with.cache.empty()) with.cache = default_reference_cache();
   if (!with.log) with.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
-  const SceneSelection s = select_scene_settings(scene, fabrics, fabric_texts, sgs, with);
-  add_selection_sections(writer, s, with);
-  std::fputs(selection_summary(s, o).c_str(), stderr);
+  SgLighting lighting = sgs;
+  if (!sg_map.empty()) {
+    const auto map = std::make_shared<const EnvMap>(load_env_map(sg_map, NonFinitePolicy::clamp));
+    with.knobs.sg_counts = kBakeSgCounts;
+    with.fit = [map](int count) {
+      SgFitOptions fit;
+      fit.count = count;
+      return fit_sgs(*map, fit);
+    };
+    lighting = with.fit(kReferenceSgCount);
+  }
+  SceneSelection s = select_scene_settings(scene, fabrics, fabric_texts, lighting, with);
+  std::fputs(selection_summary(s, with).c_str(), stderr);
+  return s;
+}
+
+std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& in, const SceneSelectionOptions& o,
+                                const std::filesystem::path& sg_map) {
+  const SceneSelection s = select_for_bundle(in.scene, in.fabrics, in.sgs, o, sg_map);
+  in.sgs = s.sgs;
+  add_scene_sections(writer, in);
+  add_selection_sections(writer, s, o);
   char buf[300];
   std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", s.target, s.description.c_str(),
                 s.chosen.error, s.reached ? "" : " (unreachable: closest)");

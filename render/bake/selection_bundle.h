@@ -3,9 +3,12 @@
 // tables and visibility that were measured) and its record, the `bake/selection` JSON section
 // (BUNDLE_FORMAT.md): target, whether it was reached, the measured error per view, frame time,
 // bytes, the runtime method and every knob's value.
+#include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
+#include "bake/scene_bundle_writer.h"
 #include "bake/scene_selection.h"
 #include "bundle/bundle_writer.h"
 
@@ -19,12 +22,25 @@ std::string selection_json(const SceneSelection& s, const SceneSelectionOptions&
 std::string selection_summary(const SceneSelection& s, const SceneSelectionOptions& o);
 void add_selection_sections(bundle::BundleWriter& writer, const SceneSelection& s, const SceneSelectionOptions& o);
 
-// `weft bake --target-error`'s seed 000 stage: parses the scene's cloth fabrics from their texts
-// (preset → JSON, as the bundle stores them), runs the selection, adds its sections, prints
-// selection_summary on stderr and returns a one-line summary. Progress lines go to stderr unless
-// `o.log` takes them; references to `o.cache`, else default_reference_cache().
-std::string add_selected_sections(bundle::BundleWriter& writer, const Scene& scene,
-                                  const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
-                                  const SceneSelectionOptions& o);
+// SG counts `weft bake --target-error` searches when the SGs are fitted to the scene's map, and
+// the SGs of that fit lighting the views' references: richer than any count searched (the
+// shaders take up to 40).
+inline const std::vector<int> kBakeSgCounts{4, 6, 8, 10, 12};
+inline constexpr int kReferenceSgCount = 24;
+
+// `weft bake --target-error`'s search: parses the scene's cloth fabrics from their texts
+// (preset → JSON, as the bundle stores them), runs the selection and prints selection_summary on
+// stderr. Progress lines go to stderr unless `o.log` takes them; references to `o.cache`, else
+// default_reference_cache(). With `sg_map` (an environment map file) the SG count is searched
+// too (kBakeSgCounts, fitted as `weft fit` does) under references lit by kReferenceSgCount SGs
+// of it; without, `sgs` light the references and every setting.
+SceneSelection select_for_bundle(const Scene& scene, const std::map<std::string, std::string>& fabric_texts,
+                                 const SgLighting& sgs, const SceneSelectionOptions& o,
+                                 const std::filesystem::path& sg_map = {});
+// `weft bake --target-error`: select_for_bundle with `in`'s SGs, then `in`'s scene sections with
+// the chosen SGs as the default lighting, and the selection's sections. Returns a one-line summary.
+std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& in, const SceneSelectionOptions& o,
+                                const std::filesystem::path& sg_map = {});
+
 
 }  // namespace weft

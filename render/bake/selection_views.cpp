@@ -14,7 +14,7 @@ namespace weft {
 namespace {
 
 // The scene as the reference sees it: camera, objects, meshes, fabric texts.
-void add_scene(bench::InputHash& h, const Scene& s, const std::map<std::string, std::string>& fabric_texts) {
+void add_scene(InputHash& h, const Scene& s, const std::map<std::string, std::string>& fabric_texts) {
   h.add(s.name);
   for (const auto& o : s.objects) {
     h.add(o.name).add(o.fabric).add_number(o.material == Material::cloth ? 1 : 0);
@@ -30,7 +30,7 @@ void add_scene(bench::InputHash& h, const Scene& s, const std::map<std::string, 
   }
 }
 
-void add_camera(bench::InputHash& h, const Camera& c) {
+void add_camera(InputHash& h, const Camera& c) {
   for (const glm::dvec3& v : {c.position, c.target, c.up}) h.add_number(v.x).add_number(v.y).add_number(v.z);
   h.add_number(c.fov_deg);
 }
@@ -64,7 +64,7 @@ ViewReferences view_references(const Scene& scene, const std::map<std::string, F
   out.cameras = selection_views(scene.camera, o);
   Scene view = scene;
   for (size_t i = 0; i < out.cameras.size(); ++i) {
-    bench::InputHash h;
+    InputHash h;
     h.add(bench::kReferenceCodeVersion).add("selection view");
     add_scene(h, scene, fabric_texts);
     add_camera(h, out.cameras[i]);

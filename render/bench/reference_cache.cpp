@@ -8,39 +8,12 @@
 
 namespace weft::bench {
 
-void InputHash::mix(const void* p, size_t n) {
-  const auto* b = static_cast<const unsigned char*>(p);
-  for (size_t i = 0; i < n; ++i) {
-    h_ ^= b[i];
-    h_ *= 1099511628211ull;
-  }
-}
-
-InputHash& InputHash::add(std::string_view bytes) {
-  const uint64_t n = bytes.size();
-  mix(&n, sizeof n);
-  mix(bytes.data(), bytes.size());
-  return *this;
-}
-
-InputHash& InputHash::add_file(const std::filesystem::path& file) {
+InputHash& add_file(InputHash& h, const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + file.string());
   std::ostringstream s;
   s << in.rdbuf();
-  return add(s.str());
-}
-
-InputHash& InputHash::add_number(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return add(buf);
-}
-
-std::string InputHash::hex() const {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-  return buf;
+  return h.add(s.str());
 }
 
 std::optional<CachedReference> load_reference(const std::filesystem::path& file) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_hash.h"
 #include "image/image.h"
 #include "reference/scene_render.h"
 
@@ -17,18 +18,8 @@ namespace weft::bench {
 
 inline constexpr const char* kReferenceCodeVersion = "weft-reference-2026-11-27";
 
-// FNV-1a 64 over a sequence of byte strings (each length-prefixed, so boundaries count).
-class InputHash {
-public:
-  InputHash& add(std::string_view bytes);
-  InputHash& add_file(const std::filesystem::path& file);  // its contents; throws if unreadable
-  InputHash& add_number(double x);
-  std::string hex() const;
-
-private:
-  uint64_t h_ = 1469598103934665603ull;
-  void mix(const void* p, size_t n);
-};
+// Adds a file's contents to `h`; throws std::runtime_error when it cannot be read.
+InputHash& add_file(InputHash& h, const std::filesystem::path& file);
 
 struct CachedReference {
   Image image;

@@ -16,9 +16,9 @@ namespace {
 // from a path (a glTF with its buffers, a scene file elsewhere), its camera and objects themselves.
 void add_scene_inputs(InputHash& h, const std::filesystem::path& assets, const std::string& scene_arg, const Scene& s) {
   if (!names_scene_file(scene_arg)) {
-    h.add_file(assets / "scenes" / (scene_arg + ".json"));
+    add_file(h, assets / "scenes" / (scene_arg + ".json"));
     for (const auto& entry : std::filesystem::directory_iterator(assets / "scenes"))
-      if (entry.path().extension() == ".bpt") h.add_file(entry.path());
+      if (entry.path().extension() == ".bpt") add_file(h, entry.path());
     return;
   }
   h.add(s.name);
@@ -45,7 +45,7 @@ const CachedReference& ReferenceSet::sg_lit(const Case& c, bool thin) {
   InputHash h;
   h.add(kReferenceCodeVersion);
   add_scene_inputs(h, a.assets, c.scene_name, c.scene);
-  for (const auto& [name, f] : c.fabrics) h.add(name).add_file(fabric_file(name, a.assets / "fabrics"));
+  for (const auto& [name, f] : c.fabrics) add_file(h.add(name), fabric_file(name, a.assets / "fabrics"));
   h.add(c.env).add(thin ? "thin" : "opaque");
   for (const auto& g : c.sgs) {
     h.add_number(g.axis.x).add_number(g.axis.y).add_number(g.axis.z).add_number(g.sharpness);
@@ -85,8 +85,8 @@ CachedReference ReferenceSet::map_lit(const std::string& scene_arg, const Scene&
   InputHash h;
   h.add(kReferenceCodeVersion);
   add_scene_inputs(h, a.assets, scene_arg, s);
-  h.add_file(env_file).add("map128");
-  for (const auto& [name, f] : fabrics) h.add(name).add_file(fabric_file(name, a.assets / "fabrics"));
+  add_file(h, env_file).add("map128");
+  for (const auto& [name, f] : fabrics) add_file(h.add(name), fabric_file(name, a.assets / "fabrics"));
   h.add_number(a.width).add_number(a.height).add_number(a.tangent_samples);
   const auto cache_file = cache_ / (s.name + "_map_" + h.hex() + ".ref");
   auto ref = load_reference(cache_file);

@@ -4,32 +4,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/input_hash.h"
 #include "gpu/scene_renderer.h"
 #include "kiosk/kiosk_config_error.h"
 #include "scene/scene.h"
 
 namespace weft {
-namespace {
-
-// FNV-1a 64.
-void mix(std::uint64_t& h, const void* data, std::size_t n) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-}
-
-}  // namespace
 
 std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const auto& s : reader.sections()) {
-    mix(h, s.name.data(), s.name.size() + 1);
-    mix(h, &s.size, sizeof s.size);
-    mix(h, &s.crc, sizeof s.crc);
-  }
-  return h;
+  InputHash h;
+  for (const auto& s : reader.sections()) h.add(s.name).add_integer(s.size).add_integer(s.crc);
+  return h.value();
 }
 
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method) {
