@@ -45,7 +45,7 @@ struct LightProbeConfig {
   bool auto_exposure = true;   // keep the brightest ball pixel just below clipping
   double min_exposure_s = 1e-5, max_exposure_s = 0.25;
   int map_width = 128;         // unwrapped map (height = width / 2)
-  SgFitOptions fit{10, 64, 0.1, 1000.0, 8};  // warm-started: few iterations are enough
+  SgFitOptions fit{10, 64, 1.0, 1000.0, 8};  // warm-started: few iterations are enough
   double smoothing = 0.5;      // EMA weight of the newest map (90 % of a small change in 4 updates)
   double snap_threshold = 0.1; // relative irradiance change that restarts the average
   double retry_initial_s = 0.5, retry_max_s = 30.0;

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lighting/env_map.h"
+#include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/nnls.h"
 #include "lighting/sg_fit.h"
@@ -317,6 +318,9 @@ TEST(SgFit, RejectsBadOptionsAndHandlesABlackMap) {
   bad = {};
   bad.grid_width = 7;
   EXPECT_THROW(fit_sgs(black, bad), std::invalid_argument);
+  bad = {};
+  bad.irradiance_weight = -1.0;
+  EXPECT_THROW(fit_sgs(black, bad), std::invalid_argument);
   const SgLighting fit = fit_sgs(black);
   ASSERT_EQ(fit.size(), 10u);
   for (const auto& g : fit) EXPECT_EQ(g.amplitude, dvec3(0.0));
@@ -334,20 +338,23 @@ TEST(FitError, IrradianceSummationMatchesAnIndependentIntegral) {
   EXPECT_NEAR(e[0].r, exact, 2e-3 * exact);
 }
 
-TEST(SgFit, BundledMapsFitWithIrradianceErrorUnderFivePercent) {
-  for (const char* name : {"studio", "city", "courtyard", "interior"}) {
+TEST(SgFit, BundledMapsAndTheirTurnsFitWithIrradianceErrorWithinThreePercent) {
+  for (const std::string name : {"studio", "city", "courtyard", "interior"}) {
     EnvMapRepairs repairs;
-    const EnvMap map =
-        load_env_map(fs::path(WEFT_SOURCE_ASSETS) / "envmaps" / (std::string(name) + ".exr"), NonFinitePolicy::clamp, &repairs);
+    const EnvMap map = load_env_map(fs::path(WEFT_SOURCE_ASSETS) / "envmaps" / (name + ".exr"), NonFinitePolicy::clamp, &repairs);
     const SgLighting fit = fit_sgs(map);
     const SgFitError error = measure_fit_error(map, fit);
-    std::printf("%s: radiance %.3f irradiance %.4f (repaired %zu negative)\n", name, error.radiance_rmse,
+    std::printf("%s: radiance %.3f irradiance %.4f (repaired %zu negative)\n", name.c_str(), error.radiance_rmse,
                 error.irradiance_rmse, repairs.negative);
-    EXPECT_LE(error.irradiance_rmse, 0.05) << name;
+    EXPECT_LE(error.irradiance_rmse, 0.03) << name;
     // The orientation on real data: city's strongest lobe is the sun, in the sky (+Z up).
-    if (std::string(name) == "city") {
+    if (name == "city") {
       EXPECT_GT(fit[0].axis.z, 0.3);
     }
+    // Turned a quarter about +Z: the same content at other texels (the fit grid's blur and
+    // the lobes' seeds do not line up with it the same way).
+    const EnvMap turned = load_env(name + "@90", fs::path(WEFT_SOURCE_ASSETS) / "envmaps");
+    EXPECT_LE(measure_fit_error(turned, fit_sgs(turned)).irradiance_rmse, 0.03) << name << "@90";
   }
 }
 
