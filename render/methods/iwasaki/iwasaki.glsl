@@ -86,7 +86,7 @@ float pair_integral(float theta_l, float sigma_l, float sp) {
 float separable_spread(float lambda, float theta_k, float sigma_k) {
   float frozen = 0.5 * sqrt(PI) * sigma_k * (erf_nr((HALF_PI - theta_k) / sigma_k) - erf_nr((-HALF_PI - theta_k) / sigma_k)) *
                  circle_integral(sigma_prime(sigma_k, theta_k, theta_k)) * max(cos(theta_k), 1e-3);
-  return clamp(4.0 * PI * sg_one_minus_exp_over(2.0 * lambda) / frozen, 0.25, 4.0);
+  return clamp(4.0 * PI * sg_one_minus_exp_over(2.0 * lambda) / frozen, 0.25, 1.0);
 }
 float lobe_spread(float spread_k, float sigma_l, float sigma_k) { return pow(spread_k, (sigma_l * sigma_l) / (sigma_k * sigma_k)); }
 
