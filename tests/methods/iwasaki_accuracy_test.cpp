@@ -101,6 +101,16 @@ TEST(IwasakiSwatch, BroadSkyLobes) {
   expect_close({{dvec3(0, 0, 1), 1.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.14);
 }
 
+// Broad lobes along a thread (the warp along x, the weft along y): for that thread's samples the
+// SG sits near the pole θ = ±π/2, where Eq. 13's frozen form vanishes with cos θ_k. Its ratio to
+// the SG's exact integral is then > 1; the model's cos²θ_l at the peak is small there too, and
+// scaling by that ratio over-brightened these lobes (separable_spread is kept ≤ 1): with the ratio
+// up to 4, +3 to +6 % and +8 to +12 % here; kept ≤ 1, 1.1–3.7 %.
+TEST(IwasakiSwatch, BroadLobesAlongTheThreads) {
+  expect_close({{at_elevation(0, 30), 2.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.08);
+  expect_close({{at_elevation(90, 15), 1.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(-0.3, 0.2, 0.93)}, 0.08);
+}
+
 // A sky's ground lobes point below the surface (sky:elev=60: λ 0.28 at z = −0.98, λ 0.38 at
 // z = −0.34), yet their tails above it are real light. Shaded at their peak they gave nothing (the
 // horizon cut linearised at a nadir peak is 0, and the smooth factors there vanish: −100 %, −73 to
