@@ -67,6 +67,21 @@ double circular_gaussian_pair_integral(double theta_l, double sigma_l, double ph
   return 0.25 * kPi * sigma_l * sigma_prime_l * along_theta * along_phi;
 }
 
+double circular_gaussian_circle_integral(double sigma) {
+  const double k = concentration(sigma);
+  double scaled_i0;  // e^{−κ} I₀(κ)
+  if (k < 3.75) {
+    const double t = (k / 3.75) * (k / 3.75);
+    scaled_i0 = std::exp(-k) * (1.0 + t * (3.5156229 + t * (3.0899424 + t * (1.2067492 +
+                                t * (0.2659732 + t * (0.0360768 + t * 0.0045813))))));
+  } else {
+    const double t = 3.75 / k;
+    scaled_i0 = (0.39894228 + t * (0.01328592 + t * (0.00225319 + t * (-0.00157565 + t * (0.00916281 +
+                t * (-0.02057706 + t * (0.02635537 + t * (-0.01647633 + t * 0.00392377)))))))) / std::sqrt(k);
+  }
+  return 2.0 * kPi * scaled_i0;
+}
+
 double linear_visibility_ratio(double sigma_l, double sigma_prime_l, double d, double d_dtheta, double d_dphi) {
   const double spread = std::hypot(d_dtheta * sigma_l, d_dphi * sigma_prime_l);
   if (spread == 0.0) return d > 0.0 ? 1.0 : (d < 0.0 ? 0.0 : 0.5);

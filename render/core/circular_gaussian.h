@@ -69,6 +69,11 @@ ScaledCircularGaussian longitudinal_lobe_as_circular(double theta_o, double gamm
 // one σ = 0.5 (the widest the paper tabulates), 3.3 % with both, measured by 2D quadrature.
 double circular_gaussian_pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_prime_l);
 
+// ∫_{−π}^{π} g^c(x;μ,σ) dx = 2π e^{−κ} I₀(κ), κ = 2/σ², exactly (any μ: the whole circle). The
+// scaled Bessel function e^{−κ}I₀(κ) by Abramowitz & Stegun 9.8.1–9.8.2 (relative error < 1e−6); → √π σ for
+// narrow lobes (the Gaussian's integral), → 2π as σ → ∞. iwasaki.glsl evaluates the same polynomial.
+double circular_gaussian_circle_integral(double sigma);
+
 // The visibility ratio H(σ_l, σ'_l, d, ∇d) of seed 000 Eq. 12–14 for the linear visibility
 // V' = [∂d/∂θ·(θ−θ_l) + ∂d/∂φ·(φ−φ_k) + d > 0], with the circular Gaussians replaced by Gaussians over
 // the whole plane. Then ∂d/∂θ·(θ−θ_l) + ∂d/∂φ·(φ−φ_k) is normal with variance (d_θ²σ_l² + d_φ²σ'_l²)/2,

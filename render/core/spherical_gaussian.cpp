@@ -54,16 +54,27 @@ double sg_sharpness(double bandwidth) { return 2.0 / (bandwidth * bandwidth); }
 
 double sg_sphere_integral(double sharpness) { return 4.0 * kPi * one_minus_exp_over(2.0 * sharpness); }
 
+namespace {
+// Tokuyoshi 2022's lerp factor between the c = −1 and c = +1 ends, with its fitted steepness.
+double hemisphere_lerp_factor(double lambda, double c) {
+  constexpr double A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
+  const double t = lambda * std::sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
+  return t < kSmallSteepness ? 0.5 + 0.5 * c : 0.5 + 0.5 * std::erf(t * c) / std::erf(t);
+}
+}  // namespace
+
 double sg_hemisphere_integral(double sharpness, double cos_axis_normal) {
   const double lambda = sharpness, c = glm::clamp(cos_axis_normal, -1.0, 1.0);
   // Exact ends: the lobe centred on the pole (c = 1) or on the antipode (c = −1).
   const double upper = 2.0 * kPi * one_minus_exp_over(lambda);
   const double lower = std::exp(-lambda) * upper;
-  // Tokuyoshi 2022's fitted steepness of the Gaussian-CDF-shaped lerp factor.
-  constexpr double A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
-  const double t = lambda * std::sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
-  const double factor = t < kSmallSteepness ? 0.5 + 0.5 * c : 0.5 + 0.5 * std::erf(t * c) / std::erf(t);
-  return lower + (upper - lower) * factor;
+  return lower + (upper - lower) * hemisphere_lerp_factor(lambda, c);
+}
+
+double sg_hemisphere_fraction(double sharpness, double cos_axis_normal) {
+  const double lambda = sharpness, c = glm::clamp(cos_axis_normal, -1.0, 1.0);
+  const double e = std::exp(-lambda);
+  return (e + (1.0 - e) * hemisphere_lerp_factor(lambda, c)) / (1.0 + e);
 }
 
 double sg_clamped_cosine_integral(double sharpness, double cos_axis_normal) {
@@ -93,6 +104,23 @@ glm::dvec3 hemisphere_integral(const SphericalGaussian& g, const glm::dvec3& n) 
 
 glm::dvec3 irradiance(const SphericalGaussian& g, const glm::dvec3& n) {
   return g.amplitude * sg_clamped_cosine_integral(g.sharpness, glm::dot(g.axis, n));
+}
+
+SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n, double min_sharpness) {
+  const double c = glm::dot(g.axis, n);
+  if (c >= 0.0) return g;
+  glm::dvec3 e = g.axis - c * n;
+  const double s = glm::length(e);
+  if (s > 1e-6) {
+    e /= s;
+  } else {  // the nadir: any horizon direction
+    e = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+  }
+  SphericalGaussian out;
+  out.axis = e;
+  out.sharpness = std::max(g.sharpness * s, min_sharpness);
+  out.amplitude = g.amplitude * (sg_clamped_cosine_integral(g.sharpness, c) / sg_clamped_cosine_integral(out.sharpness, 0.0));
+  return out;
 }
 
 SphericalGaussian product(const SphericalGaussian& a, const SphericalGaussian& b) {

@@ -45,6 +45,11 @@ double sg_sphere_integral(double sharpness);
 // itself wherever that is at least 10 % of the whole-sphere integral (worst at λ ≈ 5, c ≈ −0.59).
 double sg_hemisphere_integral(double sharpness, double cos_axis_normal);
 
+// The share of an SG's sphere integral above the plane ω·n = 0: sg_hemisphere_integral over
+// sg_sphere_integral, = (e^{−λ} + (1 − e^{−λ})·factor)/(1 + e^{−λ}) with the same fitted factor.
+// 1/(1 + e^{λ}) at c = −1, ½ at c = 0, 1/(1 + e^{−λ}) at c = 1; → ½erfc(−c√(λ/2)) for sharp lobes.
+double sg_hemisphere_fraction(double sharpness, double cos_axis_normal);
+
 // ∫_{S²} exp(λ(ω·ξ−1)) max(ω·n, 0) dω with c = ξ·n: the clamped-cosine (irradiance) convolution.
 // Tokuyoshi et al. 2024 ("Hierarchical Light Sampling with Accurate Spherical Gaussian Lighting"):
 // a lerp between the exact values at c = −1 and c = +1 with a factor built from the exact
@@ -62,6 +67,14 @@ glm::dvec3 integral(const SphericalGaussian& g);
 glm::dvec3 hemisphere_integral(const SphericalGaussian& g, const glm::dvec3& n);
 // ∫_{S²} G(ω) max(ω·n, 0) dω: irradiance at a normal n from G (approximation above).
 glm::dvec3 irradiance(const SphericalGaussian& g, const glm::dvec3& n);
+
+// The part of G above the plane ω·n = 0 as one SG whose axis is not below it: G itself when
+// ξ·n ≥ 0; otherwise, with ξ = c·n + s·e (c < 0, e on the horizon), the SG on e whose sharpness
+// λ·s is G's own along the horizon (G restricted to the horizon is μe^{λ(s−1)}·e^{λs(ω·e−1)}),
+// and whose amplitude gives it G's power above the plane: μ' = μ·H(λ, c)/H(λ', 0), H =
+// sg_hemisphere_integral. At the nadir e is any horizon direction and λ' the floor: the visible
+// part is a ring, nearly uniform for the broad ground lobes a sky's fit holds. λ' ≥ `min_sharpness`.
+SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n, double min_sharpness);
 
 // The product of two SGs is an SG, exactly: λ_m ξ_m = λ_a ξ_a + λ_b ξ_b, λ_m = |λ_a ξ_a + λ_b ξ_b|,
 // μ_m = μ_a μ_b exp(λ_m − λ_a − λ_b) (amplitudes multiply per channel). Where the lobes cancel

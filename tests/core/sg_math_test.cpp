@@ -534,3 +534,45 @@ TEST(CircularGaussian, VisiblePairIntegralMatchesHalfPlaneQuadrature) {
   EXPECT_EQ(linear_visibility_ratio(0.3, 0.3, -0.1, 0.0, 0.0), 0.0);
   EXPECT_EQ(linear_visibility_ratio(0.3, 0.3, 0.0, 0.0, 0.0), 0.5);
 }
+
+TEST(SphericalGaussian, HemisphereFractionIsTheHemisphereIntegralsShare) {
+  // Against the ring quadrature of the upper hemisphere over the exact sphere integral.
+  for (double lambda : {0.0625, 0.3, 2.0, 16.0, 500.0})
+    for (double c : {-1.0, -0.6, -0.1, 0.0, 0.3, 0.9, 1.0}) {
+      const double exact = hemisphere_quadrature(lambda, c) / sg_sphere_integral(lambda);
+      EXPECT_NEAR(sg_hemisphere_fraction(lambda, c), exact, 0.006) << "λ " << lambda << " c " << c;
+    }
+  EXPECT_NEAR(sg_hemisphere_fraction(2.0, -1.0), 1.0 / (1.0 + std::exp(2.0)), 1e-12);
+}
+
+TEST(SphericalGaussian, AboveHorizonKeepsTheClampedCosinePowerOnTheHorizon) {
+  const dvec3 n(0, 0, 1);
+  const SphericalGaussian up{glm::normalize(dvec3(0.3, 0.1, 0.9)), 3.0, dvec3(1.0)};
+  const SphericalGaussian same = above_horizon(up, n, 0.0625);
+  EXPECT_EQ(same.axis, up.axis);
+  EXPECT_EQ(same.sharpness, up.sharpness);
+  for (const SphericalGaussian& g : {SphericalGaussian{glm::normalize(dvec3(0.6, 0.2, -0.5)), 2.0, dvec3(1.0, 2.0, 3.0)},
+                                     SphericalGaussian{dvec3(0, 0, -1), 0.28, dvec3(1.0)}}) {
+    const SphericalGaussian a = above_horizon(g, n, 0.0625);
+    EXPECT_NEAR(glm::dot(a.axis, n), 0.0, 1e-12);  // on the horizon
+    // λ' is G's sharpness along the horizon, λ·√(1 − c²), or the floor.
+    const double c = glm::dot(g.axis, n);
+    EXPECT_NEAR(a.sharpness, std::max(g.sharpness * std::sqrt(1 - c * c), 0.0625), 1e-12);
+    // The same irradiance at n as G's own (the clamped-cosine integral of G, closed form checked above).
+    const dvec3 e0 = irradiance(g, n), e1 = irradiance(a, n);
+    EXPECT_NEAR(e1.b, e0.b, 1e-9 * e0.b);
+    EXPECT_NEAR(e1.r / e1.b, g.amplitude.r / g.amplitude.b, 1e-12);
+  }
+}
+
+TEST(CircularGaussian, CircleIntegralMatchesQuadrature) {
+  for (double sigma : {0.02, 0.1, 0.5, 1.0, 1.1, 2.0, 5.0, 40.0}) {
+    double sum = 0.0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) sum += circular_gaussian(-kPi + (i + 0.5) * 2 * kPi / n, 0.3, sigma);
+    sum *= 2 * kPi / n;
+    EXPECT_NEAR(circular_gaussian_circle_integral(sigma), sum, 1e-6 * sum) << "σ " << sigma;
+  }
+  // The Gaussian limit with I₀'s first asymptotic term: √π σ (1 + σ²/16).
+  EXPECT_NEAR(circular_gaussian_circle_integral(0.01), std::sqrt(kPi) * 0.01 * (1 + 1e-4 / 16), 1e-6 * 0.01);
+}

@@ -39,6 +39,9 @@ SgLighting test_lights() {
   l.push_back({glm::normalize(dvec3(-0.9, 0.1, 0.15)), 12.0, dvec3(0.8, 1.0, 1.3)});
   l.push_back({glm::normalize(dvec3(0.2, 0.9, 0.4)), 3.0, dvec3(0.4, 0.4, 0.5)});
   l.push_back({glm::normalize(dvec3(0.0, 0.0, 1.0)), 150.0, dvec3(2.0, 2.0, 2.0)});
+  // A sky's broad ground lobe, below every surface facing up: shaded as its part above the
+  // surface (above_horizon), at a λ' between T's levels.
+  l.push_back({glm::normalize(dvec3(0.1, 0.2, -0.97)), 0.3, dvec3(0.5, 0.6, 0.4)});
   return l;
 }
 
@@ -85,7 +88,7 @@ void check_parity(const Case& c, gpu::Method method) {
   const ClothBsdf bsdf(fabric, tables.tangent_samples);
   const TriangleMesh& mesh = scene.objects[cloth_index].mesh;
   std::unique_ptr<SgVisibility> grids;
-  if (c.expect_visibility) grids = std::make_unique<SgVisibility>(SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs));
+  if (c.expect_visibility) grids = std::make_unique<SgVisibility>(SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs, true));
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double worst = 0, visibility_effect = 0;

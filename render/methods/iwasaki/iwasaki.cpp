@@ -20,6 +20,28 @@ double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
   return sigma_k / std::sqrt(std::max(std::cos(theta) * std::cos(theta_k), 1e-6));
 }
 
+// Eq. 13 freezes σ' and the measure's cos θ (dω = cos θ dθ dφ) at the lobe's peak, and counts
+// the broad lobe's far sides at the peak's values. For the SG itself the exact integral is known,
+// ∫G dω = 2π(1 − e^{−2λ})/λ; its ratio to the frozen form at (θ_k, σ_k), with the φ integral over
+// the whole circle (circular_gaussian_circle_integral), corrects that: → 1 for sharp lobes, 0.71
+// for a λ = 0.28 lobe at the zenith. Kept in [¼, 1]: it only removes the frozen form's excess.
+// Near the thread's poles the frozen form vanishes with cos θ_k and the ratio grows past 1, but
+// there the model's cos²θ_l is taken at the peak as well, and letting the ratio brighten those
+// lobes (up to 4) leaves the pillow under skies 1–1.2 points of relative RMSE worse (IWASAKI.md).
+double separable_spread(double lambda, double theta_k, double sigma_k) {
+  constexpr double half_pi = 0.5 * kPi;
+  const double frozen = 0.5 * std::sqrt(kPi) * sigma_k *
+                        (std::erf((half_pi - theta_k) / sigma_k) - std::erf((-half_pi - theta_k) / sigma_k)) *
+                        circular_gaussian_circle_integral(lobe_sigma_prime(sigma_k, theta_k, theta_k)) *
+                        std::max(std::cos(theta_k), 1e-3);
+  return std::clamp(sg_sphere_integral(lambda) / frozen, 0.25, 1.0);
+}
+// The same correction for a lobe of θ-width σ_l ≤ σ_k (the SG merged with a longitudinal lobe):
+// it is second order in the width, so its logarithm scales with σ_l²/σ_k².
+double lobe_spread(double spread_k, double sigma_l, double sigma_k) {
+  return std::pow(spread_k, (sigma_l * sigma_l) / (sigma_k * sigma_k));
+}
+
 // The linear visibility of one (SG, tangent sample): d and ∇d looked up once, at the SG's own
 // direction (θ_k, φ_k), and carried to each lobe's peak along the plane they define. All lobes
 // peak at φ_k and near θ_k, and V' is linear anyway (Eq. 12): one SDF lookup instead of three.
@@ -28,13 +50,19 @@ struct LinearSdf {
   double d = 0, d_dtheta = 0, d_dphi = 0, theta = 0;
 };
 
-// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ over [−π/2, π/2]² (Eq. 12–13). V' is the
-// horizon's alone without an SDF; with one (whose bake counts everything below the horizon as
+// ∫∫ g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) V'(θ,φ) dθ dφ (Eq. 12–13), θ over [−π/2, π/2] and φ over the
+// whole circle: Eq. 13's square is the tangent sample's own hemisphere, a second cut next to the
+// surface's horizon (T already holds W's zeros below the sample), which for an untilted sample is
+// the same plane: a lobe at the horizon was counted at ¼ instead of ½. V' is the horizon's alone
+// without an SDF; with one (whose bake counts everything below the horizon as
 // occluded, so its nearest boundary may be the horizon itself) the smaller of the two ratios:
 // the visible set lies inside both, and a product would count the horizon twice.
-double pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_p, double horizon,
+double pair_integral(double theta_l, double sigma_l, double sigma_p, double horizon,
                      const LinearSdf& sdf, const IwasakiVisibility* vis) {
-  const double open = circular_gaussian_pair_integral(theta_l, sigma_l, phi_k, sigma_p);
+  constexpr double half_pi = 0.5 * kPi;
+  const double open = 0.5 * std::sqrt(kPi) * sigma_l *
+                      (std::erf((half_pi - theta_l) / sigma_l) - std::erf((-half_pi - theta_l) / sigma_l)) *
+                      circular_gaussian_circle_integral(sigma_p);
   if (!sdf.on) return open * horizon;
   const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
   const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
@@ -63,6 +91,24 @@ double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double
   return linear_visibility_ratio(sigma_l, sigma_p, h, h_dtheta, h_dphi);
 }
 
+double lobe_horizon_fraction(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
+                             double sigma_p) {
+  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const double radial = cp * np_n + sp * b_n;
+  const double h = st * t_n + ct * radial;
+  const double h_dtheta = ct * t_n - st * radial;
+  const double h_dphi = ct * (cp * b_n - sp * np_n);
+  // Angular widths along θ and along φ (σ'·cos θ on the sphere), weighted by the squares of h's
+  // angular gradient (h_θ, h_φ/cos θ), whose norm is √(1 − h²); at the poles of n, the mean.
+  const double width_phi = sigma_p * ct;
+  const double g_theta = h_dtheta * h_dtheta, g_phi = ct > 1e-6 ? h_dphi * h_dphi / (ct * ct) : 0.0;
+  const double grad = g_theta + g_phi;
+  const double mean = 0.5 * (sigma_l * sigma_l + width_phi * width_phi);
+  const double width2 = grad > 1e-6 ? (g_theta * sigma_l * sigma_l + g_phi * width_phi * width_phi) / grad : mean;
+  return sg_hemisphere_fraction(2.0 / width2, h);
+}
+
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,
                               const IwasakiVisibility* visibility) {
@@ -74,7 +120,8 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
   const dvec3 wo_local = local(wo);
 
   for (size_t sg_index = 0; sg_index < sgs.size(); ++sg_index) {
-    const SphericalGaussian& g = sgs[sg_index];
+    // An SG whose axis is below the surface: its part above it, with λ' no broader than T's levels.
+    const SphericalGaussian g = above_horizon(sgs[sg_index], frame.n, tables.lambdas.front());
     const dvec3 xi_local = local(g.axis);
     int s = 0;
     for (int j = 0; j < 2; ++j) {
@@ -89,6 +136,7 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
         const FiberAngles o = fiber_angles(tf, wo);
         const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
+        const double spread_k = separable_spread(g.sharpness, sg.theta_k, sg.sigma_k);
         LinearSdf sdf;
         if (visibility && visibility->sdf) {
           sdf.on = true;
@@ -112,9 +160,9 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           double fr = 0, geo = 0;
           const double cos_half = smooth(l.mu, fr, geo);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
-                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
-          surf += dvec3(T * l.alpha * fr * cos_half * geo * I);
+          const double I = pair_integral(l.mu, l.sigma, sp,
+                                         lobe_horizon_fraction(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
+          surf += dvec3(T * l.alpha * fr * cos_half * geo * I * lobe_spread(spread_k, l.sigma, sg.sigma_k));
         }
         // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
         {
@@ -123,19 +171,20 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           smooth(l.mu, fr, geo);
           const double t = 1.0 - fr;
           const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
-          const double I = pair_integral(l.mu, l.sigma, sg.phi_k, sp,
-                                         horizon_ratio(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
+          const double I = pair_integral(l.mu, l.sigma, sp,
+                                         lobe_horizon_fraction(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
           const double lobe = (1.0 - p.kd) * l.alpha * t * t * geo /
-                              std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I;
+                              std::max(std::cos(l.mu) + std::cos(o.theta), kModelDenominatorFloor) * I *
+                              lobe_spread(spread_k, l.sigma, sg.sigma_k);
 
           smooth(sg.theta_k, fr, geo);
           const double td = 1.0 - fr;
           const double spk = lobe_sigma_prime(sg.sigma_k, sg.theta_k, sg.theta_k);
           const double Ik =
-              pair_integral(sg.theta_k, sg.sigma_k, sg.phi_k, spk,
-                            horizon_ratio(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
+              pair_integral(sg.theta_k, sg.sigma_k, spk,
+                            lobe_horizon_fraction(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
           const double iso = p.kd * td * td * geo /
-                             std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik;
+                             std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik * spread_k;
           vol += T * (lobe + iso) * p.albedo;
         }
       }

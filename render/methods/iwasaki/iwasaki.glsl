@@ -5,20 +5,16 @@
 //   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
 //   and the surface's horizon as a second linear boundary (closed-form H, the smaller one wins).
 // The same steps as render/methods/iwasaki/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
-// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric), erf.glsl and
-// hemisphere_grid.glsl before it.
+// them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric), erf.glsl,
+// sg_lighting.glsl (the SG integrals) and hemisphere_grid.glsl before it.
 // Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
 // fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
 #define MAX_TABLES 512
+#define MAX_LEVELS 32
 const float HALF_PI = 1.57079632679490;
 
 uniform vec3 u_eye;
-#ifndef SG_LIGHTING_GLSL  // the same SG uniforms as sg_lighting.glsl, when a program links both (sheer)
-#define MAX_SGS 40
-uniform int u_sg_count;
-uniform vec3 u_sg_axis[MAX_SGS];
-uniform vec3 u_sg_amplitude[MAX_SGS];
-#endif
+// u_sg_count, u_sg_axis, u_sg_amplitude: sg_lighting.glsl's.
 uniform float u_sg_sigma[MAX_SGS];    // σ_k = √(2/λ_k)
 uniform ivec2 u_sg_levels[MAX_SGS];   // the two λ levels of T (WeightingTables::level_weights)
 uniform float u_sg_level_w[MAX_SGS];  // weight of the second
@@ -27,6 +23,7 @@ uniform highp sampler2DArray u_t_u;   // U factors: ξ node grid, 4 ranks per la
 uniform highp sampler2DArray u_t_v;   // V factors: ω_o node grid
 uniform ivec2 u_tables[MAX_TABLES];   // (first layer, layers) of table d·levels + l
 uniform int u_levels;
+uniform float u_log_lambdas[MAX_LEVELS];  // log λ of each level (WeightingTables::lambdas)
 uniform int u_sample_table[2 * MAX_TANGENT_SAMPLES];  // sample s (thread 0's, then thread 1's) → d
 uniform float u_xi_n;
 uniform float u_wo_n;
@@ -66,11 +63,32 @@ Lobe lobe_product(Lobe a, Lobe b) {
 }
 // iwasaki.cpp's lobe_sigma_prime: cos θ·cos θ_k kept ≥ 1e−6 (σ' = ∞ would make ∞·0 = NaN).
 float sigma_prime(float sigma_k, float theta, float theta_k) { return sigma_k / sqrt(max(cos(theta) * cos(theta_k), 1e-6)); }
-float pair_integral(float theta_l, float sigma_l, float phi_k, float sp) {
-  float a = erf_nr((HALF_PI - theta_l) / sigma_l) - erf_nr((-HALF_PI - theta_l) / sigma_l);
-  float b = erf_nr((HALF_PI - phi_k) / sp) - erf_nr((-HALF_PI - phi_k) / sp);
-  return 0.25 * PI * sigma_l * sp * a * b;
+// core's circular_gaussian_circle_integral: ∫ over the whole circle, 2π e^{−κ}I₀(κ) (A&S 9.8.1–2).
+float circle_integral(float sigma) {
+  float k = 2.0 / (sigma * sigma);
+  float scaled;
+  if (k < 3.75) {
+    float t = (k / 3.75) * (k / 3.75);
+    scaled = exp(-k) * (1.0 + t * (3.5156229 + t * (3.0899424 + t * (1.2067492 + t * (0.2659732 + t * (0.0360768 + t * 0.0045813))))));
+  } else {
+    float t = 3.75 / k;
+    scaled = (0.39894228 + t * (0.01328592 + t * (0.00225319 + t * (-0.00157565 + t * (0.00916281 +
+             t * (-0.02057706 + t * (0.02635537 + t * (-0.01647633 + t * 0.00392377)))))))) / sqrt(k);
+  }
+  return 2.0 * PI * scaled;
 }
+// iwasaki.cpp's pair_integral: θ over [−π/2, π/2] (Gaussian), φ over the whole circle.
+float pair_integral(float theta_l, float sigma_l, float sp) {
+  float a = erf_nr((HALF_PI - theta_l) / sigma_l) - erf_nr((-HALF_PI - theta_l) / sigma_l);
+  return 0.5 * sqrt(PI) * sigma_l * a * circle_integral(sp);
+}
+// iwasaki.cpp's separable_spread and lobe_spread.
+float separable_spread(float lambda, float theta_k, float sigma_k) {
+  float frozen = 0.5 * sqrt(PI) * sigma_k * (erf_nr((HALF_PI - theta_k) / sigma_k) - erf_nr((-HALF_PI - theta_k) / sigma_k)) *
+                 circle_integral(sigma_prime(sigma_k, theta_k, theta_k)) * max(cos(theta_k), 1e-3);
+  return clamp(4.0 * PI * sg_one_minus_exp_over(2.0 * lambda) / frozen, 0.25, 1.0);
+}
+float lobe_spread(float spread_k, float sigma_l, float sigma_k) { return pow(spread_k, (sigma_l * sigma_l) / (sigma_k * sigma_k)); }
 
 // --- methods/iwasaki_visibility.cpp: (d, ∂d/∂θ', ∂d/∂φ') of SG k blended over the corners
 // (step 2), then ∇d carried to a sample frame's (θ, φ) (step 3).
@@ -115,12 +133,35 @@ float horizon_h(float theta, float phi, float sigma_l, float sp, vec3 hz) {
   return 0.5 * erfc_nr(-h / spread);
 }
 
+// --- iwasaki.cpp's lobe_horizon_fraction: the SG share above the surface (core's
+// sg_hemisphere_fraction) for the lobe's width along h's gradient.
+float sg_hemisphere_fraction(float lambda, float c) {
+  c = clamp(c, -1.0, 1.0);
+  const float A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
+  float t = lambda * sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
+  float factor = t < 1e-6 ? 0.5 + 0.5 * c : 0.5 + 0.5 * erf_nr(t * c) / erf_nr(t);
+  float e = exp(-lambda);
+  return (e + (1.0 - e) * factor) / (1.0 + e);
+}
+float horizon_fraction(float theta, float phi, float sigma_l, float sp, vec3 hz) {
+  float ct = cos(theta), st = sin(theta), cp = cos(phi), sn = sin(phi);
+  float radial = cp * hz.y + sn * hz.z;
+  float h = st * hz.x + ct * radial;
+  float h_dtheta = ct * hz.x - st * radial, h_dphi = ct * (cp * hz.z - sn * hz.y);
+  float width_phi = sp * ct;
+  float g_theta = h_dtheta * h_dtheta, g_phi = ct > 1e-6 ? h_dphi * h_dphi / (ct * ct) : 0.0;
+  float grad = g_theta + g_phi;
+  float width2 = grad > 1e-6 ? (g_theta * sigma_l * sigma_l + g_phi * width_phi * width_phi) / grad
+                             : 0.5 * (sigma_l * sigma_l + width_phi * width_phi);
+  return sg_hemisphere_fraction(2.0 / width2, h);
+}
+
 // ∫∫ g^c g^c V' of one lobe (Eq. 12–13); `sdf` = (d, ∂d/∂θ, ∂d/∂φ) looked up once per (SG,
 // sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf);
 // V' is the horizon's alone, or the smaller of the horizon's and the SDF's (iwasaki.cpp).
 float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
-  float i = pair_integral(theta_l, sigma_l, phi_k, sp);
-  float h = horizon_h(theta_l, phi_k, sigma_l, sp, hz);
+  float i = pair_integral(theta_l, sigma_l, sp);
+  float h = horizon_fraction(theta_l, phi_k, sigma_l, sp, hz);
   if (!u_visibility) return i * h;
   return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
@@ -139,10 +180,30 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
     vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
     for (int k = 0; k < u_sg_count; ++k) {
       vec3 xi = u_sg_axis[k];
-      vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       float sigma_k = u_sg_sigma[k];
+      vec3 amplitude = u_sg_amplitude[k];
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
+      // core's above_horizon: a lobe whose axis is below the surface as its part above it.
+      float c = dot(xi, n);
+      if (c < 0.0) {
+        float lambda = 2.0 / (sigma_k * sigma_k);
+        vec3 e = xi - c * n;
+        float s = length(e);
+        e = s > 1e-6 ? e / s : normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+        float lp = max(lambda * s, exp(u_log_lambdas[0]));
+        amplitude *= sg_clamped_cosine_integral(lambda, c) / sg_clamped_cosine_integral(lp, 0.0);
+        xi = e;
+        sigma_k = sqrt(2.0 / lp);
+        // WeightingTables::level_weights for λ'.
+        float ll = clamp(log(lp), u_log_lambdas[0], u_log_lambdas[u_levels - 1]);
+        l0 = 0;
+        while (l0 + 2 < u_levels && u_log_lambdas[l0 + 1] < ll) ++l0;
+        l1 = min(l0 + 1, u_levels - 1);
+        lw = l1 > l0 ? clamp((ll - u_log_lambdas[l0]) / (u_log_lambdas[l1] - u_log_lambdas[l0]), 0.0, 1.0) : 0.0;
+      }
+      float lambda_k = 2.0 / (sigma_k * sigma_k);
+      vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       vec3 vis_k = vec3(0.0);
       if (u_visibility) {
         vis_k = bary.x * sg_visibility(corners.x, k);
@@ -170,6 +231,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
           float theta_k = fk.theta, phi_k = fk.phi;
           Lobe light = Lobe(1.0, theta_k, sigma_k);
+          float spread_k = separable_spread(lambda_k, theta_k, sigma_k);
           vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
           vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
@@ -181,7 +243,8 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
+            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
+                    lobe_spread(spread_k, l.sigma, sigma_k);
           }
           // Volume lobe and the isotropic k_d part.
           {
@@ -191,18 +254,18 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
             float sp = sigma_prime(sigma_k, l.mu, theta_k);
             float lobe = (1.0 - p.kd) * l.alpha * tr * tr * geo / max(cos(l.mu) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz);
+                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) * lobe_spread(spread_k, l.sigma, sigma_k);
             float cos_dk = cos(0.5 * (theta_k - fo.theta));
             float tk = 1.0 - fresnel_dielectric(p.eta, cos_dk * cos_half);
             float geok = cos(theta_k) * cos(theta_k) / max(cos_dk * cos_dk, DENOMINATOR_FLOOR);
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz);
+                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz) * spread_k;
             vol += T * (lobe + iso) * p.albedo;
           }
         }
-        surface += u_sg_amplitude[k] * surf / float(count);
-        volume += u_sg_amplitude[k] * vol / float(count);
+        surface += amplitude * surf / float(count);
+        volume += amplitude * vol / float(count);
       }
     }
   }

@@ -5,8 +5,10 @@
 // each longitudinal lobe g^u(θ_h; γ) replaced by a circular Gaussian in θ_i and merged with
 // the SG's, the smooth factors taken at the product's peak (θ_l, φ_k), and the visibility as
 // the ratio H of the linearised-visibility integral (here: none, or a caller's H), and the
-// surface's own horizon as one more straight boundary whose H is exact in closed form (T is the
-// average of W above the horizon, so the lobes are cut there too; iwasaki.cpp's horizon_ratio).
+// surface's own horizon as the one cut of each lobe (T is the average of W above the horizon, so
+// the lobes are cut there too, by lobe_horizon_fraction; φ then runs over the whole circle).
+// An SG whose axis is below the surface is shaded as its part above it (above_horizon), and Eq.
+// 13's frozen σ' and cos θ are scaled to the SG's exact integral (iwasaki.cpp, separable_spread).
 #include <functional>
 #include <span>
 
@@ -41,6 +43,12 @@ struct IwasakiTerms {
 // of widths σ_l, σ' there: the closed form of Eq. 12 for that straight boundary (iwasaki.cpp).
 // Also the horizon the Lambertian floors divide out (lambert_visibility.h).
 double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l, double sigma_p);
+// The share of a lobe of widths σ_l, σ' at (θ, φ) of sample frame `tf` above the surface: the
+// share of an SG above a plane (sg_hemisphere_fraction, exact at the poles) for the lobe's width
+// along h = ω·n's gradient. Equals horizon_ratio for sharp lobes near the horizon; unlike it, it
+// keeps a broad lobe's far side below the surface out, and a nadir lobe's tail above it in.
+double lobe_horizon_fraction(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
+                             double sigma_p);
 
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,

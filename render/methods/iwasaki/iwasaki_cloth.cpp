@@ -43,8 +43,8 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 IwasakiShaders iwasaki_shaders() {
   IwasakiShaders s;
   s.pixel_vs = {"iwasaki.vert"};
-  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"};
-  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
+  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"};
+  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
   s.vertex_vs = {"iwasaki_vertex.vert"};
   s.vertex_fs = {"iwasaki_vertex.frag"};
   return s;
@@ -108,7 +108,7 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
 std::optional<SgVisibility> IwasakiCloth::prepare_lighting(size_t handle, const SgLighting& sgs) const {
   const Object& o = *objects_.at(handle);
   if (!o.visibility) return std::nullopt;
-  return SgVisibility::compute(*o.visibility, *o.source, shaded(sgs));
+  return SgVisibility::compute(*o.visibility, *o.source, shaded(sgs), shaders_.sdf_above_horizon);
 }
 
 void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) {
@@ -170,7 +170,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
   if (shaders_.upload) shaders_.upload(program_, o.bsdf->fabric(), drawn);
   if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
-    o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn));
+    o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon));
     o.computed_for = drawn;
   }
   // Samplers of every declared unit get a texture of their type, used or not.

@@ -37,6 +37,9 @@ struct IwasakiShaders {
   // Uniforms of one object's draw beyond seed 000's, on the program in use (per pixel: the draw;
   // per vertex: the pass), given its fabric and the SGs drawn (zero-amplitude lobes left out).
   std::function<void(const GlProgram&, const Fabric&, const SgLighting&)> upload;
+  // SgVisibility::compute's `above_horizon`: d looked up where iwasaki.glsl shades a lobe whose
+  // axis is below a vertex's surface; false for a layer that reads d at the SG axes (sheer).
+  bool sdf_above_horizon = true;
 };
 IwasakiShaders iwasaki_shaders();
 

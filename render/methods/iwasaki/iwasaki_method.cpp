@@ -9,7 +9,7 @@
 namespace weft::methods {
 
 namespace {
-const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "hemisphere_grid.glsl", "iwasaki.glsl"};
+const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl"};
 
 RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation) {
   RuntimeMethod m;

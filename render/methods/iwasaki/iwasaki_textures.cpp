@@ -1,6 +1,7 @@
 #include "methods/iwasaki/iwasaki_textures.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -29,6 +30,9 @@ void linear_clamped(GLenum target) {
 
 WeightingTablesTexture::WeightingTablesTexture(const WeightingTables& t) : tables_(&t) {
   require_float_linear();
+  if (t.level_count() > kMaxIwasakiLevels)
+    throw GpuError("method iwasaki: " + std::to_string(t.level_count()) + " λ levels, at most " +
+                   std::to_string(kMaxIwasakiLevels));
   if (int(t.tables.size()) > kMaxIwasakiTables)
     throw GpuError("method iwasaki: " + std::to_string(t.tables.size()) + " weighting tables; the shader takes " +
                    std::to_string(kMaxIwasakiTables));
@@ -72,6 +76,9 @@ void WeightingTablesTexture::bind(const GlProgram& p, int unit) const {
   glUniform1i(p.uniform("u_t_v"), unit + 1);
   glUniform2iv(p.uniform("u_tables"), GLsizei(index_.size() / 2), index_.data());
   glUniform1i(p.uniform("u_levels"), t.level_count());
+  std::vector<GLfloat> log_lambdas;
+  for (double l : t.lambdas) log_lambdas.push_back(GLfloat(std::log(l)));
+  glUniform1fv(p.uniform("u_log_lambdas"), GLsizei(log_lambdas.size()), log_lambdas.data());
   std::vector<GLint> sample_table(2 * kMaxTangentSamples, 0);
   for (int j = 0, s = 0; j < 2; ++j)
     for (int k = 0; k < t.tangent_samples[j]; ++k, ++s) sample_table[j * kMaxTangentSamples + k] = t.sample_table[s];

@@ -19,6 +19,7 @@ namespace weft::gpu {
 
 // Must match MAX_TABLES in iwasaki.glsl.
 inline constexpr int kMaxIwasakiTables = 512;
+inline constexpr int kMaxIwasakiLevels = 32;  // iwasaki.glsl's MAX_LEVELS
 
 class WeightingTablesTexture {
 public:

@@ -9,7 +9,8 @@
 
 namespace weft {
 
-SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh& mesh, const SgLighting& sgs) {
+SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh& mesh, const SgLighting& sgs,
+                                   bool above_horizon) {
   SgVisibility out;
   out.vertices = o.vertex_count();
   out.sgs = int(sgs.size());
@@ -40,7 +41,7 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
       return x;
     };
     for (size_t k = 0; k < sgs.size(); ++k) {
-      const dvec3 w = glm::normalize(sgs[k].axis);
+      const dvec3 w = above_horizon ? weft::above_horizon(sgs[k], f.n, 0.0).axis : glm::normalize(sgs[k].axis);
       const double wu = std::clamp(glm::dot(w, f.u), -1.0, 1.0), wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
       const double theta_v = std::atan2(wu, std::sqrt(std::max(wn * wn + wv * wv, 1e-8))), phi_v = std::atan2(wv, wn);
       const double gi = std::clamp((theta_v + kHalfPi) / h - 0.5, 0.0, double(n - 1));

@@ -32,7 +32,10 @@ struct SgVisibility {
   int sgs = 0;
   std::vector<float> values;  // [vertex][sg] × (d, ∂d/∂θ', ∂d/∂φ') (radians, vertex frame)
   // `mesh`: the object's mesh (the vertex frames the bake cast from: normal + warp).
-  static SgVisibility compute(const ObjectVisibility& visibility, const TriangleMesh& mesh, const SgLighting& sgs);
+  // `above_horizon`: look each SG up where iwasaki shades it at that vertex, the axis of
+  // above_horizon(G, vertex normal) (spherical_gaussian.h), instead of at its own axis.
+  static SgVisibility compute(const ObjectVisibility& visibility, const TriangleMesh& mesh, const SgLighting& sgs,
+                              bool above_horizon = false);
   dvec3 at(size_t vertex, int sg) const {
     const float* p = &values[(vertex * size_t(sgs) + size_t(sg)) * 3];
     return dvec3(p[0], p[1], p[2]);

@@ -26,6 +26,7 @@ gpu::IwasakiShaders sheer_shaders() {
   s.pass_fs = with("sheer_vertex_pass.frag");
   s.vertex_vs = {"sheer_vertex.vert"};
   s.vertex_fs = {"sheer_vertex.frag"};
+  s.sdf_above_horizon = false;  // sheer_sdf_share reads d at the SG axes
   // sg_lighting.glsl's sharpnesses (the layer's irradiance) and the layer's τ and A.
   s.upload = [](const gpu::GlProgram& program, const Fabric& fabric, const SgLighting& drawn) {
     std::vector<float> sharpness;
