@@ -70,6 +70,22 @@ double pair_integral(double theta_l, double sigma_l, double sigma_p, double hori
   return open * std::min(h, horizon);
 }
 
+// The surface's height h = ω·n at direction (θ, φ) of a sample frame, and its partial derivatives:
+// the straight boundary both horizon cuts below linearise or measure along.
+struct SurfaceHeight {
+  double h, h_dtheta, h_dphi;
+};
+
+SurfaceHeight surface_height(const ThreadFrame& tf, const dvec3& n, double theta, double phi) {
+  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const double radial = cp * np_n + sp * b_n;
+  const double h = st * t_n + ct * radial;
+  const double h_dtheta = ct * t_n - st * radial;
+  const double h_dphi = ct * (cp * b_n - sp * np_n);
+  return {h, h_dtheta, h_dphi};
+}
+
 }  // namespace
 
 // The surface's own horizon as a visibility boundary in a sample frame. Eq. 9's T averages W over
@@ -82,23 +98,14 @@ double pair_integral(double theta_l, double sigma_l, double sigma_p, double hori
 // lights sit a few degrees above the horizon, and 6.3 % → 3.8 % under courtyard.
 double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
                      double sigma_p) {
-  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
-  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
-  const double radial = cp * np_n + sp * b_n;
-  const double h = st * t_n + ct * radial;
-  const double h_dtheta = ct * t_n - st * radial;
-  const double h_dphi = ct * (cp * b_n - sp * np_n);
-  return linear_visibility_ratio(sigma_l, sigma_p, h, h_dtheta, h_dphi);
+  const SurfaceHeight s = surface_height(tf, n, theta, phi);
+  return linear_visibility_ratio(sigma_l, sigma_p, s.h, s.h_dtheta, s.h_dphi);
 }
 
 double lobe_horizon_fraction(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
                              double sigma_p) {
-  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
-  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
-  const double radial = cp * np_n + sp * b_n;
-  const double h = st * t_n + ct * radial;
-  const double h_dtheta = ct * t_n - st * radial;
-  const double h_dphi = ct * (cp * b_n - sp * np_n);
+  const auto [h, h_dtheta, h_dphi] = surface_height(tf, n, theta, phi);
+  const double ct = std::cos(theta);
   // Angular widths along θ and along φ (σ'·cos θ on the sphere), weighted by the squares of h's
   // angular gradient (h_θ, h_φ/cos θ), whose norm is √(1 − h²); at the poles of n, the mean.
   const double width_phi = sigma_p * ct;
