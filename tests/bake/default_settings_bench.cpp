@@ -16,8 +16,7 @@
 #include <sstream>
 
 #include "bake/selection_bundle.h"
-#include "lighting/env_map.h"
-#include "lighting/sg_fit.h"
+#include "support/scene_case.h"
 #include "runtime/paper_tangent_samples.h"
 
 using namespace weft;
@@ -45,20 +44,9 @@ TEST(DefaultSettings, WithinHalfAPointOfThePaper) {
   while (std::getline(list, item, ',')) {
     const auto colon = item.find(':');
     const std::string scene_name = item.substr(0, colon), fabric = item.substr(colon + 1);
-    Scene scene = load_scene_named(scene_name, WEFT_SOURCE_ASSETS, fabric);
-    std::map<std::string, Fabric> fabrics;
-    std::map<std::string, std::string> texts;
-    for (auto& o : scene.objects)
-      if (o.material == Material::cloth) {
-        o.fabric = fabric;
-        std::ifstream in(fabric_file(fabric, WEFT_SOURCE_ASSETS "/fabrics"));
-        std::ostringstream text;
-        text << in.rdbuf();
-        texts[fabric] = text.str();
-        fabrics.emplace(fabric, parse_fabric(text.str(), fabric));
-      }
-    const SgLighting sgs = fit_sgs(
-        load_env_map(env_map_file(scene.environment, WEFT_SOURCE_ASSETS "/envmaps"), NonFinitePolicy::clamp), {});
+    const test::SceneCase sc = test::scene_in_fabric(scene_name, fabric);
+    const Scene& scene = sc.scene;
+    const auto& fabrics = sc.fabrics;
     std::map<std::string, double> error;
     for (const Case& c : settings) {
       // One setting: every knob offers one value, so the search measures it and stops.
@@ -75,7 +63,7 @@ TEST(DefaultSettings, WithinHalfAPointOfThePaper) {
       o.knobs.pca_errors = {0.01};
       o.visibility.lambertian_resolution = c.floor_sdf;
       o.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
-      const SceneSelection s = select_scene_settings(scene, fabrics, texts, sgs, o);
+      const SceneSelection s = select_scene_settings(scene, fabrics, sc.texts, sc.sgs, o);
       std::string views;
       for (double e : s.chosen.view_errors) views += (views.empty() ? "" : " ") + std::to_string(e);
       std::printf("%s,%s,%s,%d,%g,%d,%.4f,%s,%.2f,%.1f\n", scene_name.c_str(), fabric.c_str(), c.name, c.levels,

@@ -8,32 +8,16 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "bake/scene_selection.h"
-#include "lighting/env_map.h"
-#include "lighting/sg_fit.h"
+#include "support/scene_case.h"
 
 using namespace weft;
 
 TEST(SampleAsymmetry, LinenAtGrid12) {
   const std::string fabric = "linen_plain";
   const char* scene_name = std::getenv("WEFT_BENCH_SCENE");
-  Scene scene = load_scene_named(scene_name ? scene_name : "pillow", WEFT_SOURCE_ASSETS, fabric);
-  std::map<std::string, Fabric> fabrics;
-  std::map<std::string, std::string> texts;
-  for (auto& o : scene.objects)
-    if (o.material == Material::cloth) {
-      o.fabric = fabric;
-      std::ifstream in(fabric_file(fabric, WEFT_SOURCE_ASSETS "/fabrics"));
-      std::ostringstream text;
-      text << in.rdbuf();
-      texts[fabric] = text.str();
-      fabrics.emplace(fabric, parse_fabric(text.str(), fabric));
-    }
-  const SgLighting sgs = fit_sgs(
-      load_env_map(env_map_file(scene.environment, WEFT_SOURCE_ASSETS "/envmaps"), NonFinitePolicy::clamp), {});
+  const test::SceneCase c = test::scene_in_fabric(scene_name ? scene_name : "pillow", fabric);
   SceneSelectionOptions o;
   o.target_error = 5.0;  // every setting holds: the descent measures each one-step-down setting
   o.cache = default_reference_cache();
@@ -45,7 +29,7 @@ TEST(SampleAsymmetry, LinenAtGrid12) {
   o.knobs.sdf_resolutions = {128};
   o.knobs.pca_errors = {0.01};
   o.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
-  const SceneSelection s = select_scene_settings(scene, fabrics, texts, sgs, o);
+  const SceneSelection s = select_scene_settings(c.scene, c.fabrics, c.texts, c.sgs, o);
   std::printf("samples_thread1,samples_thread2,worst_view_relative_rmse,view_errors\n");
   for (const auto& m : s.tried) {
     std::string views;
