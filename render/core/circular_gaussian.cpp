@@ -60,11 +60,13 @@ ScaledCircularGaussian longitudinal_lobe_as_circular(double theta_o, double gamm
   return {1.0 / (std::sqrt(kPi) * gamma_s), -theta_o, 2.0 * gamma_s};
 }
 
-double circular_gaussian_pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_prime_l) {
+double gaussian_half_turn_integral(double mu, double sigma) {
   constexpr double h = 0.5 * kPi;
-  const double along_theta = std::erf((h - theta_l) / sigma_l) - std::erf((-h - theta_l) / sigma_l);
-  const double along_phi = std::erf((h - phi_k) / sigma_prime_l) - std::erf((-h - phi_k) / sigma_prime_l);
-  return 0.25 * kPi * sigma_l * sigma_prime_l * along_theta * along_phi;
+  return 0.5 * std::sqrt(kPi) * sigma * (std::erf((h - mu) / sigma) - std::erf((-h - mu) / sigma));
+}
+
+double circular_gaussian_pair_integral(double theta_l, double sigma_l, double phi_k, double sigma_prime_l) {
+  return gaussian_half_turn_integral(theta_l, sigma_l) * gaussian_half_turn_integral(phi_k, sigma_prime_l);
 }
 
 double circular_gaussian_circle_integral(double sigma) {

@@ -63,6 +63,10 @@ double evaluate_split(const SgCircularSplit& s, double theta_i, double phi_i, do
 // volume lobes (γ_v = 60°), where the Gaussian and circular lobes differ at the tails.
 ScaledCircularGaussian longitudinal_lobe_as_circular(double theta_o, double gamma_s);
 
+// ∫_{−π/2}^{π/2} g(x;μ,σ) dx for the Gaussian g = e^{−(x−μ)²/σ²} standing in for g^c:
+// (√π σ/2)·[erf((π/2−μ)/σ) − erf((−π/2−μ)/σ)]. One factor of Eq. 13.
+double gaussian_half_turn_integral(double mu, double sigma);
+
 // Seed 000 Eq. 13: ∫∫_{[−π/2,π/2]²} g^c(θ;θ_l,σ_l) g^c(φ;φ_k,σ'_l) dθ dφ with each g^c replaced by g,
 // = (π σ_l σ'_l / 4)·[erf((π/2−θ_l)/σ_l) − erf((−π/2−θ_l)/σ_l)]·[erf((π/2−φ_k)/σ'_l) − erf((−π/2−φ_k)/σ'_l)].
 // Exact for g; against the circular Gaussians the error is set by the wider bandwidth: 1.6 % with

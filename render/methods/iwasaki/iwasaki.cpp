@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "core/circular_gaussian.h"
@@ -11,8 +10,6 @@
 namespace weft {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // σ' of Eq. 11 at a lobe's peak, with cos θ·cos θ_k kept ≥ 1e−6: at a pole (or a peak past
 // it) σ' → ∞ and σ'·[erf − erf] tends to a finite limit, but ∞·0 would give NaN.
@@ -29,9 +26,7 @@ double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
 // there the model's cos²θ_l is taken at the peak as well, and letting the ratio brighten those
 // lobes (up to 4) leaves the pillow under skies 1–1.2 points of relative RMSE worse (IWASAKI.md).
 double separable_spread(double lambda, double theta_k, double sigma_k) {
-  constexpr double half_pi = 0.5 * kPi;
-  const double frozen = 0.5 * std::sqrt(kPi) * sigma_k *
-                        (std::erf((half_pi - theta_k) / sigma_k) - std::erf((-half_pi - theta_k) / sigma_k)) *
+  const double frozen = gaussian_half_turn_integral(theta_k, sigma_k) *
                         circular_gaussian_circle_integral(lobe_sigma_prime(sigma_k, theta_k, theta_k)) *
                         std::max(std::cos(theta_k), 1e-3);
   return std::clamp(sg_sphere_integral(lambda) / frozen, 0.25, 1.0);
@@ -59,10 +54,7 @@ struct LinearSdf {
 // the visible set lies inside both, and a product would count the horizon twice.
 double pair_integral(double theta_l, double sigma_l, double sigma_p, double horizon,
                      const LinearSdf& sdf, const IwasakiVisibility* vis) {
-  constexpr double half_pi = 0.5 * kPi;
-  const double open = 0.5 * std::sqrt(kPi) * sigma_l *
-                      (std::erf((half_pi - theta_l) / sigma_l) - std::erf((-half_pi - theta_l) / sigma_l)) *
-                      circular_gaussian_circle_integral(sigma_p);
+  const double open = gaussian_half_turn_integral(theta_l, sigma_l) * circular_gaussian_circle_integral(sigma_p);
   if (!sdf.on) return open * horizon;
   const double d = sdf.d + sdf.d_dtheta * (theta_l - sdf.theta);
   const double h = vis->kappa ? vis->kappa->h(sigma_l, sigma_p, d, sdf.d_dtheta, sdf.d_dphi)
