@@ -16,6 +16,7 @@
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
+#include "scene/mesh_subdivision.h"
 
 namespace weft {
 namespace {
@@ -29,6 +30,7 @@ struct BakeArgs {
   // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
   std::vector<int> samples;
+  int subdivide = -1;  // ≥ 0: midpoint subdivision levels of the cloth meshes (the search's choice when < 0)
   SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h); holds --grid
 };
 
@@ -51,6 +53,8 @@ int run_bake(const BakeArgs& a) {
   if (!a.fabric.empty())
     for (auto& o : in.scene.objects)
       if (o.material == Material::cloth) o.fabric = a.fabric;
+  const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
+  if (a.subdivide > 0 && !search) in.scene = refine_cloth_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");
   try {
     in.fabrics = bundle_fabric_texts(in.scene, assets_dir() / "fabrics", a.only_scene_fabrics);
@@ -77,7 +81,6 @@ int run_bake(const BakeArgs& a) {
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
   std::string tables_line = "no seed 000 tables (--no-tables)";
-  const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
   if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
@@ -93,6 +96,7 @@ int run_bake(const BakeArgs& a) {
     const bool fitted = a.sgs_file.empty() && a.fit_sgs == 0;  // the search chooses their count too
     const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
     SceneSelectionOptions select = a.select;
+    if (a.subdivide >= 0) select.knobs.subdivisions = {a.subdivide};
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     try {
       tables_line = search ? add_selected_bundle(writer, in, select, sg_map) : add_baked_sections(writer, in.scene, in.fabrics, opt);
@@ -133,8 +137,8 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
   sub->add_option("--target-error", a->select.target_error,
-                  "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, per-vertex or "
-                  "per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
+                  "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
+                  "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
@@ -144,6 +148,10 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
+  sub->add_option("--subdivide", a->subdivide,
+                  "Midpoint subdivision levels of the cloth meshes (each x4 triangles; finer per-vertex shading, more "
+                  "vertices to shade and store). Default: 0, or with --target-error the level the search chooses")
+      ->check(CLI::Range(0, kMaxSubdivision));
   return [a] { return run_bake(*a); };
 }
 

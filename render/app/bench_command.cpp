@@ -47,6 +47,10 @@ CommandAction add_bench_command(CLI::App& app) {
                   "Add 'iwasaki (target E)' and 'iwasaki_vertex (target E)' rows per case, with the setting "
                   "`weft bake --target-error E` picks for each, next to their paper-default rows (0: off)")
       ->capture_default_str();
+  sub->add_option("--subdivide", a->subdivide,
+                  "Midpoint subdivision levels (1..3, e.g. 1,2): after each per-vertex method's row, a row "
+                  "'METHOD (subdivision L)' drawn on the cloth meshes refined L levels, visibility baked on them")
+      ->delimiter(',');
   sub->add_option("--sweep-tangent-samples", a->sweep_tangent_samples,
                   "iwasaki tangent samples per thread to sweep on the first scene with its own fabric and map "
                   "(e.g. 1,2,3,6), one in-memory bake each")

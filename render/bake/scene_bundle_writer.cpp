@@ -23,6 +23,11 @@ std::vector<float> flatten(const std::vector<V>& values, int n) {
 
 }  // namespace
 
+size_t mesh_section_bytes(const TriangleMesh& m) {
+  const size_t per_vertex = 3 + 3 + (m.uvs.empty() ? 0 : 2) + (m.warps.empty() ? 0 : 3);  // floats
+  return 4 * (per_vertex * m.positions.size() + 3 * m.triangles.size());
+}
+
 void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in) {
   const Scene& s = in.scene;
   json scene;

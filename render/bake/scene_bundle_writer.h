@@ -17,4 +17,8 @@ struct SceneBundleInput {
 // Adds the scene sections to `writer` (which may also receive other stages' tables).
 void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& input);
 
+// Payload bytes of one mesh's `mesh/<i>/…` sections as add_scene_sections writes them (f32
+// attributes, u32 indices; without the 64-byte alignment padding).
+size_t mesh_section_bytes(const TriangleMesh& mesh);
+
 }  // namespace weft

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "bake/scene_bundle_writer.h"
 #include "bake/setting_truncation.h"
 #include "bake/sigmoid_gain.h"
 #include "bake/weighting_bake.h"
@@ -16,6 +17,7 @@
 #include "gpu/egl_context.h"
 #include "gpu/scene_renderer.h"
 #include "methods/sg_lighting_uniforms.h"
+#include "scene/mesh_subdivision.h"
 
 namespace weft {
 
@@ -44,6 +46,9 @@ bool straight(const Fabric& f, int thread) {
   return std::all_of(o.begin(), o.end(), [&](double x) { return x == o.front(); });
 }
 
+// A method that shades per vertex and interpolates (the one mesh density matters to).
+bool per_vertex(const std::string& method) { return method.find("vertex") != std::string::npos; }
+
 size_t visibility_bytes(const ObjectVisibility& v) {
   return 4 * (v.mean.size() + v.basis.size() + v.coefficients.size());
 }
@@ -59,15 +64,12 @@ public:
       for (const auto& [name, f] : fabrics_) curved_[j] = curved_[j] || !straight(f, j);
     views_ = refs.cameras;
     for (const auto& o2 : scene_.objects)
-      if (o2.material == Material::cloth) {
-        cloth_.push_back(fabrics_.at(o2.fabric));
-        cloth_vertices_.emplace_back(o2.fabric, double(o2.mesh.positions.size()));
-      }
+      if (o2.material == Material::cloth) cloth_.push_back(fabrics_.at(o2.fabric));
     for (PixelKind k : refs.images.at(0).kinds) cloth_pixels_ += k == PixelKind::cloth ? 1.0 : 0.0;
     // Occluded at all? The paper's SDF tells (an unoccluded scene stores no visibility).
     int paper_sdf = 0;
     while (paper_sdf + 1 < int(knobs_.sdf_resolutions.size()) && knobs_.sdf_resolutions[paper_sdf] < 128) ++paper_sdf;
-    occluded_ = !visibility(paper_sdf).empty();
+    occluded_ = !visibility(paper_sdf, 0).empty();
     if (occluded_) {
       const auto t0 = std::chrono::steady_clock::now();
       kappa_ = fit_sigmoid_gain_table(SigmoidGainTableSpec{});
@@ -78,8 +80,8 @@ public:
   bool occluded() const { return occluded_; }
   bool curved(int thread) const { return curved_[thread]; }
 
-  // Index limits of the knobs that matter for this scene (0: fixed at the first value).
-  int knob_count(int k) const {
+  // Index limits of the knobs that matter for this scene and method (1: fixed at the first value).
+  int knob_count(int k, int method) const {
     switch (k) {
       case 0: return curved_[0] ? int(knobs_.tangent_samples.size()) : 1;
       case 1: return curved_[1] ? int(knobs_.tangent_samples.size()) : 1;
@@ -87,7 +89,8 @@ public:
       case 3: return int(knobs_.svd_errors.size());
       case 4: return occluded_ ? int(knobs_.sdf_resolutions.size()) : 1;
       case 5: return occluded_ ? int(knobs_.pca_errors.size()) : 1;
-      default: return std::max<int>(knobs_.sg_counts.size(), 1);
+      case 6: return std::max<int>(knobs_.sg_counts.size(), 1);
+      default: return per_vertex(knobs_.methods[method]) ? int(knobs_.subdivisions.size()) : 1;
     }
   }
   static int& knob(SceneSetting& s, int k) {
@@ -98,14 +101,15 @@ public:
       case 3: return s.svd;
       case 4: return s.sdf;
       case 5: return s.pca;
-      default: return s.sgs;
+      case 6: return s.sgs;
+      default: return s.density;
     }
   }
-  static constexpr int kKnobs = 7;
+  static constexpr int kKnobs = 8;
 
   // The paper's setting (seed 000: its tangent samples, 9 levels, SVD 0.01, SDF 128², PCA
-  // 0.01 rad; the product card's 10 SGs), each knob at the nearest value it offers (the next
-  // larger where none is equal).
+  // 0.01 rad; the product card's 10 SGs; the scene's own mesh), each knob at the nearest value it
+  // offers (the next larger where none is equal).
   SceneSetting paper(int method) const {
     SceneSetting s;
     s.method = method;
@@ -130,6 +134,7 @@ public:
       while (s.pca + 1 < int(knobs_.pca_errors.size()) && knobs_.pca_errors[s.pca] > 0.01 + 1e-12) ++s.pca;
     }
     if (!knobs_.sg_counts.empty()) s.sgs = nearest(knobs_.sg_counts, 10);
+    if (per_vertex(knobs_.methods[method])) s.density = nearest(knobs_.subdivisions, 0);
     return s;
   }
 
@@ -139,7 +144,7 @@ public:
       d.tables.emplace(name, truncate_tables(tables(name, s.samples), knobs_.svd_errors[s.svd],
                                              knobs_.level_strides[s.levels]));
     if (occluded_) {
-      for (const auto& [object, v] : visibility(s.sdf))
+      for (const auto& [object, v] : visibility(s.sdf, s.density))
         d.visibility.emplace(object, truncate_visibility(v, knobs_.pca_errors[s.pca]));
       d.kappa = kappa_;
     }
@@ -151,6 +156,10 @@ public:
     auto bundle = std::make_shared<const IwasakiBundleData>(data(s));
     SettingMeasure m;
     m.setting = s;
+    m.subdivision = knobs_.subdivisions[s.density];
+    const Scene& drawn = scene(s.density);
+    for (size_t i = 0; i < drawn.objects.size(); ++i)
+      m.bytes += mesh_section_bytes(drawn.objects[i].mesh) - mesh_section_bytes(scene_.objects[i].mesh);
     for (const auto& [name, t] : bundle->tables) m.bytes += t.bytes();
     for (const auto& [object, v] : bundle->visibility) m.bytes += visibility_bytes(v);
     if (bundle->kappa) m.bytes += 4 * bundle->kappa->normalized_gains().size();
@@ -158,7 +167,7 @@ public:
     m.sg_count = int(sgs.size());
     m.work = work(s, *bundle, m.sg_count);
     ctx_.make_current();
-    gpu::SceneRenderer renderer(scene_, cloth_, gpu::parse_method(knobs_.methods[s.method]), 16, bundle);
+    gpu::SceneRenderer renderer(drawn, cloth_, gpu::parse_method(knobs_.methods[s.method]), 16, bundle);
     renderer.set_lighting(sgs);
     target_.bind();
     const int w = o_.views.width, h = o_.views.height;
@@ -204,6 +213,14 @@ public:
     if (o_.log) o_.log(line);
   }
 
+  // The scene at a density (knob index): its cloth meshes refined that many levels.
+  const Scene& scene(int density) {
+    const int levels = knobs_.subdivisions[density];
+    if (levels == 0) return scene_;
+    if (auto it = refined_.find(levels); it != refined_.end()) return it->second;
+    return refined_.emplace(levels, refine_cloth_meshes(scene_, levels)).first->second;
+  }
+
 private:
   const Scene& scene_;
   const std::map<std::string, Fabric>& fabrics_;
@@ -217,10 +234,10 @@ private:
   bool occluded_ = false;
   std::optional<SigmoidGainTable> kappa_;
   std::map<std::pair<std::string, std::array<int, 2>>, WeightingTables> tables_;
-  std::map<int, std::map<size_t, ObjectVisibility>> visibility_;
+  std::map<std::pair<int, int>, std::map<size_t, ObjectVisibility>> visibility_;  // by (SDF, density)
   std::map<SceneSetting, SettingMeasure> measured_;
   std::map<int, SgLighting> fits_;
-  std::vector<std::pair<std::string, double>> cloth_vertices_;  // fabric, vertex count per cloth object
+  std::map<int, Scene> refined_;  // by subdivision level > 0
   double cloth_pixels_ = 0.0;                                   // of view 0's reference
   std::vector<SettingMeasure> tried_;
   gpu::EglContext ctx_;
@@ -228,16 +245,18 @@ private:
 
   // The modelled frame cost of view 0: points shaded (cloth vertices per vertex, cloth pixels per
   // pixel) × SGs × tangent samples of the points' fabric (the runtime loops over both products).
-  double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) const {
+  double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) {
     double vertices = 0.0, vertex_samples = 0.0;
-    for (const auto& [fabric, n] : cloth_vertices_) {
-      const auto& t = d.tables.at(fabric).tangent_samples;
+    for (const auto& o : scene(s.density).objects) {
+      if (o.material != Material::cloth) continue;
+      const auto& t = d.tables.at(o.fabric).tangent_samples;
+      const double n = double(o.mesh.positions.size());
       vertices += n;
       vertex_samples += n * double(t[0] + t[1]);
     }
     if (vertices == 0.0) return 0.0;
-    const bool per_vertex = knobs_.methods[s.method].find("vertex") != std::string::npos;
-    return double(sg_count) * (per_vertex ? vertex_samples : cloth_pixels_ * vertex_samples / vertices);
+    return double(sg_count) *
+           (per_vertex(knobs_.methods[s.method]) ? vertex_samples : cloth_pixels_ * vertex_samples / vertices);
   }
 
   // Tables of one fabric at a tangent-sample pair (knob indices), at the richest levels and SVD error.
@@ -260,21 +279,36 @@ private:
     return tables_.emplace(key, std::move(t)).first->second;
   }
 
-  // Every occluded object's visibility at an SDF resolution (knob index), at the richest PCA error.
-  const std::map<size_t, ObjectVisibility>& visibility(int sdf) {
-    if (auto it = visibility_.find(sdf); it != visibility_.end()) return it->second;
+  // Every occluded object's visibility at an SDF resolution and a mesh density (knob indices), at
+  // the richest PCA error. Refinement leaves floors and occluders as they are: theirs is the
+  // unrefined scene's.
+  const std::map<size_t, ObjectVisibility>& visibility(int sdf, int density) {
+    const auto key = std::make_pair(sdf, density);
+    if (auto it = visibility_.find(key); it != visibility_.end()) return it->second;
+    const int levels = knobs_.subdivisions[density];
+    const auto level0 = std::find(knobs_.subdivisions.begin(), knobs_.subdivisions.end(), 0);
+    const bool reuse = levels != 0 && level0 != knobs_.subdivisions.end();
     std::map<size_t, ObjectVisibility> out;
+    if (reuse)
+      for (const auto& [i, v] : visibility(sdf, int(level0 - knobs_.subdivisions.begin())))
+        if (scene_.objects[i].material != Material::cloth) out.emplace(i, v);
+    const Scene& drawn = scene(density);
     const auto t0 = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    size_t baked = 0;
+    for (size_t i = 0; i < drawn.objects.size(); ++i) {
+      const bool cloth = drawn.objects[i].material == Material::cloth;
+      if (reuse && !cloth) continue;
       SceneVisibilityOptions vo = o_.visibility;
       vo.resolution = knobs_.sdf_resolutions[sdf];
       vo.pca.target_rms_error = *std::min_element(knobs_.pca_errors.begin(), knobs_.pca_errors.end());
-      if (scene_.objects[i].material != Material::cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
-      if (auto v = bake_object_visibility(scene_, i, vo)) out.emplace(i, std::move(*v));
+      if (!cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
+      ++baked;
+      if (auto v = bake_object_visibility(drawn, i, vo)) out.emplace(i, std::move(*v));
     }
-    say("visibility at SDF " + std::to_string(knobs_.sdf_resolutions[sdf]) + " baked for " +
-        std::to_string(out.size()) + " object(s) (" + number(std::round(since(t0) * 10) / 10) + " s)");
-    return visibility_.emplace(sdf, std::move(out)).first->second;
+    say("visibility at SDF " + std::to_string(knobs_.sdf_resolutions[sdf]) +
+        (levels ? ", subdivision " + std::to_string(levels) : std::string()) + " baked for " +
+        std::to_string(baked) + " object(s) (" + number(std::round(since(t0) * 10) / 10) + " s)");
+    return visibility_.emplace(key, std::move(out)).first->second;
   }
 };
 
@@ -299,7 +333,7 @@ SettingMeasure search_method(Search& search, int method, double& target, double 
     double best_gain = 0.0;
     for (int k = 0; k < Search::kKnobs; ++k) {
       SceneSetting n = s;
-      if (++Search::knob(n, k) >= search.knob_count(k)) continue;
+      if (++Search::knob(n, k) >= search.knob_count(k, method)) continue;
       const SettingMeasure m = search.measure(n);
       const double drop = cur.error - m.error;
       if (drop <= 0.0) continue;
@@ -339,6 +373,8 @@ std::string describe(const SceneSetting& s, const SelectionKnobs& k, bool visibi
                   std::to_string((k.baked_levels - 1) / k.level_strides[s.levels] + 1) + " levels, SVD " + number(k.svd_errors[s.svd]);
   if (visibility)
     d += ", SDF " + std::to_string(k.sdf_resolutions[s.sdf]) + ", PCA " + number(k.pca_errors[s.pca]) + " rad";
+  if (per_vertex(k.methods[s.method]) && (k.subdivisions.size() > 1 || k.subdivisions[s.density] != 0))
+    d += ", subdivision " + std::to_string(k.subdivisions[s.density]);
   if (!k.sg_counts.empty()) d += ", " + std::to_string(k.sg_counts[s.sgs]) + " SGs";
   return d;
 }
@@ -348,6 +384,10 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
                                      const SceneSelectionOptions& o) {
   if (!(o.target_error > 0.0) && !(o.paper_margin >= 0.0)) throw std::invalid_argument("target error must be > 0");
   if (!o.knobs.sg_counts.empty() && !o.fit) throw std::invalid_argument("SG counts to search need a fit");
+  if (o.knobs.subdivisions.empty()) throw std::invalid_argument("no mesh subdivision level to search");
+  for (int l : o.knobs.subdivisions)
+    if (l < 0 || l > kMaxSubdivision)
+      throw std::invalid_argument("subdivision level " + std::to_string(l) + " outside 0.." + std::to_string(kMaxSubdivision));
   for (int k : o.knobs.sg_counts)
     if (k < 1 || k > gpu::kMaxSgs)
       throw std::invalid_argument("SG count " + std::to_string(k) + " outside 1.." + std::to_string(gpu::kMaxSgs));
@@ -379,6 +419,7 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
   out.description = describe(chosen->setting, o.knobs, search.occluded());
   out.data = search.data(chosen->setting);
   out.sgs = search.lighting(chosen->setting.sgs);
+  out.subdivision = chosen->subdivision;
   for (const SettingMeasure& m : search.tried())
     if (m.setting == search.paper(chosen->setting.method)) out.paper = m;
   out.tried = search.tried();

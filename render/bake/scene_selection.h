@@ -1,13 +1,22 @@
 #pragma once
 // "Model no more than the scene needs" (DESIGN.md §4) for a whole scene: the setting of every
 // cost knob of seed 000's method (SG count of the map's fit, tangent samples per thread, λ
-// levels, SVD error, SDF resolution, PCA error, per-vertex or per-pixel shading) is chosen so
+// levels, SVD error, SDF resolution, PCA error, the cloth mesh's density for per-vertex shading,
+// per-vertex or per-pixel shading) is chosen so
 // that the image error — relative RMSE over the cloth pixels (bench/image_metrics.h) of the GPU
 // frame against the reference, the worst of the scene's views (bake/selection_views.h) — stays
 // ≤ the target at the least cost: frame time first, then bundle bytes. Frame time is modelled,
 // not timed (timings on a shared machine are noise at these differences): per-vertex before
 // per-pixel, then the shading work, shaded points × SGs × tangent samples (the runtime's loops,
-// methods/iwasaki/iwasaki.glsl); the measured ms is reported beside it.
+// methods/iwasaki/iwasaki.glsl); the measured ms is reported beside it. Per-vertex stays first
+// at every mesh density searched: the kiosk's frame has far more cloth pixels than a level-2
+// pillow has vertices (53 k), though the views' 160×120 frames may not.
+//
+// Mesh density: the cloth meshes refined by midpoint subdivision (scene/mesh_subdivision.h),
+// searched for per-vertex shading only (per-pixel shading interpolates only the visibility
+// between vertices). A refined mesh is measured against the references of the scene as given
+// (the same surface: refinement keeps it), its visibility baked on the refined vertices; its
+// bytes add the mesh sections it adds to the bundle.
 //
 // The search measures, it does not model: from the paper's setting it steps up the knob whose
 // next value lowers the error most per byte it adds while the target is missed, then steps
@@ -41,6 +50,10 @@ namespace weft {
 // coarsest first: every divisor of the intervals, e.g. 15 levels → 7, 2, 1 (3, 8, 15 levels).
 std::vector<int> level_strides_of(int levels);
 
+// The finest mesh subdivision the search and `weft bake --subdivide` take (a level multiplies the
+// cloth's vertices by ~4: level 3 puts the pillow at ~215 k).
+inline constexpr int kMaxSubdivision = 3;
+
 // The values each knob may take, cheapest first.
 struct SelectionKnobs {
   std::vector<int> tangent_samples{1, 2, 3, 4, 6, 8, 12, 16};  // per thread (a straight thread keeps 1)
@@ -51,6 +64,9 @@ struct SelectionKnobs {
   std::vector<int> sdf_resolutions{32, 64, 128};
   std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS
   std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // cheapest frame first
+  // Midpoint subdivision levels of the cloth meshes for a per-vertex method (each ×4 the
+  // triangles); a per-pixel method takes the first.
+  std::vector<int> subdivisions{0, 1, 2};
   // SG counts of the scene map's fit (SceneSelectionOptions::fit); empty: the SGs given only.
   // At most methods/sg_lighting_uniforms.h's kMaxSgs (40).
   std::vector<int> sg_counts;
@@ -80,6 +96,7 @@ struct SceneSetting {
   std::array<int, 2> samples{0, 0};
   int levels = 0, svd = 0, sdf = 0, pca = 0;
   int sgs = 0;  // index into knobs.sg_counts (0 when it is empty)
+  int density = 0;  // index into knobs.subdivisions
   auto operator<=>(const SceneSetting&) const = default;
 };
 
@@ -90,7 +107,9 @@ struct SettingMeasure {
   double ms = 0.0;                  // median frame time of view 0 at the views' size
   double work = 0.0;                // modelled frame cost of view 0: shaded points × SGs × tangent samples
   int sg_count = 0;                 // SGs it was drawn with
-  size_t bytes = 0;                 // tables + visibility (+ κ when there is visibility)
+  size_t bytes = 0;                 // tables + visibility (+ κ when there is visibility) + the mesh
+                                    // sections refinement adds
+  int subdivision = 0;              // levels the cloth meshes were refined
 };
 
 struct SceneSelection {
@@ -103,12 +122,15 @@ struct SceneSelection {
   std::vector<SettingMeasure> tried;   // in the order measured
   IwasakiBundleData data;              // the chosen setting's tables, visibility and κ
   SgLighting sgs;                      // the chosen setting's SGs (its fit when the SG count was searched)
+  int subdivision = 0;                 // the chosen setting's refinement of the cloth meshes: its
+                                       // `data` is for refine_cloth_meshes(scene, subdivision)
   int references_rendered = 0, references_cached = 0;
   double seconds = 0.0;
 };
 
 // Describes a setting ("iwasaki_vertex, 3+3 samples, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad",
-// then ", 8 SGs" when the SG count is searched).
+// then ", subdivision 1" for a per-vertex method when more than one level is searched or the
+// level is not 0, then ", 8 SGs" when the SG count is searched).
 std::string describe(const SceneSetting& s, const SelectionKnobs& knobs, bool visibility);
 
 // `fabric_texts` (preset → fabric file text) key the reference cache. Needs a headless GLES

@@ -8,6 +8,7 @@
 #include "bake/iwasaki_bundle_writer.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
+#include "scene/mesh_subdivision.h"
 
 namespace weft {
 
@@ -28,6 +29,7 @@ std::string selection_json(const SceneSelection& s, const SceneSelectionOptions&
                       {"lambda_levels", s.data.tables.empty() ? 0 : s.data.tables.begin()->second.level_count()},
                       {"svd_error", k.svd_errors[c.svd]},
                       {"sg_count", s.chosen.sg_count},
+                      {"subdivision", s.subdivision},
                       {"views", {{"count", o.views.count}, {"spread_deg", o.views.spread_deg},
                                  {"width", o.views.width}, {"height", o.views.height}}},
                       {"settings_measured", s.tried.size()}};
@@ -51,7 +53,7 @@ std::string selection_summary(const SceneSelection& s, const SceneSelectionOptio
                 views.c_str(), s.target,
                 s.reached ? "reached" : "UNREACHABLE with these knobs; took the closest setting");
   out += buf;
-  std::snprintf(buf, sizeof buf, "%-14s %.2f MB (tables + visibility + kappa)\n", "bytes", s.chosen.bytes / 1e6);
+  std::snprintf(buf, sizeof buf, "%-14s %.2f MB (tables + visibility + kappa + mesh sections subdivision adds)\n", "bytes", s.chosen.bytes / 1e6);
   out += buf;
   if (s.paper) {
     std::snprintf(buf, sizeof buf, "%-14s %s: error %.4f, %.2f MB, %.1f ms\n", "paper setting",
@@ -107,6 +109,7 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
                                 const std::filesystem::path& sg_map) {
   const SceneSelection s = select_for_bundle(in.scene, in.fabrics, in.sgs, o, sg_map);
   in.sgs = s.sgs;
+  in.scene = refine_cloth_meshes(std::move(in.scene), s.subdivision);  // the mesh the visibility was baked on
   add_scene_sections(writer, in);
   add_selection_sections(writer, s, o);
   char buf[300];

@@ -38,7 +38,8 @@ SceneSelection select_for_bundle(const Scene& scene, const std::map<std::string,
                                  const SgLighting& sgs, const SceneSelectionOptions& o,
                                  const std::filesystem::path& sg_map = {});
 // `weft bake --target-error`: select_for_bundle with `in`'s SGs, then `in`'s scene sections with
-// the chosen SGs as the default lighting, and the selection's sections. Returns a one-line summary.
+// the chosen SGs as the default lighting and the cloth meshes refined as chosen (`in` is left
+// holding both), and the selection's sections. Returns a one-line summary.
 std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& in, const SceneSelectionOptions& o,
                                 const std::filesystem::path& sg_map = {});
 

@@ -60,6 +60,8 @@ void validate(const BenchOptions& a) {
     if (r < 4 || r > 128) throw InvalidOption("--sweep-sdf-resolution: each must be within 4..128");
   for (int r : a.sweep_sdf_supersamples)
     if (r < 1 || r > 4) throw InvalidOption("--sweep-sdf-supersample: each must be within 1..4");
+  for (int l : a.subdivide)
+    if (l < 1 || l > 3) throw InvalidOption("--subdivide: each level must be within 1..3");
 }
 
 std::string command_line(const BenchOptions& a) {
@@ -77,6 +79,7 @@ std::string command_line(const BenchOptions& a) {
   if (a.no_stability) c << " --no-stability";
   if (!a.quick && a.bake_grid > 0) c << " --bake-grid " << a.bake_grid;
   c << " --target-error " << fmt(a.target_error, 4);
+  if (!a.subdivide.empty()) c << " --subdivide " << joined_numbers(a.subdivide);
   if (!a.sweep_sg_counts.empty()) c << " --sweep-sg-counts " << joined_numbers(a.sweep_sg_counts);
   if (!a.sweep_tangent_samples.empty()) c << " --sweep-tangent-samples " << joined_numbers(a.sweep_tangent_samples);
   if (!a.sweep_svd_errors.empty()) c << " --sweep-svd-error " << joined_numbers(a.sweep_svd_errors);

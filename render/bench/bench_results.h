@@ -27,6 +27,11 @@ struct Row {
   bool visibility = false;  // the method shades with scene visibility (seed 000's SDF)
   // Floor and occluders (Lambertian pixels, < 0: none in view): masked_error there.
   double lambert_rmse = -1.0, lambert_ratio = -1.0;
+  int sg_count = 0;               // SGs the frame was lit by
+  std::string setting;            // target-error rows: the chosen setting in words (describe())
+  int subdivision = -1;           // target-error and subdivided rows: the cloth meshes' levels (< 0: not refined)
+  size_t cloth_mesh_bytes = 0;    // the cloth meshes' bundle sections (scene_bundle_writer.h)
+  double visibility_bake_s = -1;  // subdivided rows: the visibility bake on the refined cloth (< 0: none)
 };
 
 // One point of the SG-count sweep.

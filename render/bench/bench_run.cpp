@@ -21,6 +21,7 @@
 #include "bench/stopwatch.h"
 #include "bench/table_bakes.h"
 #include "gpu/scene_renderer.h"
+#include "scene/mesh_subdivision.h"
 
 namespace weft::bench {
 
@@ -48,15 +49,32 @@ Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m,
             << " ..." << std::flush;
   const SceneSelection sel = select_scene_settings(c.scene, c.fabrics, texts, c.sgs, o);
   std::cerr << " " << fmt(sel.seconds) << " s: " << sel.description << "\n";
+  const Scene drawn = refine_cloth_meshes(c.scene, sel.subdivision);
   Row r = measure.measure(c, m, target_label(m.name, a.target_error), m.name + "_target",
-                          std::make_shared<const IwasakiBundleData>(sel.data));
+                          std::make_shared<const IwasakiBundleData>(sel.data), &drawn);
+  r.setting = sel.description, r.sg_count = sel.chosen.sg_count, r.subdivision = sel.subdivision;
   r.note = "scene_selection.h at target " + fmt(a.target_error) + ": " + sel.description + ", views' error " +
            fmt(sel.chosen.error) + (sel.reached ? "" : " (unreachable: closest)");
   return r;
 }
 
+// The row of a per-vertex method on the case's cloth refined `levels` (scene/mesh_subdivision.h):
+// the paper-default tables, the cloth's visibility baked on the refined vertices at the paper's
+// settings (floors and occluders keep theirs), against the case's reference.
+Row subdivided_row(const Case& c, const LadderEntry& m, int levels, TableBakes& bakes, RowMeasure& measure) {
+  const Scene drawn = refine_cloth_meshes(c.scene, levels);
+  double bake_s = 0.0;
+  const auto bundle = bakes.subdivided(m.name, c.scene, drawn, levels, c.fabrics, bake_s);
+  Row r = measure.measure(c, m, m.name + " (subdivision " + std::to_string(levels) + ")",
+                          m.name + "_sub" + std::to_string(levels), bundle, &drawn);
+  r.subdivision = levels, r.visibility_bake_s = bake_s;
+  r.note = "cloth meshes midpoint-subdivided " + std::to_string(levels) + "x, their visibility baked in " +
+           fmt(bake_s) + " s";
+  return r;
+}
+
 // Speed and accuracy rows: every method on every scene × fabric × environment (with the
-// target-error row after each iwasaki row).
+// target-error row after each iwasaki row, and the subdivided rows after each per-vertex one).
 void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, TableBakes& bakes, RowMeasure& measure,
                  const std::filesystem::path& cache, BenchResults& res) {
   for (const auto& scene_name : a.scenes) {
@@ -67,6 +85,8 @@ void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, Tab
         for (const auto& m : run) {
           if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
           res.rows.push_back(measure.measure(c, m, m.name, m.name, bakes.tables_for(m.name, c.scene, c.fabrics)));
+          if (m.name.find("_vertex") != std::string::npos && gpu::reads_seed000_tables(m.name))
+            for (int levels : a.subdivide) res.rows.push_back(subdivided_row(c, m, levels, bakes, measure));
           if ((m.name == "iwasaki" || m.name == "iwasaki_vertex") && a.target_error > 0)
             res.rows.push_back(target_error_row(a, c, m, measure, cache));
         }

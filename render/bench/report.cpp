@@ -272,7 +272,8 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
   std::ofstream csv(out / "results.csv");
   csv << "scene,fabric,env,method,speed_width,speed_height,ms_per_frame,frames,width,height,relative_rmse,cloth_pixels,"
          "renderer,note,bundle_bytes,shadow_pixels,shadow_relative_rmse,shadow_brightness_ratio,band_brightness_ratio,"
-         "lambert_relative_rmse,lambert_brightness_ratio\n";
+         "lambert_relative_rmse,lambert_brightness_ratio,setting,sg_count,subdivision,cloth_mesh_bytes,"
+         "visibility_bake_seconds\n";
   for (const auto& r : rows)
     csv << r.scene << "," << r.fabric << "," << (r.env.find(',') == std::string::npos ? r.env : "\"" + r.env + "\"") << "," << r.method << "," << a.speed_width << "," << a.speed_height
         << "," << fmt(r.ms, 6) << "," << r.frames << "," << a.width << "," << a.height << ","
@@ -281,7 +282,11 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
         << (r.shadow_pixels ? std::to_string(r.shadow_pixels) : "") << "," << (r.shadow_rmse >= 0 ? fmt(r.shadow_rmse, 6) : "")
         << "," << (r.shadow_ratio >= 0 ? fmt(r.shadow_ratio, 6) : "") << ","
         << (r.band_ratio >= 0 ? fmt(r.band_ratio, 6) : "") << "," << (r.lambert_rmse >= 0 ? fmt(r.lambert_rmse, 6) : "")
-        << "," << (r.lambert_ratio >= 0 ? fmt(r.lambert_ratio, 6) : "") << "\n";
+        << "," << (r.lambert_ratio >= 0 ? fmt(r.lambert_ratio, 6) : "") << ",\"" << r.setting << "\","
+        << (r.sg_count ? std::to_string(r.sg_count) : "") << ","
+        << (r.subdivision >= 0 ? std::to_string(r.subdivision) : "") << ","
+        << (r.cloth_mesh_bytes ? std::to_string(r.cloth_mesh_bytes) : "") << ","
+        << (r.visibility_bake_s >= 0 ? fmt(r.visibility_bake_s, 4) : "") << "\n";
   if (!csv) throw std::runtime_error("cannot write " + (out / "results.csv").string());
 }
 

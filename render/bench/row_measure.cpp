@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "bake/scene_bundle_writer.h"
 #include "bench/chart.h"
 #include "bench/image_metrics.h"
 #include "bench/number_text.h"
@@ -14,7 +15,8 @@
 namespace weft::bench {
 
 Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& label, const std::string& file_id,
-                        std::shared_ptr<const IwasakiBundleData> bundle) {
+                        std::shared_ptr<const IwasakiBundleData> bundle, const Scene* drawn) {
+  const Scene& scene = drawn ? *drawn : c.scene;
   const BenchOptions& a = options_;
   const CachedReference* ref = &references_.sg_lit(c, m.thin_reference);
   std::vector<bool> surface(ref->kinds.size());
@@ -29,11 +31,14 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
   r.scene = c.scene_name, r.fabric = c.fabric_label, r.env = c.env, r.method = label;
   if (bundle) r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
   r.visibility = gpu::uses_seed000_tables(m.name);
-  const GpuFrame speed = render_gpu_frame(c.scene, c.fabrics, c.sgs, m.name, a.speed_width, a.speed_height,
+  r.sg_count = int(c.sgs.size());
+  for (const auto& o : scene.objects)
+    if (o.material == Material::cloth) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
+  const GpuFrame speed = render_gpu_frame(scene, c.fabrics, c.sgs, m.name, a.speed_width, a.speed_height,
                                           a.speed_frames, bundle);
   renderer_ = speed.renderer;
   r.ms = speed.median_ms, r.frames = speed.frames;
-  const GpuFrame acc = render_gpu_frame(c.scene, c.fabrics, c.sgs, m.name, a.width, a.height, 0, bundle);
+  const GpuFrame acc = render_gpu_frame(scene, c.fabrics, c.sgs, m.name, a.width, a.height, 0, bundle);
   r.image = "images/" + c.tag + "_" + file_id + ".png";
   write_png(acc.image, out_ / r.image, exposure);
   r.reference_image = ref_png;

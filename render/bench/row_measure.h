@@ -23,9 +23,10 @@ public:
       : options_(o), out_(std::move(out)), references_(references) {}
 
   // `label`: the row's method column; `file_id`: its images' names; `bundle`: seed 000 tables
-  // for the methods that read them.
+  // for the methods that read them; `drawn`: the scene the frames draw when not the case's own
+  // (its cloth refined, scene/mesh_subdivision.h), against the case's reference.
   Row measure(const Case& c, const LadderEntry& m, const std::string& label, const std::string& file_id,
-              std::shared_ptr<const IwasakiBundleData> bundle);
+              std::shared_ptr<const IwasakiBundleData> bundle, const Scene* drawn = nullptr);
   const std::string& renderer() const { return renderer_; }  // GL_RENDERER of the last frame
 
 private:

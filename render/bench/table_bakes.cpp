@@ -39,7 +39,42 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key
 std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::string& method, const Scene& scene,
                                                                 const std::map<std::string, Fabric>& fabrics) {
   if (!gpu::reads_seed000_tables(method)) return nullptr;
-  return bake(key(scene, fabrics), scene, fabrics, paper_options());
+  const std::string k = key(scene, fabrics);
+  if (bakes_.count(k)) return bakes_.at(k);
+  std::string fabric_set;
+  for (const auto& [name, f] : fabrics) fabric_set += "/" + name;
+  const auto same_tables = by_fabrics_.find(fabric_set);
+  if (same_tables == by_fabrics_.end()) return by_fabrics_[fabric_set] = bake(k, scene, fabrics, paper_options());
+  IwasakiBakeOptions o = paper_options();
+  o.bake_tables = false;  // another scene's bake holds this fabric set's tables
+  auto data = std::make_shared<IwasakiBundleData>(*bake(k + " (visibility)", scene, fabrics, o));
+  data->tables = same_tables->second->tables;
+  return bakes_[k] = data;
+}
+
+std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::string& method, const Scene& scene,
+                                                                const Scene& refined, int levels,
+                                                                const std::map<std::string, Fabric>& fabrics,
+                                                                double& bake_s) {
+  const auto base = tables_for(method, scene, fabrics);
+  if (!base) return nullptr;
+  auto [it, inserted] = refined_.try_emplace({scene.name, levels});
+  if (inserted) {
+    std::cerr << "weft bench: baking visibility of " << scene.name << "'s cloth subdivided " << levels << " ..."
+              << std::flush;
+    const auto t = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < refined.objects.size(); ++i)
+      if (refined.objects[i].material == Material::cloth)
+        if (auto v = bake_object_visibility(refined, i, paper_options().visibility)) it->second.cloth.emplace(i, std::move(*v));
+    it->second.seconds = seconds_since(t);
+    std::cerr << " " << fmt(it->second.seconds) << " s\n";
+  }
+  auto data = std::make_shared<IwasakiBundleData>(*base);
+  for (size_t i = 0; i < refined.objects.size(); ++i)
+    if (refined.objects[i].material == Material::cloth) data->visibility.erase(i);
+  for (const auto& [i, v] : it->second.cloth) data->visibility.emplace(i, v);
+  bake_s = it->second.seconds;
+  return data;
 }
 
 }  // namespace weft::bench

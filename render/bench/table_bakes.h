@@ -1,8 +1,10 @@
 #pragma once
 // iwasaki draws from seed 000 tables: baked in memory, once per scene, fabric set and setting
-// (small grids with --quick; the paper's 48 otherwise, minutes each on two cores). Every iwasaki
-// variant of the runtime (e.g. iwasaki_vertex) reads the same bundle, and mizutani takes its W
-// tables from it (baked for the paper's tangent samples).
+// (small grids with --quick; the paper's 48 otherwise, minutes each on two cores; the weighting
+// tables, which depend on the fabrics only, once per fabric set). Every iwasaki variant of the
+// runtime (e.g. iwasaki_vertex) reads the same bundle, and mizutani takes its W tables from it
+// (baked for the paper's tangent samples). A scene with its cloth refined (--subdivide) reads
+// the same tables with the cloth's visibility baked on the refined vertices.
 #include <map>
 #include <memory>
 #include <string>
@@ -27,10 +29,22 @@ public:
   // The paper-default bundle for a method that reads seed 000 tables; null for the others.
   std::shared_ptr<const IwasakiBundleData> tables_for(const std::string& method, const Scene& scene,
                                                       const std::map<std::string, Fabric>& fabrics);
+  // tables_for(method, scene, fabrics) with the cloth objects' visibility replaced by theirs in
+  // `refined` (scene/mesh_subdivision.h: `scene` with its cloth refined `levels`), baked once per
+  // scene and level at the paper's visibility settings; `bake_s`: that bake's time.
+  std::shared_ptr<const IwasakiBundleData> subdivided(const std::string& method, const Scene& scene,
+                                                      const Scene& refined, int levels,
+                                                      const std::map<std::string, Fabric>& fabrics, double& bake_s);
 
 private:
   const BenchOptions& options_;
   std::map<std::string, std::shared_ptr<const IwasakiBundleData>> bakes_;
+  std::map<std::string, std::shared_ptr<const IwasakiBundleData>> by_fabrics_;  // a bake holding each fabric set's tables
+  struct Refined {
+    std::map<size_t, ObjectVisibility> cloth;
+    double seconds = 0.0;
+  };
+  std::map<std::pair<std::string, int>, Refined> refined_;  // by scene and level
 };
 
 }  // namespace weft::bench

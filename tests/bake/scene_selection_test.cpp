@@ -3,7 +3,9 @@
 // reference rendered here, not the search's cached one); an unreachable one says so and takes
 // the least error it measured; a second search reads its references from the cache. With the
 // SG count of the map's fit searched too: a target fewer SGs reach holds on an independent
-// render under the richer lighting, and an unreachable one still takes the closest.
+// render under the richer lighting, and an unreachable one still takes the closest. With the
+// cloth mesh's subdivision searched, a refined setting costs its added vertices in work and its
+// added mesh sections in bytes, and draws as measured on the refined mesh.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,7 +19,9 @@
 #include "frame/frame_render.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
+#include "bake/scene_bundle_writer.h"
 #include "reference/scene_render.h"
+#include "scene/mesh_subdivision.h"
 
 using namespace weft;
 
@@ -84,8 +88,8 @@ double independent_error(const Swatch& w, const SceneSelection& s, const SgLight
   ReferenceRenderOptions ro;
   ro.width = 64, ro.height = 48, ro.sg_grid = 6, ro.tangent_samples = 16, ro.check_convergence = false;
   const ReferenceRenderResult ref = ReferenceRenderer(w.scene, w.fabrics, lighting, ro).render(0);
-  const GpuFrame f = render_gpu_frame(w.scene, w.fabrics, s.sgs, s.method, 64, 48, 0,
-                                      std::make_shared<const IwasakiBundleData>(s.data));
+  const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, s.sgs, s.method, 64,
+                                      48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   return bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
 }
 
@@ -118,8 +122,8 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
   ReferenceRenderOptions ro;
   ro.width = 64, ro.height = 48, ro.sg_grid = 6, ro.tangent_samples = 16, ro.check_convergence = false;
   const ReferenceRenderResult ref = ReferenceRenderer(w.scene, w.fabrics, lighting, ro).render(0);
-  const GpuFrame f = render_gpu_frame(w.scene, w.fabrics, w.sgs, s.method, 64, 48, 0,
-                                      std::make_shared<const IwasakiBundleData>(s.data));
+  const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, w.sgs, s.method, 64,
+                                      48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   const double e = bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
   EXPECT_LE(e, target);
   EXPECT_NEAR(e, s.chosen.view_errors[0], 1e-3);
@@ -129,9 +133,10 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
     const SceneSetting& c = s.chosen.setting;
     const SceneSetting& t = m.setting;
     const int down = (c.samples[0] - t.samples[0]) + (c.samples[1] - t.samples[1]) + (c.levels - t.levels) +
-                     (c.svd - t.svd) + (c.sdf - t.sdf) + (c.pca - t.pca) + (c.sgs - t.sgs);
+                     (c.svd - t.svd) + (c.sdf - t.sdf) + (c.pca - t.pca) + (c.sgs - t.sgs) + (c.density - t.density);
     const bool one_step_down = t.method == c.method && down == 1 && t.samples[0] <= c.samples[0] &&
-                               t.samples[1] <= c.samples[1] && t.levels <= c.levels && t.svd <= c.svd;
+                               t.samples[1] <= c.samples[1] && t.levels <= c.levels && t.svd <= c.svd &&
+                               t.density <= c.density;
     if (one_step_down) {
       EXPECT_GT(m.error, target) << describe(t, small_options(cache, target).knobs, false);
     }
@@ -192,4 +197,48 @@ TEST(SceneSelection, UnreachableWithSgCountsTakesTheClosest) {
   SceneSelectionOptions no_fit = o;
   no_fit.fit = nullptr;
   EXPECT_THROW(select_scene_settings(w.scene, w.fabrics, w.texts, rich, no_fit), std::invalid_argument);
+}
+
+TEST(SceneSelection, SubdivisionCostsItsVerticesAndDrawsAsMeasured) {
+  const Swatch& w = swatch();
+  const auto cache = fresh_cache("subdivision");
+  SceneSelectionOptions o = small_options(cache, 1e-4);  // unreachable: the search tries every step up
+  o.knobs.tangent_samples = {2, 3};
+  o.knobs.level_strides = {o.knobs.level_strides.back()};
+  o.knobs.svd_errors = {0.01};
+  o.knobs.methods = {"iwasaki_vertex"};
+  o.knobs.subdivisions = {0, 1};
+  const SceneSelection s = select_scene_settings(w.scene, w.fabrics, w.texts, w.sgs, o);
+  const Scene refined = refine_cloth_meshes(w.scene, 1);
+  size_t added_bytes = 0;
+  double vertices = 0, refined_vertices = 0;
+  for (size_t i = 0; i < w.scene.objects.size(); ++i) {
+    added_bytes += mesh_section_bytes(refined.objects[i].mesh) - mesh_section_bytes(w.scene.objects[i].mesh);
+    if (w.scene.objects[i].material != Material::cloth) continue;
+    vertices += double(w.scene.objects[i].mesh.positions.size());
+    refined_vertices += double(refined.objects[i].mesh.positions.size());
+  }
+  ASSERT_GT(added_bytes, 0u);
+  // Each refined setting measured beside its unrefined twin: the added mesh bytes, and the work
+  // of its vertices (the same SGs and samples).
+  int pairs = 0;
+  for (const auto& a : s.tried) {
+    if (a.setting.density != 1) continue;
+    EXPECT_EQ(a.subdivision, 1);
+    for (const auto& b : s.tried) {
+      SceneSetting twin = a.setting;
+      twin.density = 0;
+      if (b.setting != twin) continue;
+      ++pairs;
+      EXPECT_EQ(a.bytes - b.bytes, added_bytes);
+      EXPECT_NEAR(a.work / b.work, refined_vertices / vertices, 1e-9);
+    }
+  }
+  EXPECT_GE(pairs, 1);
+  EXPECT_NE(describe(s.chosen.setting, o.knobs, false).find("subdivision"), std::string::npos);
+  // The chosen setting, drawn on its mesh here, gives the error the search measured.
+  const double e = independent_error(w, s, w.sgs);
+  EXPECT_NEAR(e, s.chosen.view_errors[0], 1e-3);
+  o.knobs.subdivisions = {kMaxSubdivision + 1};
+  EXPECT_THROW(select_scene_settings(w.scene, w.fabrics, w.texts, w.sgs, o), std::invalid_argument);
 }
