@@ -34,9 +34,7 @@ struct BakeArgs {
   SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h); holds --grid
 };
 
-void progress(int step, int steps, const std::string& what) {
-  std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str());
-}
+void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
 
 int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -50,9 +48,8 @@ int run_bake(const BakeArgs& a) {
   } catch (const std::exception& e) {
     throw UsageError(std::string("--scene: ") + e.what());
   }
-  if (!a.fabric.empty())
-    for (auto& o : in.scene.objects)
-      if (o.material == Material::cloth) o.fabric = a.fabric;
+  for (auto& o : in.scene.objects)
+    if (!a.fabric.empty() && o.material == Material::cloth) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
   if (a.subdivide > 0 && !search) in.scene = refine_cloth_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");
@@ -96,7 +93,6 @@ int run_bake(const BakeArgs& a) {
     const bool fitted = a.sgs_file.empty() && a.fit_sgs == 0;  // the search chooses their count too
     const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
     SceneSelectionOptions select = a.select;
-    if (a.subdivide >= 0) select.knobs.subdivisions = {a.subdivide};
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     try {
       tables_line = search ? add_selected_bundle(writer, in, select, sg_map) : add_baked_sections(writer, in.scene, in.fabrics, opt);
@@ -136,8 +132,7 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
-  sub->add_option("--target-error", a->select.target_error,
-                  "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
+  sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
@@ -148,10 +143,7 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
   sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
-  sub->add_option("--subdivide", a->subdivide,
-                  "Midpoint subdivision levels of the cloth meshes (each x4 triangles; finer per-vertex shading, more "
-                  "vertices to shade and store). Default: 0, or with --target-error the level the search chooses")
-      ->check(CLI::Range(0, kMaxSubdivision));
+  sub->add_option_function<int>("--subdivide", [a](const int& n) { a->subdivide = n, a->select.knobs.subdivisions = {n}; }, "Midpoint subdivision levels of the cloth meshes (each x4 triangles: finer per-vertex shading, more vertices to shade and store; default 0, or with --target-error the search's choice)")->check(CLI::Range(0, kMaxSubdivision));
   return [a] { return run_bake(*a); };
 }
 
