@@ -61,6 +61,7 @@ TEST(DefaultSettings, WithinHalfAPointOfThePaper) {
       o.knobs.svd_errors = {0.01};
       o.knobs.sdf_resolutions = {128};
       o.knobs.pca_errors = {0.01};
+      o.knobs.subdivisions = {0};  // the scene's own mesh, as the default bake
       o.visibility.lambertian_resolution = c.floor_sdf;
       o.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };
       const SceneSelection s = select_scene_settings(scene, fabrics, sc.texts, sc.sgs, o);
