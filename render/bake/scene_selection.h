@@ -9,8 +9,9 @@
 // not timed (timings on a shared machine are noise at these differences): per-vertex before
 // per-pixel, then the shading work, shaded points × SGs × tangent samples (the runtime's loops,
 // methods/iwasaki/iwasaki.glsl); the measured ms is reported beside it. Per-vertex stays first
-// at every mesh density searched: the kiosk's frame has far more cloth pixels than a level-2
-// pillow has vertices (53 k), though the views' 160×120 frames may not.
+// at every mesh density searched, which holds while the refined cloth has fewer vertices than
+// the kiosk frame has cloth pixels; the views' 160×120 frames have fewer than a level-2 pillow
+// (52 k vertices), so there its measured ms exceeds per-pixel's (docs/bench/mesh_density/).
 //
 // Mesh density: the cloth meshes refined by midpoint subdivision (scene/mesh_subdivision.h),
 // searched for per-vertex shading only (per-pixel shading interpolates only the visibility
