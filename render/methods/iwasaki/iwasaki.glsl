@@ -27,6 +27,7 @@ uniform int u_levels;
 uniform float u_log_lambdas[MAX_LEVELS];  // log λ of each level (WeightingTables::lambdas)
 uniform int u_sample_table[2 * MAX_TANGENT_SAMPLES];  // sample s (thread 0's, then thread 1's) → d
 uniform float u_xi_n;
+uniform float u_tilt_spreads[2 * MAX_TANGENT_SAMPLES];  // ClothBsdf::tilt_spread, laid out as u_tilts
 uniform float u_wo_n;
 
 uniform bool u_visibility;
@@ -225,7 +226,6 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         Thread p = u_threads[j];
         int count = p.samples;
         vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-        float gs = sqrt(2.0) * p.gamma_s, gv = sqrt(2.0) * p.gamma_v;  // seed bandwidths
         float surf = 0.0;
         vec3 vol = vec3(0.0);
         for (int q = 0; q < count; ++q) {
@@ -243,6 +243,10 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
+          // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.
+          float c_tilt = 0.5 * (cos(phi_k) + cos(fo.phi)) * u_tilt_spreads[j * MAX_TANGENT_SAMPLES + q];
+          float gs = sqrt(2.0) * sqrt(p.gamma_s * p.gamma_s + c_tilt * c_tilt);
+          float gv = sqrt(2.0) * sqrt(p.gamma_v * p.gamma_v + c_tilt * c_tilt);
           // iwasaki.cpp's lobe_peak_direction: T at the surface lobe's peak for both longitudinal lobes.
           Lobe ls = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gs), -fo.theta, 2.0 * gs));
           float T_lobe = T;
