@@ -81,9 +81,9 @@ SurfaceHeight surface_height(const ThreadFrame& tf, const dvec3& n, double theta
 // The direction (θ, φ) of a sample frame. Eq. 9 takes W out of the integral as its average over
 // the SG (T at ξ_k), but a narrow longitudinal lobe (satin's float: γ_s 2.5°) keeps of the SG only
 // a band along the thread's specular cone, where W differs from its mean over the SG: on a satin
-// swatch a λ = 19 lobe came out −18 to +44 % (W's average over G·f_s by quadrature in its place:
-// the same). T at the surface lobe's peak (θ_l, φ_k), at the SG's own λ, takes W where the
-// product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both lobes: the
+// swatch a λ = 19 lobe is −18 to +44 % off with T at ξ_k, nearly all of it this factorisation (the
+// exact shading factor with T at ξ_k: −15 to +43 %). T at the surface lobe's peak (θ_l, φ_k), at
+// the SG's own λ, takes W where the product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both lobes: the
 // volume lobe's peak lies next to it (separate lookups: within 0.7 % of the shared one).
 dvec3 lobe_peak_direction(const ThreadFrame& tf, double theta, double phi) {
   return std::sin(theta) * tf.t + std::cos(theta) * (std::cos(phi) * tf.n_prime + std::sin(phi) * tf.b);
@@ -93,8 +93,8 @@ dvec3 lobe_peak_direction(const ThreadFrame& tf, double theta, double phi) {
 // change dα moves θ_i by cos φ_i·dα and θ_o by cos φ_o·dα, so θ_h by c·dα, c = (cos φ_i + cos φ_o)/2,
 // and the sample's lobe averaged over its arc is N(θ_h; √(γ² + c²δ²)) (φ_i taken at φ_k). The
 // midpoint samples alone put satin's 2.5° float highlight only where a sample's tilt is specular:
-// with 15 samples a sun at 20° on the swatch came out −13 to +43 % from the converged curve (64
-// samples), averaged over the arcs −3 to +7 % (IWASAKI.md, "Satin under skies").
+// with 15 samples a sun at 20° on the swatch is −13 to +43 % from the converged curve (64
+// samples), with the lobes averaged over the arcs −3 to +7 % (IWASAKI.md, "Satin under skies").
 double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double phi_o) {
   const double c = 0.5 * (std::cos(phi_i) + std::cos(phi_o));
   return std::sqrt(gamma * gamma + c * c * tilt_spread * tilt_spread);
@@ -102,7 +102,7 @@ double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double 
 
 // How much of T the lobes take at their peak: all of it from λ = 8, none at λ ≤ 2, linear in log λ
 // between. For a sky's broad lobes (λ ≈ 2) Eq. 9's darkening and Eq. 13's frozen form's
-// brightening cancel on linen (−10 % and +10 % at λ = 2; T at the peak alone left linen's broad
+// brightening cancel on linen (−10 % and +10 % at λ = 2; T at the peak for them puts linen's broad
 // lobes +5 % on average), so they keep T at the axis until their shading factor is exact.
 double lobe_peak_weight(double lambda) { return std::clamp(0.5 * std::log2(lambda / 2.0), 0.0, 1.0); }
 
