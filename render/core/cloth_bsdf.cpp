@@ -6,7 +6,10 @@
 namespace weft {
 
 ClothBsdf::ClothBsdf(const Fabric& fabric, std::array<int, 2> samples) : fabric_(fabric) {
-  for (int j = 0; j < 2; ++j) tilts_[j] = fabric_.threads[j].curve.sample_tilts(samples[j]);
+  for (int j = 0; j < 2; ++j) {
+    tilts_[j] = fabric_.threads[j].curve.sample_tilts(samples[j]);
+    spreads_[j] = fabric_.threads[j].curve.sample_tilt_spreads(samples[j]);
+  }
 }
 
 ClothBsdf::Point::Point(const ClothBsdf& bsdf, const SurfaceFrame& frame) : bsdf_(&bsdf), frame_(frame) {

@@ -20,6 +20,8 @@ public:
   int sample_count(int thread) const { return static_cast<int>(tilts_[thread].size()); }
   int total_samples() const { return sample_count(0) + sample_count(1); }
   double tilt(int thread, int k) const { return tilts_[thread][k]; }
+  // RMS tilt over the arc sample k stands for (TangentCurve::sample_tilt_spreads).
+  double tilt_spread(int thread, int k) const { return spreads_[thread][k]; }
 
   // The model bound to one shading frame. Holds scratch space: one per thread of execution.
   class Point {
@@ -51,6 +53,7 @@ public:
 private:
   Fabric fabric_;
   std::array<std::vector<double>, 2> tilts_;
+  std::array<std::vector<double>, 2> spreads_;
 };
 
 }  // namespace weft

@@ -44,6 +44,22 @@ double TangentCurve::tilt_at(double s) const {
   return glm::radians(offsets_[last + 1]);  // s == Λ up to round-off
 }
 
+std::vector<double> TangentCurve::sample_tilt_spreads(int n) const {
+  if (n < 1) throw std::invalid_argument("tangent sample count must be >= 1");
+  std::vector<double> spreads(n);
+  constexpr int kPoints = 256;  // midpoint rule over the arc; α is piecewise linear
+  for (int k = 0; k < n; ++k) {
+    const double a = k * total_ / n, width = total_ / n, centre = tilt_at((k + 0.5) * width);
+    double sum = 0.0;
+    for (int i = 0; i < kPoints; ++i) {
+      const double d = tilt_at(a + (i + 0.5) * width / kPoints) - centre;
+      sum += d * d;
+    }
+    spreads[k] = std::sqrt(sum / kPoints);
+  }
+  return spreads;
+}
+
 std::vector<double> TangentCurve::sample_tilts(int n) const {
   if (n < 1) throw std::invalid_argument("tangent sample count must be >= 1");
   std::vector<double> tilts(n);

@@ -20,6 +20,9 @@ public:
   double tilt_at(double s) const;
   // The N tilts a method with N samples uses: α((k+½)·Λ/N), k = 0..N-1.
   std::vector<double> sample_tilts(int n) const;
+  // For each of those samples, the RMS of α(s) − α((k+½)·Λ/N) over the arc it stands for,
+  // s ∈ [k·Λ/N, (k+1)·Λ/N] (radians): 0 on a straight stretch, Δα/√12 on a ramp of Δα per sample.
+  std::vector<double> sample_tilt_spreads(int n) const;
 
   const std::vector<double>& offsets_deg() const { return offsets_; }
   const std::vector<double>& lengths() const { return lengths_; }

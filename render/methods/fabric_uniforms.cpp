@@ -14,7 +14,7 @@ std::string shader_preamble() {
 
 void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
   program.use();
-  std::vector<float> tilts(2 * kMaxTangentSamples, 0.0f);
+  std::vector<float> tilts(2 * kMaxTangentSamples, 0.0f), spreads(2 * kMaxTangentSamples, 0.0f);
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& p = bsdf.fabric().threads[j];
     const int n = bsdf.sample_count(j);
@@ -29,9 +29,14 @@ void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
     glUniform1f(program.uniform((t + "gamma_v").c_str()), float(p.gamma_v));
     glUniform1f(program.uniform((t + "coverage").c_str()), float(p.coverage));
     glUniform1i(program.uniform((t + "samples").c_str()), n);
-    for (int k = 0; k < n; ++k) tilts[j * kMaxTangentSamples + k] = float(bsdf.tilt(j, k));
+    for (int k = 0; k < n; ++k) {
+      tilts[j * kMaxTangentSamples + k] = float(bsdf.tilt(j, k));
+      spreads[j * kMaxTangentSamples + k] = float(bsdf.tilt_spread(j, k));
+    }
   }
   glUniform1fv(program.uniform("u_tilts"), 2 * kMaxTangentSamples, tilts.data());
+  // Only shaders that widen their lobes by it declare it (iwasaki.glsl); elsewhere a no-op.
+  glUniform1fv(program.uniform("u_tilt_spreads"), 2 * kMaxTangentSamples, spreads.data());
 }
 
 }  // namespace weft::gpu

@@ -109,6 +109,19 @@ TEST(Frames, FiberAnglesOfKnownDirections) {
   EXPECT_NEAR(a.phi, kPi / 4, 1e-14);
 }
 
+// The RMS tilt over each sample's arc: Δα/√12 on a ramp (the uniform distribution's), 0 on a
+// straight stretch.
+TEST(TangentCurve, TiltSpreadsOverEachSamplesArc) {
+  const TangentCurve ramp({-25, 25}, {1});
+  for (double d : ramp.sample_tilt_spreads(2)) EXPECT_NEAR(d, glm::radians(25.0) / std::sqrt(12.0), 1e-5);
+  EXPECT_NEAR(TangentCurve({7}, {}).sample_tilt_spreads(3)[1], 0.0, 1e-15);
+  // Satin's first thread at 15 samples: the middle sample lies within the flat 0° stretch.
+  const Fabric satin = preset("polyester_satin_charmeuse");
+  const auto d = satin.threads[0].curve.sample_tilt_spreads(15);
+  EXPECT_NEAR(d[7], 0.0, 1e-15);
+  EXPECT_GT(d[4], glm::radians(1.0));
+}
+
 TEST(TangentCurve, SamplesAtArcLengthMidpoints) {
   const TangentCurve c({-25, 25}, {1});
   const auto t = c.sample_tilts(2);

@@ -78,6 +78,34 @@ SurfaceHeight surface_height(const ThreadFrame& tf, const dvec3& n, double theta
   return {h, h_dtheta, h_dphi};
 }
 
+// The direction (θ, φ) of a sample frame. Eq. 9 takes W out of the integral as its average over
+// the SG (T at ξ_k), but a narrow longitudinal lobe (satin's float: γ_s 2.5°) keeps of the SG only
+// a band along the thread's specular cone, where W differs from its mean over the SG: on a satin
+// swatch a λ = 19 lobe is −18 to +44 % off with T at ξ_k, nearly all of it this factorisation (the
+// exact shading factor with T at ξ_k: −15 to +43 %). T at the surface lobe's peak (θ_l, φ_k), at
+// the SG's own λ, takes W where the product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both lobes: the
+// volume lobe's peak lies next to it (separate lookups: within 0.7 % of the shared one).
+dvec3 lobe_peak_direction(const ThreadFrame& tf, double theta, double phi) {
+  return std::sin(theta) * tf.t + std::cos(theta) * (std::cos(phi) * tf.n_prime + std::sin(phi) * tf.b);
+}
+// A longitudinal lobe's standard deviation γ for one tangent sample, widened by the tilts of the arc
+// the sample stands for (RMS spread δ about its own tilt, TangentCurve::sample_tilt_spreads): a tilt
+// change dα moves θ_i by cos φ_i·dα and θ_o by cos φ_o·dα, so θ_h by c·dα, c = (cos φ_i + cos φ_o)/2,
+// and the sample's lobe averaged over its arc is N(θ_h; √(γ² + c²δ²)) (φ_i taken at φ_k). The
+// midpoint samples alone put satin's 2.5° float highlight only where a sample's tilt is specular:
+// with 15 samples a sun at 20° on the swatch is −13 to +43 % from the converged curve (64
+// samples), with the lobes averaged over the arcs −3 to +7 % (IWASAKI.md, "Satin under skies").
+double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double phi_o) {
+  const double c = 0.5 * (std::cos(phi_i) + std::cos(phi_o));
+  return std::sqrt(gamma * gamma + c * c * tilt_spread * tilt_spread);
+}
+
+// How much of T the lobes take at their peak: all of it from λ = 8, none at λ ≤ 2, linear in log λ
+// between. For a sky's broad lobes (λ ≈ 2) Eq. 9's darkening and Eq. 13's frozen form's
+// brightening cancel on linen (−10 % and +10 % at λ = 2; T at the peak for them puts linen's broad
+// lobes +5 % on average), so they keep T at the axis until their shading factor is exact.
+double lobe_peak_weight(double lambda) { return std::clamp(0.5 * std::log2(lambda / 2.0), 0.0, 1.0); }
+
 }  // namespace
 
 // The surface's own horizon as a visibility boundary in a sample frame. Eq. 9's T averages W over
@@ -126,15 +154,30 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
     for (int j = 0; j < 2; ++j) {
       const ThreadParams& p = bsdf.fabric().threads[j];
       const int n = bsdf.sample_count(j);
-      const double gs = seed_bandwidth_from_std_dev(p.gamma_s), gv = seed_bandwidth_from_std_dev(p.gamma_v);
       dvec3 surf(0.0), vol(0.0);
       for (int k = 0; k < n; ++k, ++s) {
         const ThreadFrame tf = thread_frame(frame, j, bsdf.tilt(j, k));
-        const double T = tables.value(s, g.sharpness, xi_local, wo_local);  // Eq. 10
-        if (T <= 0.0) continue;
         const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
         const FiberAngles o = fiber_angles(tf, wo);
+        const double gs = seed_bandwidth_from_std_dev(
+                         sample_lobe_width(p.gamma_s, bsdf.tilt_spread(j, k), sg.phi_k, o.phi)),
+                     gv = seed_bandwidth_from_std_dev(
+                         sample_lobe_width(p.gamma_v, bsdf.tilt_spread(j, k), sg.phi_k, o.phi));
         const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
+        const ScaledCircularGaussian surface_lobe = product(light, longitudinal_lobe_as_circular(o.theta, gs));
+        // Eq. 10: T at the SG's axis for the isotropic k_d part, and for both longitudinal lobes at
+        // the surface lobe's peak (lobe_peak_direction; blended with the axis's for broad SGs).
+        const double T = std::max(tables.value(s, g.sharpness, xi_local, wo_local), 0.0);
+        const double w_peak = lobe_peak_weight(g.sharpness);
+        const double T_lobe =
+            w_peak > 0.0
+                ? (1.0 - w_peak) * T +
+                      w_peak * std::max(tables.value(s, g.sharpness,
+                                                     local(lobe_peak_direction(tf, surface_lobe.mu, sg.phi_k)),
+                                                     wo_local),
+                                        0.0)
+                : T;
+        if (T <= 0.0 && T_lobe <= 0.0) continue;
         const double spread_k = separable_spread(g.sharpness, sg.theta_k, sg.sigma_k);
         LinearSdf sdf;
         if (visibility && visibility->sdf) {
@@ -155,13 +198,13 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         };
         // Surface lobe: g^u(θ_h; γ_s) ≈ g^c(θ_i; −θ_o, 2γ_s)/(√π γ_s), merged with the SG's.
         {
-          const ScaledCircularGaussian l = product(light, longitudinal_lobe_as_circular(o.theta, gs));
+          const ScaledCircularGaussian& l = surface_lobe;
           const double sp = lobe_sigma_prime(sg.sigma_k, l.mu, sg.theta_k);
           double fr = 0, geo = 0;
           const double cos_half = smooth(l.mu, fr, geo);
           const double I = pair_integral(l.mu, l.sigma, sp,
                                          lobe_horizon_fraction(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
-          surf += dvec3(T * l.alpha * fr * cos_half * geo * I * lobe_spread(spread_k, l.sigma, sg.sigma_k));
+          surf += dvec3(T_lobe * l.alpha * fr * cos_half * geo * I * lobe_spread(spread_k, l.sigma, sg.sigma_k));
         }
         // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
         {
@@ -184,7 +227,7 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
                             lobe_horizon_fraction(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
           const double iso = p.kd * td * td * geo /
                              std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik * spread_k;
-          vol += T * (lobe + iso) * p.albedo;
+          vol += (T_lobe * lobe + T * iso) * p.albedo;
         }
       }
       out.surface += g.amplitude * surf / double(n);

@@ -1,5 +1,6 @@
 // Seed 000 §3, Eq. 8–14, as one function, iwasaki_radiance(): for each SG k and tangent sample t,
-//   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids)
+//   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids),
+//   and for the longitudinal lobes T at the surface lobe's peak (iwasaki.cpp's lobe_peak_direction)
 //   × the circular-Gaussian product of the SG with each longitudinal lobe (Eq. 11, 13)
 //   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
 //   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
@@ -26,6 +27,7 @@ uniform int u_levels;
 uniform float u_log_lambdas[MAX_LEVELS];  // log λ of each level (WeightingTables::lambdas)
 uniform int u_sample_table[2 * MAX_TANGENT_SAMPLES];  // sample s (thread 0's, then thread 1's) → d
 uniform float u_xi_n;
+uniform float u_tilt_spreads[2 * MAX_TANGENT_SAMPLES];  // ClothBsdf::tilt_spread, laid out as u_tilts
 uniform float u_wo_n;
 
 uniform bool u_visibility;
@@ -47,6 +49,14 @@ float table_dot(int index, vec2 xi_tc, vec2 wo_tc) {
     sum += dot(texture(u_t_u, vec3(xi_tc, layer)), texture(u_t_v, vec3(wo_tc, layer)));
   }
   return sum;
+}
+
+// T of distinct table d at levels l0, l1 (weight lw of the second).
+float table_t(int d, int l0, int l1, float lw, vec2 xi_tc, vec2 wo_tc) {
+  float T = 0.0;
+  if (lw < 1.0) T += (1.0 - lw) * table_dot(d * u_levels + l0, xi_tc, wo_tc);
+  if (lw > 0.0) T += lw * table_dot(d * u_levels + l1, xi_tc, wo_tc);
+  return T;
 }
 
 // --- core/circular_gaussian.cpp
@@ -203,6 +213,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         lw = l1 > l0 ? clamp((ll - u_log_lambdas[l0]) / (u_log_lambdas[l1] - u_log_lambdas[l0]), 0.0, 1.0) : 0.0;
       }
       float lambda_k = 2.0 / (sigma_k * sigma_k);
+      float w_peak = clamp(0.5 * log2(lambda_k / 2.0), 0.0, 1.0);  // iwasaki.cpp's lobe_peak_weight
       vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       vec3 vis_k = vec3(0.0);
       if (u_visibility) {
@@ -215,15 +226,11 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         Thread p = u_threads[j];
         int count = p.samples;
         vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-        float gs = sqrt(2.0) * p.gamma_s, gv = sqrt(2.0) * p.gamma_v;  // seed bandwidths
         float surf = 0.0;
         vec3 vol = vec3(0.0);
         for (int q = 0; q < count; ++q) {
           int d = u_sample_table[j * MAX_TANGENT_SAMPLES + q];
-          float T = 0.0;
-          if (lw < 1.0) T += (1.0 - lw) * table_dot(d * u_levels + l0, xi_tc, wo_tc);
-          if (lw > 0.0) T += lw * table_dot(d * u_levels + l1, xi_tc, wo_tc);
-          if (T <= 0.0) continue;
+          float T = max(table_t(d, l0, l1, lw, xi_tc, wo_tc), 0.0);
           float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + q];
           float ca = cos(alpha), sa = sin(alpha);
           vec3 t = ca * along + sa * n, np = -sa * along + ca * n;
@@ -236,14 +243,27 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
+          // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.
+          float c_tilt = 0.5 * (cos(phi_k) + cos(fo.phi)) * u_tilt_spreads[j * MAX_TANGENT_SAMPLES + q];
+          float gs = sqrt(2.0) * sqrt(p.gamma_s * p.gamma_s + c_tilt * c_tilt);
+          float gv = sqrt(2.0) * sqrt(p.gamma_v * p.gamma_v + c_tilt * c_tilt);
+          // iwasaki.cpp's lobe_peak_direction: T at the surface lobe's peak for both longitudinal lobes.
+          Lobe ls = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gs), -fo.theta, 2.0 * gs));
+          float T_lobe = T;
+          if (w_peak > 0.0) {
+            vec3 peak = sin(ls.mu) * t + cos(ls.mu) * (cos(phi_k) * np + sin(phi_k) * axis);
+            vec2 peak_tc = node_texcoord(node_square_from_hemisphere(normalize(vec3(dot(peak, u), dot(peak, v), dot(peak, n)))), u_xi_n);
+            T_lobe = mix(T, max(table_t(d, l0, l1, lw, peak_tc, wo_tc), 0.0), w_peak);
+          }
+          if (T <= 0.0 && T_lobe <= 0.0) continue;
           // Surface lobe.
           {
-            Lobe l = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gs), -fo.theta, 2.0 * gs));
+            Lobe l = ls;
             float sp = sigma_prime(sigma_k, l.mu, theta_k);
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += T * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
+            surf += T_lobe * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
                     lobe_spread(spread_k, l.sigma, sigma_k);
           }
           // Volume lobe and the isotropic k_d part.
@@ -261,7 +281,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
                         lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz) * spread_k;
-            vol += T * (lobe + iso) * p.albedo;
+            vol += (T_lobe * lobe + T * iso) * p.albedo;
           }
         }
         surface += amplitude * surf / float(count);
