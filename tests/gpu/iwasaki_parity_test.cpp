@@ -42,6 +42,8 @@ SgLighting test_lights() {
   // A sky's broad ground lobe, below every surface facing up: shaded as its part above the
   // surface (above_horizon), at a λ' between T's levels.
   l.push_back({glm::normalize(dvec3(0.1, 0.2, -0.97)), 0.3, dvec3(0.5, 0.6, 0.4)});
+  // A sun 2° below the swatch's horizon: only its sliver lights the cloth (above_horizon's sharp rule).
+  l.push_back({glm::normalize(dvec3(0.9, -0.4, -0.034)), 500.0, dvec3(6.0, 5.0, 4.0)});
   return l;
 }
 
