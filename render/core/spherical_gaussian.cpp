@@ -1,5 +1,6 @@
 #include "core/spherical_gaussian.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -106,6 +107,25 @@ glm::dvec3 irradiance(const SphericalGaussian& g, const glm::dvec3& n) {
   return g.amplitude * sg_clamped_cosine_integral(g.sharpness, glm::dot(g.axis, n));
 }
 
+double horizon_sharpness_for_mean_cosine(double mean_cosine, double min_sharpness) {
+  auto mean_at = [](double log_lambda) {
+    const double l = std::exp(log_lambda);
+    return sg_clamped_cosine_integral(l, 0.0) / sg_hemisphere_integral(l, 0.0);
+  };
+  double lo = std::log(min_sharpness), hi = lo + kHorizonSharpnessLogRange;
+  if (mean_at(lo) <= mean_cosine) return min_sharpness;
+  for (int i = 0; i < kHorizonSharpnessSteps; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (mean_at(mid) > mean_cosine ? lo : hi) = mid;
+  }
+  return std::exp(0.5 * (lo + hi));
+}
+
+double horizon_sliver_weight(double sharpness) {
+  return std::clamp(std::log(sharpness / kHorizonSliverFrom) / std::log(kHorizonSliverTo / kHorizonSliverFrom), 0.0,
+                    1.0);
+}
+
 SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n, double min_sharpness) {
   const double c = glm::dot(g.axis, n);
   if (c >= 0.0) return g;
@@ -118,8 +138,22 @@ SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n,
   }
   SphericalGaussian out;
   out.axis = e;
-  out.sharpness = std::max(g.sharpness * s, min_sharpness);
-  out.amplitude = g.amplitude * (sg_clamped_cosine_integral(g.sharpness, c) / sg_clamped_cosine_integral(out.sharpness, 0.0));
+  // A broad lobe's visible part: λ·s, and G's clamped-cosine integral.
+  const double lambda_ring = std::max(g.sharpness * s, min_sharpness);
+  const double scale_ring = sg_clamped_cosine_integral(g.sharpness, c) / sg_clamped_cosine_integral(lambda_ring, 0.0);
+  const double w = horizon_sliver_weight(g.sharpness);
+  if (w <= 0.0) {
+    out.sharpness = lambda_ring;
+    out.amplitude = g.amplitude * scale_ring;
+    return out;
+  }
+  // A sharp lobe's sliver: G's power above the plane and its mean cosine there.
+  const double power = sg_hemisphere_integral(g.sharpness, c);
+  const double lambda_sliver =
+      horizon_sharpness_for_mean_cosine(sg_clamped_cosine_integral(g.sharpness, c) / power, lambda_ring);
+  const double scale_sliver = power / sg_hemisphere_integral(lambda_sliver, 0.0);
+  out.sharpness = std::pow(lambda_ring, 1.0 - w) * std::pow(lambda_sliver, w);
+  out.amplitude = g.amplitude * (std::pow(scale_ring, 1.0 - w) * std::pow(scale_sliver, w));
   return out;
 }
 

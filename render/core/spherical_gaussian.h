@@ -69,12 +69,32 @@ glm::dvec3 hemisphere_integral(const SphericalGaussian& g, const glm::dvec3& n);
 glm::dvec3 irradiance(const SphericalGaussian& g, const glm::dvec3& n);
 
 // The part of G above the plane ω·n = 0 as one SG whose axis is not below it: G itself when
-// ξ·n ≥ 0; otherwise, with ξ = c·n + s·e (c < 0, e on the horizon), the SG on e whose sharpness
-// λ·s is G's own along the horizon (G restricted to the horizon is μe^{λ(s−1)}·e^{λs(ω·e−1)}),
-// and whose amplitude gives it G's power above the plane: μ' = μ·H(λ, c)/H(λ', 0), H =
-// sg_hemisphere_integral. At the nadir e is any horizon direction and λ' the floor: the visible
-// part is a ring, nearly uniform for the broad ground lobes a sky's fit holds. λ' ≥ `min_sharpness`.
+// ξ·n ≥ 0; otherwise an SG on the horizon direction e nearest the axis (ξ = c·n + s·e, c < 0).
+// - A broad lobe (λ ≤ 4) shows a wide cap: the SG on e whose sharpness λ·s is G's own along the
+//   horizon (G restricted to the horizon is μe^{λ(s−1)}·e^{λs(ω·e−1)}), and whose amplitude keeps
+//   G's clamped-cosine integral at n: μ' = μ·C(λ, c)/C(λ·s, 0), C = sg_clamped_cosine_integral.
+//   At the nadir e is any horizon direction and λ' the floor: the visible part is a ring, nearly
+//   uniform for the broad ground lobes a sky's fit holds.
+// - A sharp lobe (λ ≥ 16, a sun just below the horizon) shows a thin sliver that hugs the horizon
+//   (its height decays as e^{λch}, faster than the re-aimed SG's): the SG on e that keeps both
+//   G's power above the plane, H(λ, c) (sg_hemisphere_integral), and its mean cosine there, C/H:
+//   λ' from horizon_sharpness_for_mean_cosine, μ' = μ·H(λ, c)/H(λ', 0). The broad rule gave a
+//   λ = 1000 sun 2° below the horizon 38 % of its light short (IWASAKI.md).
+// - In between, λ' and μ' are blended geometrically (horizon_sliver_weight).
+// λ' ≥ `min_sharpness`.
 SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n, double min_sharpness);
+
+// Where above_horizon goes from the broad lobe's rule (weight 0) to the sharp one's (weight 1):
+// linear in log λ between these sharpnesses.
+inline constexpr double kHorizonSliverFrom = 4.0, kHorizonSliverTo = 16.0;
+double horizon_sliver_weight(double sharpness);
+
+// The sharpness λ' ≥ `min_sharpness` of an SG on the horizon whose mean cosine to the normal over
+// the hemisphere, C(λ', 0)/H(λ', 0), equals `mean_cosine` (it falls as λ' grows): bisection in
+// log λ' over kHorizonSharpnessLogRange, kHorizonSharpnessSteps steps (iwasaki.glsl does the same).
+inline constexpr double kHorizonSharpnessLogRange = 12.0;
+inline constexpr int kHorizonSharpnessSteps = 16;
+double horizon_sharpness_for_mean_cosine(double mean_cosine, double min_sharpness);
 
 // The product of two SGs is an SG, exactly: λ_m ξ_m = λ_a ξ_a + λ_b ξ_b, λ_m = |λ_a ξ_a + λ_b ξ_b|,
 // μ_m = μ_a μ_b exp(λ_m − λ_a − λ_b) (amplitudes multiply per channel). Where the lobes cancel

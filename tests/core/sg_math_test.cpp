@@ -565,6 +565,46 @@ TEST(SphericalGaussian, AboveHorizonKeepsTheClampedCosinePowerOnTheHorizon) {
   }
 }
 
+// A sharp lobe just below the horizon (a setting sun) shows a sliver that hugs the horizon.
+// above_horizon's SG for it keeps the sliver's power above the plane and its mean cosine to the
+// normal there, both measured here by quadrature of G itself (the rule for broad lobes, λ·s and
+// the clamped cosine alone, put a λ = 1000 lobe 2° below the horizon at 55 % of its power).
+TEST(SphericalGaussian, AboveHorizonKeepsASharpSliversPowerAndMeanCosine) {
+  const dvec3 n(0, 0, 1);
+  for (auto [lambda, depth_deg] : {std::pair{1000.0, 2.0}, {1000.0, 0.5}, {300.0, 3.0}, {100.0, 5.0}}) {
+    const double d = depth_deg * kPi / 180;
+    const SphericalGaussian g{dvec3(std::cos(d), 0, -std::sin(d)), lambda, dvec3(1.0)};
+    const SphericalGaussian a = above_horizon(g, n, 0.0625);
+    EXPECT_NEAR(glm::dot(a.axis, n), 0.0, 1e-12);
+    // ∫ over the upper hemisphere near the axis's azimuth (the lobes are < 0.2 rad wide).
+    auto moments = [&](const SphericalGaussian& s) {
+      double power = 0, cosine = 0;
+      const int ne = 3000, na = 1500;
+      const double emax = 0.6, amax = 0.6;
+      for (int i = 0; i < ne; ++i) {
+        const double e = (i + 0.5) * emax / ne;
+        for (int j = 0; j < na; ++j) {
+          const double az = -amax + (j + 0.5) * 2 * amax / na;
+          const dvec3 w(std::cos(e) * std::cos(az), std::cos(e) * std::sin(az), std::sin(e));
+          const double v = s(w).g * std::cos(e) * (emax / ne) * (2 * amax / na);
+          power += v;
+          cosine += v * w.z;
+        }
+      }
+      return std::pair{power, cosine / power};
+    };
+    const auto [p0, m0] = moments(g);
+    const auto [p1, m1] = moments(a);
+    EXPECT_NEAR(p1, p0, 0.03 * p0) << "λ " << lambda << " at −" << depth_deg << "°";
+    EXPECT_NEAR(m1, m0, 0.03 * m0) << "λ " << lambda << " at −" << depth_deg << "°";
+    EXPECT_GT(a.sharpness, lambda * std::cos(d));  // the sliver hugs the horizon: sharper than λ·s
+  }
+  // Broad lobes keep λ·s (the clamped-cosine rule, tested above); the blend lies between λ = 4 and 16.
+  EXPECT_EQ(horizon_sliver_weight(4.0), 0.0);
+  EXPECT_EQ(horizon_sliver_weight(16.0), 1.0);
+  EXPECT_NEAR(horizon_sliver_weight(8.0), 0.5, 1e-12);
+}
+
 TEST(CircularGaussian, CircleIntegralMatchesQuadrature) {
   for (double sigma : {0.02, 0.1, 0.5, 1.0, 1.1, 2.0, 5.0, 40.0}) {
     double sum = 0.0;

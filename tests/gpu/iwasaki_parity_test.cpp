@@ -46,6 +46,8 @@ SgLighting test_lights() {
   // satin's narrow lobes read T at their peak for these (iwasaki.cpp's lobe_peak_direction).
   l.push_back({glm::normalize(dvec3(-0.4, -0.8, 0.15)), 1000.0, dvec3(30.0, 28.0, 25.0)});
   l.push_back({glm::normalize(dvec3(-0.4, -0.8, 0.2)), 19.0, dvec3(1.5, 1.4, 1.2)});
+  // A sun 2° below the swatch's horizon: only its sliver lights the cloth (above_horizon's sharp rule).
+  l.push_back({glm::normalize(dvec3(0.9, -0.4, -0.034)), 500.0, dvec3(6.0, 5.0, 4.0)});
   return l;
 }
 

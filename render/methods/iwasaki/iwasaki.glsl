@@ -176,6 +176,23 @@ float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sd
   return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
 
+// --- core's horizon_sliver_weight and horizon_sharpness_for_mean_cosine (above_horizon's rule for
+// sharp lobes: the sliver's power and mean cosine above the horizon).
+float horizon_sliver_weight(float lambda) { return clamp(log(lambda / 4.0) / log(4.0), 0.0, 1.0); }
+float horizon_mean_cosine(float log_lambda) {
+  float l = exp(log_lambda);
+  return sg_clamped_cosine_integral(l, 0.0) / sg_hemisphere_integral(l, 0.0);
+}
+float horizon_sharpness_for_mean_cosine(float mean_cosine, float min_lambda) {
+  float lo = log(min_lambda), hi = lo + 12.0;
+  if (horizon_mean_cosine(lo) <= mean_cosine) return min_lambda;
+  for (int i = 0; i < 16; ++i) {
+    float mid = 0.5 * (lo + hi);
+    if (horizon_mean_cosine(mid) > mean_cosine) lo = mid; else hi = mid;
+  }
+  return exp(0.5 * (lo + hi));
+}
+
 // Outgoing radiance at a cloth point: `corners` are the vertices whose SDF grids are blended
 // with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per vertex).
 vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {
@@ -202,7 +219,15 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         float s = length(e);
         e = s > 1e-6 ? e / s : normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
         float lp = max(lambda * s, exp(u_log_lambdas[0]));
-        amplitude *= sg_clamped_cosine_integral(lambda, c) / sg_clamped_cosine_integral(lp, 0.0);
+        float scale = sg_clamped_cosine_integral(lambda, c) / sg_clamped_cosine_integral(lp, 0.0);
+        float w = horizon_sliver_weight(lambda);
+        if (w > 0.0) {
+          float power = sg_hemisphere_integral(lambda, c);
+          float ls = horizon_sharpness_for_mean_cosine(sg_clamped_cosine_integral(lambda, c) / power, lp);
+          scale = pow(scale, 1.0 - w) * pow(power / sg_hemisphere_integral(ls, 0.0), w);
+          lp = pow(lp, 1.0 - w) * pow(ls, w);
+        }
+        amplitude *= scale;
         xi = e;
         sigma_k = sqrt(2.0 / lp);
         // WeightingTables::level_weights for λ'.
