@@ -11,19 +11,15 @@
 #include "core/microcylinder.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
+#include "support/linen_swatch_study.h"
 using namespace weft;
-namespace {
-dvec3 at_elevation(double azimuth_deg, double elevation_deg) {
-  const double a = glm::radians(azimuth_deg), e = glm::radians(elevation_deg);
-  return dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-}
-}
+using test::at_elevation;
 TEST(Study, Factor) {
-  Fabric linen = load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
-  BakeSettings st; st.tangent_samples = {3,3}; st.xi_resolution = st.wo_resolution = st.wi_resolution = 32; st.lambda_levels = 8;
-  WeightingTables tables = bake_weighting_tables(linen, st);
-  const ClothBsdf approx(linen, st.tangent_samples), exact(linen, 64);
-  std::vector<dvec3> views = {dvec3(0,0,1), dvec3(0.3,0.2,0.93), dvec3(-0.6,0.3,0.74), dvec3(0.2,-0.9,0.3)};
+  const test::LinenSwatchStudy study;
+  const Fabric& linen = study.linen;
+  const WeightingTables& tables = study.tables;
+  const ClothBsdf &approx = study.approx, &exact = study.exact;
+  const std::vector<dvec3>& views = study.views;
   const SurfaceFrame fr{};
   const int NP = 128, NA = 256;
   std::printf("lambda,elev,view,ref,iwasaki,tableT_exactshade,exactT_exactshade\n");

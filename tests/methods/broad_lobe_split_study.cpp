@@ -10,12 +10,10 @@
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
+#include "support/linen_swatch_study.h"
 using namespace weft;
+using test::at_elevation;
 namespace {
-dvec3 at_elevation(double azimuth_deg, double elevation_deg) {
-  const double a = glm::radians(azimuth_deg), e = glm::radians(elevation_deg);
-  return dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-}
 // centre + n ring lobes at angle beta, all sharpness ls; amplitudes by least squares on S^2
 struct Split { double beta, ls, a0, a1, err; };
 Split fit_split(double lambda, int n, double factor) {
@@ -48,11 +46,10 @@ SgLighting apply_split(const SphericalGaussian& g, int n, const Split& s) {
 }
 }
 TEST(Study, Split) {
-  Fabric linen = load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
-  BakeSettings st; st.tangent_samples = {3,3}; st.xi_resolution = st.wo_resolution = st.wi_resolution = 32; st.lambda_levels = 8;
-  WeightingTables tables = bake_weighting_tables(linen, st);
-  const ClothBsdf approx(linen, st.tangent_samples), exact(linen, 64);
-  std::vector<dvec3> views = {dvec3(0,0,1), dvec3(0.3,0.2,0.93), dvec3(-0.6,0.3,0.74), dvec3(0.2,-0.9,0.3)};
+  const test::LinenSwatchStudy study;
+  const WeightingTables& tables = study.tables;
+  const ClothBsdf &approx = study.approx, &exact = study.exact;
+  const std::vector<dvec3>& views = study.views;
   struct Cfg { int n; double f; };
   std::vector<Cfg> cfgs = {{4,3.0},{5,4.0},{6,4.0},{6,6.0},{8,8.0}};
   std::printf("lambda,elev,view,ref,direct");

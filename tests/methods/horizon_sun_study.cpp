@@ -9,17 +9,14 @@
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
+#include "support/linen_swatch_study.h"
 using namespace weft;
-static dvec3 at_elevation(double azimuth_deg, double elevation_deg) {
-  const double a = glm::radians(azimuth_deg), e = glm::radians(elevation_deg);
-  return dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-}
+using test::at_elevation;
 TEST(Study, HorizonSun) {
-  Fabric linen = load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
-  BakeSettings st; st.tangent_samples = {3,3}; st.xi_resolution = st.wo_resolution = st.wi_resolution = 32; st.lambda_levels = 8;
-  WeightingTables tables = bake_weighting_tables(linen, st);
-  const ClothBsdf approx(linen, st.tangent_samples), exact(linen, 64);
-  std::vector<dvec3> views = {dvec3(0,0,1), dvec3(0.3,0.2,0.93), dvec3(-0.6,0.3,0.74), dvec3(0.2,-0.9,0.3)};
+  const test::LinenSwatchStudy study;
+  const WeightingTables& tables = study.tables;
+  const ClothBsdf &approx = study.approx, &exact = study.exact;
+  const std::vector<dvec3>& views = study.views;
   std::printf("lambda,elev,view,ref_over_full,err\n");
   std::vector<std::pair<double,double>> pts = {{0.28,-90},{0.5,-45},{1,-20},{2,-45},{2,-90},{4,-10},{16,-5},{16,-20},{30,-3},{30,-10}};
   for (double lambda : {100.0, 300.0, 1000.0})

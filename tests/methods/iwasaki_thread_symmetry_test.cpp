@@ -17,15 +17,13 @@
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
+#include "support/sky_direction.h"
 
 using namespace weft;
+using test::at_elevation;
 
 namespace {
 
-dvec3 at_elevation(double azimuth_deg, double elevation_deg) {
-  const double a = glm::radians(azimuth_deg), e = glm::radians(elevation_deg);
-  return dvec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-}
 
 struct Tables {
   Fabric linen = load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
