@@ -369,7 +369,7 @@ SettingMeasure search_method(Search& search, int method, double& target, double 
 
 std::string describe(const SceneSetting& s, const SelectionKnobs& k, bool visibility) {
   std::string d = k.methods[s.method] + ", " + std::to_string(k.tangent_samples[s.samples[0]]) + "+" +
-                  std::to_string(k.tangent_samples[s.samples[1]]) + " samples, " +
+                  std::to_string(k.tangent_samples[s.samples[1]]) + " samples per curved thread, " +
                   std::to_string((k.baked_levels - 1) / k.level_strides[s.levels] + 1) + " levels, SVD " + number(k.svd_errors[s.svd]);
   if (visibility)
     d += ", SDF " + std::to_string(k.sdf_resolutions[s.sdf]) + ", PCA " + number(k.pca_errors[s.pca]) + " rad";

@@ -129,7 +129,7 @@ struct SceneSelection {
   double seconds = 0.0;
 };
 
-// Describes a setting ("iwasaki_vertex, 3+3 samples, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad",
+// Describes a setting ("iwasaki_vertex, 3+3 samples per curved thread, 5 levels, SVD 0.02, SDF 64, PCA 0.02 rad",
 // then ", subdivision 1" for a per-vertex method when more than one level is searched or the
 // level is not 0, then ", 8 SGs" when the SG count is searched).
 std::string describe(const SceneSetting& s, const SelectionKnobs& knobs, bool visibility);

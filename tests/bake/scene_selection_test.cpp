@@ -181,8 +181,9 @@ TEST(SceneSelection, FewerSgsHoldATargetOnAnIndependentRender) {
   // The one-step-fewer SG count, measured, missed the target (or the search would have taken it).
   for (const auto& m : s.tried)
     if (m.setting.method == s.chosen.setting.method && m.setting.samples == s.chosen.setting.samples &&
-        m.setting.svd == s.chosen.setting.svd && m.setting.sgs + 1 == s.chosen.setting.sgs)
+        m.setting.svd == s.chosen.setting.svd && m.setting.sgs + 1 == s.chosen.setting.sgs) {
       EXPECT_GT(m.error, target);
+    }
 }
 
 TEST(SceneSelection, UnreachableWithSgCountsTakesTheClosest) {
