@@ -169,14 +169,12 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         // the surface lobe's peak (lobe_peak_direction; blended with the axis's for broad SGs).
         const double T = std::max(tables.value(s, g.sharpness, xi_local, wo_local), 0.0);
         const double w_peak = lobe_peak_weight(g.sharpness);
-        const double T_lobe =
-            w_peak > 0.0
-                ? (1.0 - w_peak) * T +
-                      w_peak * std::max(tables.value(s, g.sharpness,
-                                                     local(lobe_peak_direction(tf, surface_lobe.mu, sg.phi_k)),
-                                                     wo_local),
-                                        0.0)
-                : T;
+        double T_lobe = T;
+        if (w_peak > 0.0) {
+          const dvec3 peak_local = local(lobe_peak_direction(tf, surface_lobe.mu, sg.phi_k));
+          const double T_peak = std::max(tables.value(s, g.sharpness, peak_local, wo_local), 0.0);
+          T_lobe = std::lerp(T, T_peak, w_peak);
+        }
         if (T <= 0.0 && T_lobe <= 0.0) continue;
         const double spread_k = separable_spread(g.sharpness, sg.theta_k, sg.sigma_k);
         LinearSdf sdf;
