@@ -30,6 +30,12 @@ FiberAngles fiber_angles(const ThreadFrame& f, const dvec3& w) {
   return {std::asin(wt), std::atan2(wb, wn), std::atan2(wt, wn)};
 }
 
+FiberDirection fiber_direction(const ThreadFrame& f, double theta, double phi) {
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const dvec3 radial = cp * f.n_prime + sp * f.b;
+  return {st * f.t + ct * radial, ct * f.t - st * radial, ct * (-sp * f.n_prime + cp * f.b)};
+}
+
 double normal_gaussian(double x, double gamma) {
   return std::exp(-x * x / (2.0 * gamma * gamma)) / (gamma * std::sqrt(2.0 * std::numbers::pi));
 }

@@ -32,6 +32,12 @@ struct FiberAngles {
   double theta, phi, psi;
 };
 FiberAngles fiber_angles(const ThreadFrame& f, const dvec3& w);
+// fiber_angles' inverse: the direction at (θ, φ) of frame f, sin θ·t + cos θ·(cos φ·n' + sin φ·b),
+// with its derivatives in θ and φ (what a linearisation about a lobe's peak needs).
+struct FiberDirection {
+  dvec3 w, dw_dtheta, dw_dphi;
+};
+FiberDirection fiber_direction(const ThreadFrame& f, double theta, double phi);
 
 // Scattering parameters of one thread; angles in radians, A already scaled.
 struct ThreadParams {

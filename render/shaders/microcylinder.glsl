@@ -56,6 +56,17 @@ FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
   return FiberAngles(atan(wt, sqrt((1.0 - wt) * (1.0 + wt))), atan(dot(w, axis), wn), atan(wt, wn));
 }
 
+// microcylinder.cpp's fiber_direction: fiber_angles' inverse in frame (t, n', b), with its
+// derivatives in θ and φ.
+struct FiberDirection {
+  vec3 w, dw_dtheta, dw_dphi;
+};
+FiberDirection fiber_direction(vec3 t, vec3 np, vec3 b, float theta, float phi) {
+  float ct = cos(theta), st = sin(theta), cp = cos(phi), sp = sin(phi);
+  vec3 radial = cp * np + sp * b;
+  return FiberDirection(st * t + ct * radial, ct * t - st * radial, ct * (-sp * np + cp * b));
+}
+
 vec3 scattering(Thread p, FiberAngles i, FiberAngles o) {
   float theta_d = 0.5 * (i.theta - o.theta), theta_h = 0.5 * (i.theta + o.theta);
   float phi_d = wrap_angle(i.phi - o.phi);

@@ -109,6 +109,26 @@ TEST(Frames, FiberAnglesOfKnownDirections) {
   EXPECT_NEAR(a.phi, kPi / 4, 1e-14);
 }
 
+// fiber_direction inverts fiber_angles on a tilted frame, and its derivatives are those of the
+// direction by central differences.
+TEST(Frames, FiberDirectionInvertsFiberAngles) {
+  const SurfaceFrame s = SurfaceFrame::from_normal_warp(glm::normalize(dvec3(0.2, -0.3, 1.0)), dvec3(1, 0.4, 0));
+  const ThreadFrame f = thread_frame(s, 1, glm::radians(-25.0));
+  for (double theta : {-1.2, -0.3, 0.0, 0.7, 1.4})
+    for (double phi : {-2.9, -1.0, 0.2, 1.6, 3.0}) {
+      const FiberDirection d = fiber_direction(f, theta, phi);
+      EXPECT_NEAR(glm::length(d.w), 1.0, 1e-14);
+      const FiberAngles a = fiber_angles(f, d.w);
+      EXPECT_NEAR(a.theta, theta, 1e-12);
+      EXPECT_NEAR(a.phi, phi, 1e-12);
+      const double e = 1e-6;
+      const dvec3 dt = (fiber_direction(f, theta + e, phi).w - fiber_direction(f, theta - e, phi).w) / (2 * e);
+      const dvec3 dp = (fiber_direction(f, theta, phi + e).w - fiber_direction(f, theta, phi - e).w) / (2 * e);
+      EXPECT_NEAR(glm::length(dt - d.dw_dtheta), 0.0, 1e-8);
+      EXPECT_NEAR(glm::length(dp - d.dw_dphi), 0.0, 1e-8);
+    }
+}
+
 // The RMS tilt over each sample's arc: Δα/√12 on a ramp (the uniform distribution's), 0 on a
 // straight stretch.
 TEST(TangentCurve, TiltSpreadsOverEachSamplesArc) {

@@ -43,7 +43,7 @@ SgLighting test_lights() {
   // surface (above_horizon), at a λ' between T's levels.
   l.push_back({glm::normalize(dvec3(0.1, 0.2, -0.97)), 0.3, dvec3(0.5, 0.6, 0.4)});
   // A low sun as a sky's fit gives it (one lobe at the fit's cap, λ = 1000) and its ring (λ ≈ 19):
-  // satin's narrow lobes read T at their peak for these (iwasaki.cpp's lobe_peak_direction).
+  // satin's narrow lobes read T at their peak for these (iwasaki.cpp: at fiber_direction of the peak).
   l.push_back({glm::normalize(dvec3(-0.4, -0.8, 0.15)), 1000.0, dvec3(30.0, 28.0, 25.0)});
   l.push_back({glm::normalize(dvec3(-0.4, -0.8, 0.2)), 19.0, dvec3(1.5, 1.4, 1.2)});
   // A sun 2° below the swatch's horizon: only its sliver lights the cloth (above_horizon's sharp rule).

@@ -140,7 +140,7 @@ const SatinSwatch& satin_swatch() {
 
 // Satin's float (γ_s 2.5°) keeps of a medium lobe only a band along its specular cone, where the
 // weight W differs from its mean over the whole SG that Eq. 9's T holds. T read at the surface
-// lobe's peak instead of at the SG's axis (iwasaki.cpp's lobe_peak_direction): a λ = 19 lobe (the
+// lobe's peak instead of at the SG's axis (iwasaki.cpp: at fiber_direction of the peak): a λ = 19 lobe (the
 // fit's ring round a sun) on and off the warp's and the weft's specular cones, −18 / +22 / +44 %
 // with T at the axis. Against the model with the same 15+1 tangent samples: with a sharp light
 // the samples' discrete tilts alone move satin's highlight by more than the approximation's error.

@@ -69,25 +69,10 @@ struct SurfaceHeight {
 };
 
 SurfaceHeight surface_height(const ThreadFrame& tf, const dvec3& n, double theta, double phi) {
-  const double t_n = glm::dot(tf.t, n), np_n = glm::dot(tf.n_prime, n), b_n = glm::dot(tf.b, n);
-  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
-  const double radial = cp * np_n + sp * b_n;
-  const double h = st * t_n + ct * radial;
-  const double h_dtheta = ct * t_n - st * radial;
-  const double h_dphi = ct * (cp * b_n - sp * np_n);
-  return {h, h_dtheta, h_dphi};
+  const FiberDirection d = fiber_direction(tf, theta, phi);
+  return {glm::dot(d.w, n), glm::dot(d.dw_dtheta, n), glm::dot(d.dw_dphi, n)};
 }
 
-// The direction (θ, φ) of a sample frame. Eq. 9 takes W out of the integral as its average over
-// the SG (T at ξ_k), but a narrow longitudinal lobe (satin's float: γ_s 2.5°) keeps of the SG only
-// a band along the thread's specular cone, where W differs from its mean over the SG: on a satin
-// swatch a λ = 19 lobe is −18 to +44 % off with T at ξ_k, nearly all of it this factorisation (the
-// exact shading factor with T at ξ_k: −15 to +43 %). T at the surface lobe's peak (θ_l, φ_k), at
-// the SG's own λ, takes W where the product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both lobes: the
-// volume lobe's peak lies next to it (separate lookups: within 0.7 % of the shared one).
-dvec3 lobe_peak_direction(const ThreadFrame& tf, double theta, double phi) {
-  return std::sin(theta) * tf.t + std::cos(theta) * (std::cos(phi) * tf.n_prime + std::sin(phi) * tf.b);
-}
 // A longitudinal lobe's standard deviation γ for one tangent sample, widened by the tilts of the arc
 // the sample stands for (RMS spread δ about its own tilt, TangentCurve::sample_tilt_spreads): a tilt
 // change dα moves θ_i by cos φ_i·dα and θ_o by cos φ_o·dα, so θ_h by c·dα, c = (cos φ_i + cos φ_o)/2,
@@ -100,6 +85,13 @@ double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double 
   return std::sqrt(gamma * gamma + c * c * tilt_spread * tilt_spread);
 }
 
+// Eq. 9 takes W out of the integral as its average over the SG (T at ξ_k), but a narrow
+// longitudinal lobe (satin's float: γ_s 2.5°) keeps of the SG only a band along the thread's
+// specular cone, where W differs from its mean over the SG: on a satin swatch a λ = 19 lobe is
+// −18 to +44 % off with T at ξ_k, nearly all of it this factorisation (the exact shading factor
+// with T at ξ_k: −15 to +43 %). T at the surface lobe's peak (θ_l, φ_k), at the SG's own λ, takes
+// W where the product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both
+// lobes: the volume lobe's peak lies next to it (separate lookups: within 0.7 % of the shared one).
 // How much of T the lobes take at their peak: all of it from λ = 8, none at λ ≤ 2, linear in log λ
 // between. For a sky's broad lobes (λ ≈ 2) Eq. 9's darkening and Eq. 13's frozen form's
 // brightening cancel on linen (−10 % and +10 % at λ = 2; T at the peak for them puts linen's broad
@@ -166,12 +158,12 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
         const ScaledCircularGaussian light{1.0, sg.theta_k, sg.sigma_k};
         const ScaledCircularGaussian surface_lobe = product(light, longitudinal_lobe_as_circular(o.theta, gs));
         // Eq. 10: T at the SG's axis for the isotropic k_d part, and for both longitudinal lobes at
-        // the surface lobe's peak (lobe_peak_direction; blended with the axis's for broad SGs).
+        // the surface lobe's peak (fiber_direction; blended with the axis's for broad SGs).
         const double T = std::max(tables.value(s, g.sharpness, xi_local, wo_local), 0.0);
         const double w_peak = lobe_peak_weight(g.sharpness);
         double T_lobe = T;
         if (w_peak > 0.0) {
-          const dvec3 peak_local = local(lobe_peak_direction(tf, surface_lobe.mu, sg.phi_k));
+          const dvec3 peak_local = local(fiber_direction(tf, surface_lobe.mu, sg.phi_k).w);
           const double T_peak = std::max(tables.value(s, g.sharpness, peak_local, wo_local), 0.0);
           T_lobe = std::lerp(T, T_peak, w_peak);
         }

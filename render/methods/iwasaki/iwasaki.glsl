@@ -1,6 +1,6 @@
 // Seed 000 §3, Eq. 8–14, as one function, iwasaki_radiance(): for each SG k and tangent sample t,
 //   T_{t,λ_k}(ξ_k, ω_o) from the SVD factors (two λ levels, bilinear in both direction grids),
-//   and for the longitudinal lobes T at the surface lobe's peak (iwasaki.cpp's lobe_peak_direction)
+//   and for the longitudinal lobes T at the surface lobe's peak (fiber_direction)
 //   × the circular-Gaussian product of the SG with each longitudinal lobe (Eq. 11, 13)
 //   × the smooth factors at the product's peak × the visibility ratio H (Eq. 12, 14: sigmoid
 //   with the baked gain κ, d and ∇d at the SG axis per vertex, computed when the lighting changes),
@@ -107,11 +107,8 @@ vec3 sg_visibility(int vertex, int k) {
   return texelFetch(u_sg_visibility, ivec2((vertex - (vertex / p) * p) * u_sg_count + k, vertex / p), 0).rgb;
 }
 vec3 sdf_in_sample_frame(vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b, float theta, float phi, vec3 s) {
-  float ct = cos(theta), st = sin(theta), cp = cos(phi), sp = sin(phi);
-  vec3 radial = cp * np + sp * b;
-  vec3 w = st * t + ct * radial;
-  vec3 dw_dtheta = ct * t - st * radial;
-  vec3 dw_dphi = ct * (-sp * np + cp * b);
+  FiberDirection d = fiber_direction(t, np, b, theta, phi);
+  vec3 w = d.w, dw_dtheta = d.dw_dtheta, dw_dphi = d.dw_dphi;
   float wn = dot(w, n), wv = dot(w, v);
   float cos2 = max(wn * wn + wv * wv, 1e-8);
   vec3 dtheta_v = u / sqrt(cos2);
@@ -272,11 +269,11 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           float c_tilt = 0.5 * (cos(phi_k) + cos(fo.phi)) * u_tilt_spreads[j * MAX_TANGENT_SAMPLES + q];
           float gs = sqrt(2.0) * sqrt(p.gamma_s * p.gamma_s + c_tilt * c_tilt);
           float gv = sqrt(2.0) * sqrt(p.gamma_v * p.gamma_v + c_tilt * c_tilt);
-          // iwasaki.cpp's lobe_peak_direction: T at the surface lobe's peak for both longitudinal lobes.
+          // T at the surface lobe's peak (fiber_direction) for both longitudinal lobes.
           Lobe ls = lobe_product(light, Lobe(1.0 / (sqrt(PI) * gs), -fo.theta, 2.0 * gs));
           float T_lobe = T;
           if (w_peak > 0.0) {
-            vec3 peak = sin(ls.mu) * t + cos(ls.mu) * (cos(phi_k) * np + sin(phi_k) * axis);
+            vec3 peak = fiber_direction(t, np, axis, ls.mu, phi_k).w;
             vec2 peak_tc = node_texcoord(node_square_from_hemisphere(normalize(vec3(dot(peak, u), dot(peak, v), dot(peak, n)))), u_xi_n);
             T_lobe = mix(T, max(table_t(d, l0, l1, lw, peak_tc, wo_tc), 0.0), w_peak);
           }

@@ -72,11 +72,7 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
 
 SdfSample sdf_in_sample_frame(const SgVisibility& vis, int sg, const SurfaceFrame& f, const std::array<uint32_t, 3>& corners,
                               const dvec3& bary, const ThreadFrame& s, double theta, double phi) {
-  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
-  const dvec3 radial = cp * s.n_prime + sp * s.b;
-  const dvec3 w = st * s.t + ct * radial;
-  const dvec3 dw_dtheta = ct * s.t - st * radial;
-  const dvec3 dw_dphi = ct * (-sp * s.n_prime + cp * s.b);
+  const auto [w, dw_dtheta, dw_dphi] = fiber_direction(s, theta, phi);
   const double wn = glm::dot(w, f.n), wv = glm::dot(w, f.v);
   const double cos2 = std::max(wn * wn + wv * wv, 1e-8);  // cos²θ'
   dvec3 g(0.0);
