@@ -326,7 +326,7 @@ TEST(Study, VisibilityBudget) {
   s.per_sg = std::fopen((out / "per_sg.csv").string().c_str(), "w");
   ASSERT_TRUE(s.budget && s.per_sg);
   std::fprintf(s.budget,
-               "scene,fabric,env,width,height,cloth_pixels,occlusion_effect,occluded_over_open,"
+               "scene,fabric,env,width,height,cloth_pixels,occlusion_effect,open_over_occluded,"
                "open_err,open_ratio,sdf_err,sdf_ratio,exact_err,exact_ratio,"
                "vertex_open_err,vertex_open_ratio,vertex_sdf_err,vertex_sdf_ratio,vertex_exact_err,vertex_exact_ratio,"
                "vertex_mask_err,vertex_mask_ratio\n");
