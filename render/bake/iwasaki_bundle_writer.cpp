@@ -52,6 +52,18 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
                json{{"sigma_min", s.sigma_min}, {"sigma_max", s.sigma_max}, {"max_fit_error", d.kappa->max_fit_error()}}
                    .dump());
   }
+  if (!d.masks.empty()) {
+    json masks = json::object();
+    for (const auto& [object, m] : d.masks) {
+      masks[std::to_string(object)] = {{"resolution", m.resolution}};
+      std::vector<std::uint32_t> bits;
+      bits.reserve(2 * m.words.size());
+      for (const std::uint64_t word : m.words) bits.insert(bits.end(), {std::uint32_t(word), std::uint32_t(word >> 32)});
+      w.add_array<std::uint32_t>(iwasaki_section::mask(object), bits,
+                                 {uint64_t(m.vertex_count()), uint64_t(m.blocks()), 2});
+    }
+    w.add_json(iwasaki_section::kMaskIndex, masks.dump());
+  }
 }
 
 }  // namespace weft

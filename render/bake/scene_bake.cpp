@@ -6,6 +6,7 @@
 #include "bake/bake_selection.h"
 #include "bake/iwasaki_bundle_writer.h"
 #include "bake/sigmoid_gain.h"
+#include "bake/visibility_mask_bake.h"
 #include "bake/weighting_bake.h"
 
 namespace weft {
@@ -91,6 +92,14 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
                      scene.objects[i].name.c_str(), st.vertices);
     }
     if (v) out.visibility.emplace(i, std::move(*v));
+    // Occluded cloth also gets a bit mask (iwasaki_vertex_mask's exact V_k per vertex and SG).
+    if (opt.mask_resolution > 0 && scene.objects[i].material == Material::cloth && out.visibility.count(i))
+      if (auto m = bake_visibility_mask(scene, i, opt.mask_resolution)) {
+        if (!opt.quiet)
+          std::fprintf(stderr, "  %s: visibility mask %d² per vertex, %.2f MB\n", scene.objects[i].name.c_str(),
+                       opt.mask_resolution, 8e-6 * double(m->words.size()));
+        out.masks.emplace(i, std::move(*m));
+      }
   }
   rep.visibility_s = since(t0);
 

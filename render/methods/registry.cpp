@@ -22,6 +22,7 @@ const std::vector<RuntimeMethod>& registry() {
       mizutani_method(),
       iwasaki_method(),
       iwasaki_vertex_method(),
+      iwasaki_vertex_mask_method(),
       sheer_method(), sheer_vertex_method(),
   };
   return methods;

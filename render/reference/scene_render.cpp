@@ -59,7 +59,9 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   const dvec3 ng = s.geometric_normal;
   const dvec3 origin = s.position + ng * rays_.ray_epsilon();
   // Directions below the geometric surface are blocked by the surface itself.
-  auto visible = [&](const dvec3& wi) { return glm::dot(wi, ng) > 0.0 && rays_.unoccluded(origin, wi); };
+  auto visible = [&](const dvec3& wi) {
+    return glm::dot(wi, ng) > 0.0 && (!options_.occlusion || rays_.unoccluded(origin, wi));
+  };
 
   if (level < 0 || level >= kLevels) throw std::invalid_argument("reference: level out of range");
   const SceneObject& obj = scene_.objects[hit.object];

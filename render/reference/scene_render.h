@@ -53,6 +53,9 @@ struct ReferenceRenderOptions {
   // with visibility from either side) + α·(what the ray continues to), α = e^{−τ/|n·ω_o|}.
   // SG lighting only. Shadow rays still treat cloth as opaque.
   bool thin_cloth = false;
+  // Shadow rays against the scene; false: only the surface's own horizon (its geometric normal)
+  // cuts the light, for studies that split an error into shading and visibility.
+  bool occlusion = true;
   // Called with the fraction done, from one thread, at most a few hundred times.
   std::function<void(double)> progress;
 };

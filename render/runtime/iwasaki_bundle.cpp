@@ -9,6 +9,7 @@ namespace weft {
 namespace iwasaki_section {
 std::string table(int id, const char* part) { return "T/" + std::to_string(id) + "/" + part; }
 std::string vis(size_t object, const char* part) { return "vis/" + std::to_string(object) + "/" + part; }
+std::string mask(size_t object) { return "mask/" + std::to_string(object) + "/bits"; }
 }  // namespace iwasaki_section
 
 namespace {
@@ -144,6 +145,34 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     }
   }
   if (!out.visibility.empty() && !out.kappa) throw bad(r, iwasaki_section::kKappa, "missing: visibility needs κ");
+
+  if (r.has(iwasaki_section::kMaskIndex)) {
+    const std::string MI = iwasaki_section::kMaskIndex;
+    const json masks = parse(r, MI);
+    if (!masks.is_object()) throw bad(r, MI, "expected an object keyed by scene object index");
+    for (const auto& [key, j] : masks.items()) {
+      VisibilityMask m;
+      size_t object = 0;
+      try {
+        object = std::stoul(key);
+        m.resolution = j.at("resolution").get<int>();
+      } catch (const std::exception& e) {
+        throw bad(r, MI, "entry '" + key + "': " + e.what());
+      }
+      if (m.resolution < 8 || m.resolution > 256 || m.resolution % 8)
+        throw bad(r, MI, "entry '" + key + "': resolution must be a multiple of 8 within 8..256");
+      const auto vc = vertex_counts.find(object);
+      if (vc == vertex_counts.end()) throw bad(r, MI, "entry '" + key + "': no such object in the scene");
+      const std::string name = iwasaki_section::mask(object);
+      const auto bits = r.array<std::uint32_t>(name);
+      const size_t words = vc->second * size_t(m.blocks());
+      if (bits.size() != 2 * words)
+        throw bad(r, name, "expected " + std::to_string(2 * words) + " values, found " + std::to_string(bits.size()));
+      m.words.resize(words);
+      for (size_t i = 0; i < words; ++i) m.words[i] = std::uint64_t(bits[2 * i]) | std::uint64_t(bits[2 * i + 1]) << 32;
+      out.masks.emplace(object, std::move(m));
+    }
+  }
   return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Seed 000's baked data in a bundle (BUNDLE_FORMAT.md, "Seed 000 sections"): the weighting
 // tables T of each baked fabric (SVD factors), the per-vertex visibility SDF of each occluded
-// object (cloth, floor, occluder) as PCA (mean, basis, coefficients), and the sigmoid gain table κ. Written by
+// object (cloth, floor, occluder) as PCA (mean, basis, coefficients), the sigmoid gain table κ,
+// and each occluded cloth object's per-vertex visibility mask (runtime/visibility_mask.h). Written by
 // `weft bake` beside the scene sections (render/bake/iwasaki_bundle_writer.h), read here for
 // `weft run` / `weft render --method iwasaki`.
 #include <map>
@@ -12,6 +13,7 @@
 #include "bundle/bundle_reader.h"
 #include "runtime/object_visibility.h"
 #include "runtime/sigmoid_gain_table.h"
+#include "runtime/visibility_mask.h"
 #include "runtime/weighting_tables.h"
 
 namespace weft {
@@ -21,6 +23,8 @@ inline constexpr const char* kTablesIndex = "bake/T";     // json: {preset: {id,
 inline constexpr const char* kVisIndex = "bake/vis";      // json: {object index: {resolution, terms, errors}}
 inline constexpr const char* kKappa = "kappa";            // f32 [σ_l, σ', β]: normalised gains κ·s
 inline constexpr const char* kKappaIndex = "bake/kappa";  // json: the table's spec and fit error
+inline constexpr const char* kMaskIndex = "bake/mask";    // json: {object index: {resolution}}; optional
+std::string mask(size_t object);                          // "mask/<i>/bits" (u32 [vertices, blocks, 2]: low, high word)
 std::string table(int id, const char* part);              // "T/<id>/u", "T/<id>/v" (f32, all levels concatenated)
 std::string vis(size_t object, const char* part);         // "vis/<i>/pca_mean" [cells], "pca_basis" [terms, cells],
                                                           // "pca_coeffs" [vertices, terms]
@@ -30,6 +34,7 @@ struct IwasakiBundleData {
   std::map<std::string, WeightingTables> tables;     // by fabric preset
   std::map<size_t, ObjectVisibility> visibility;     // by scene object index; absent: unoccluded
   std::optional<SigmoidGainTable> kappa;             // present whenever visibility is
+  std::map<size_t, VisibilityMask> masks;            // cloth objects' bit masks (iwasaki_vertex_mask); absent: unoccluded
 };
 
 // True when the bundle holds seed 000 tables (the `bake/T` index).

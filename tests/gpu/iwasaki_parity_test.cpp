@@ -6,7 +6,8 @@
 // per-(vertex, SG) SDF values reconstructed from the PCA when the lighting is set, and κ. The C++ side finds each pixel's surface
 // point by casting the pixel's camera ray (Embree), which gives the same perspective-correct
 // barycentrics the rasteriser interpolates with. For iwasaki_vertex the C++ side evaluates the
-// triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics.
+// triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics;
+// iwasaki_vertex_mask the same with each vertex's V_k from its visibility mask in place of the SDF.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -15,6 +16,7 @@
 
 #include "bake/scene_visibility.h"
 #include "bake/sigmoid_gain.h"
+#include "bake/visibility_mask_bake.h"
 #include "bake/weighting_bake.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
@@ -59,7 +61,8 @@ struct Case {
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, gpu::Method method) {
-  const bool per_vertex = method.name == "iwasaki_vertex";
+  const bool per_vertex = method.name == "iwasaki_vertex" || method.name == "iwasaki_vertex_mask";
+  const bool masks = method.name == "iwasaki_vertex_mask";
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
   size_t cloth_index = 0;
@@ -73,6 +76,7 @@ void check_parity(const Case& c, gpu::Method method) {
   SceneVisibilityOptions vo;
   vo.resolution = 16;
   if (auto v = bake_object_visibility(scene, cloth_index, vo)) data->visibility.emplace(cloth_index, std::move(*v));
+  if (auto m = bake_visibility_mask(scene, cloth_index, 16)) data->masks.emplace(cloth_index, std::move(*m));
   ASSERT_EQ(data->visibility.size(), c.expect_visibility ? 1u : 0u);
   SigmoidGainTableSpec ks;
   ks.sigma_l_count = ks.sigma_prime_count = 5;
@@ -94,7 +98,9 @@ void check_parity(const Case& c, gpu::Method method) {
   const ClothBsdf bsdf(fabric, tables.tangent_samples);
   const TriangleMesh& mesh = scene.objects[cloth_index].mesh;
   std::unique_ptr<SgVisibility> grids;
-  if (c.expect_visibility) grids = std::make_unique<SgVisibility>(SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs, true));
+  if (c.expect_visibility)
+    grids = std::make_unique<SgVisibility>(masks ? SgVisibility::from_mask(data->masks.at(cloth_index), mesh, sgs)
+                                                 : SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs, true));
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double worst = 0, visibility_effect = 0;
@@ -119,7 +125,13 @@ void check_parity(const Case& c, gpu::Method method) {
         if (glm::dot(n, wo) < 0) n = -n;
         const SurfaceFrame frame = SurfaceFrame::from_normal_warp(n, warp);
         IwasakiVisibility vis;
-        if (grids) {
+        if (grids && masks) {
+          vis.open_share = [&](int sg) {
+            const double share = grids->at(sdf_corners[0], sg).x;
+            if (share < 0.9) ++occluded_pixels;
+            return share;
+          };
+        } else if (grids) {
           vis.kappa = &*data->kappa;
           vis.sdf = [&](int sg, const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
             const SdfSample s = sdf_in_sample_frame(*grids, sg, frame, sdf_corners, sdf_bary, tf, theta, phi);
@@ -168,6 +180,7 @@ void check_parity(const Case& c, gpu::Method method) {
 
 TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki")); }
 TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex")); }
+TEST_P(IwasakiParity, PerVertexMaskGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex_mask")); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,
                          ::testing::Values(Case{"swatch", "silk_shot", false}, Case{"pillow", "linen_plain", true},

@@ -134,6 +134,25 @@ TEST(ReferenceRender, OccluderCastsShadowOnLambertianFloor) {
   EXPECT_NEAR(sampled.pixel(1, 28, 0).r, power * 0.5 / std::numbers::pi, 1e-9);
 }
 
+TEST(ReferenceRender, WithoutOcclusionOnlyTheHorizonCutsTheLight) {
+  const Scene scene = shadow_scene();
+  const SphericalGaussian sun{dvec3(0, 0, 1), 200.0, dvec3(1.0)};
+  ReferenceLighting lighting;
+  lighting.sgs = {sun};
+  ReferenceRenderOptions opt;
+  opt.width = 41;
+  opt.height = 31;
+  opt.occlusion = false;
+  const ReferenceRenderer renderer(scene, {}, lighting, opt);
+  const double lit = 2.0 * 0.5 * (1.0 / 200.0 - -std::expm1(-200.0) / (200.0 * 200.0));
+  // Straight under the blocker the floor is lit as if it were not there.
+  EXPECT_NEAR(renderer.pixel(20, 15, 0).r, lit, 2e-3 * lit);
+  // A sun below the floor still leaves it dark: the surface's own horizon stays.
+  lighting.sgs = {{dvec3(0, 0, -1), 200.0, dvec3(1.0)}};
+  const ReferenceRenderer below(scene, {}, lighting, opt);
+  EXPECT_LT(below.pixel(20, 15, 0).r, 1e-6 * lit);
+}
+
 TEST(ReferenceRender, EnvironmentSamplesKeepThePowerOfTheMap) {
   EnvMapRepairs repairs;
   const EnvMap map = load_env_map(kAssets / "envmaps" / "studio.exr", NonFinitePolicy::clamp, &repairs);

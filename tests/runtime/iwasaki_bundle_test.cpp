@@ -1,6 +1,6 @@
 // Seed 000's sections of a bundle (render/bake/iwasaki_bundle): what add_iwasaki_sections writes
 // reads back bit for bit, and a bundle with a section missing or of the wrong size is refused
-// with a BundleError naming that section.
+// with a BundleError naming that section (visibility masks included).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -34,6 +34,11 @@ IwasakiBundleData sample_data() {
   std::vector<float> gains(24);
   for (auto& g : gains) g = 1.7f + 0.1f * u(rng);
   d.kappa = SigmoidGainTable::from_gains(ks, gains, 0.009);
+  VisibilityMask m;
+  m.resolution = 16;  // 4 blocks per vertex
+  std::uniform_int_distribution<std::uint64_t> bits;
+  for (int k = 0; k < 12; ++k) m.words.push_back(bits(rng));
+  d.masks.emplace(1, m);
   return d;
 }
 
@@ -91,6 +96,9 @@ TEST(IwasakiBundle, RoundTrips) {
   ASSERT_TRUE(back.kappa);
   EXPECT_EQ(d.kappa->normalized_gains(), back.kappa->normalized_gains());
   EXPECT_EQ(d.kappa->kappa(0.1, 0.3, 0.4, 0.8), back.kappa->kappa(0.1, 0.3, 0.4, 0.8));
+  ASSERT_EQ(back.masks.count(1), 1u);
+  EXPECT_EQ(back.masks.at(1).resolution, 16);
+  EXPECT_EQ(back.masks.at(1).words, d.masks.at(1).words);
 }
 
 TEST(IwasakiBundle, ErrorsNameTheSection) {
@@ -110,6 +118,9 @@ TEST(IwasakiBundle, ErrorsNameTheSection) {
   EXPECT_EQ(section_of(edited(bytes, "", "vis/1/pca_coeffs")), "vis/1/pca_coeffs");
   EXPECT_EQ(section_of(edited(bytes, "kappa")), "kappa");
   EXPECT_EQ(section_of(edited(bytes, "bake/vis")), "bake/vis");
+  EXPECT_EQ(section_of(edited(bytes, "mask/1/bits")), "mask/1/bits");
+  EXPECT_EQ(section_of(edited(bytes, "", "mask/1/bits")), "mask/1/bits");
+  EXPECT_EQ(section_of(edited(edited(bytes, "bake/mask"), "mask/1/bits")), "(no error)");  // masks are optional
   // Coefficients for another mesh: the vertex count is checked.
   EXPECT_EQ(section_of(bytes), "(no error)");
   try {

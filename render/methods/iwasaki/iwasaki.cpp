@@ -220,8 +220,10 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           vol += (T_lobe * lobe + T * iso) * p.albedo;
         }
       }
-      out.surface += g.amplitude * surf / double(n);
-      out.volume += g.amplitude * vol / double(n);
+      const dvec3 amplitude = visibility && visibility->open_share ? g.amplitude * visibility->open_share(int(sg_index))
+                                                                   : g.amplitude;
+      out.surface += amplitude * surf / double(n);
+      out.volume += amplitude * vol / double(n);
     }
   }
   out.radiance = out.surface + out.volume;

@@ -33,6 +33,9 @@ uniform float u_wo_n;
 uniform bool u_visibility;
 uniform highp sampler2D u_sg_visibility;  // (d, ∂d/∂θ', ∂d/∂φ') per (vertex, SG): SgVisibilityTexture
 uniform int u_sg_visibility_per_row;      // vertices per texel row
+// The texture holds (V_k, 0, 0) from a visibility mask instead (SgVisibility::from_mask): the SG's
+// amplitude times V_k, the lobes cut at the surface's horizon alone (iwasaki.cpp's open_share).
+uniform bool u_visibility_open_share;
 uniform highp sampler3D u_kappa;      // κ·s over (β, σ', σ_l) as x, y, z
 uniform vec3 u_kappa_n;               // nodes along σ_l, σ', β
 uniform vec2 u_kappa_sigma;           // σ range (min, max)
@@ -169,7 +172,7 @@ float horizon_fraction(float theta, float phi, float sigma_l, float sp, vec3 hz)
 float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
   float i = pair_integral(theta_l, sigma_l, sp);
   float h = horizon_fraction(theta_l, phi_k, sigma_l, sp, hz);
-  if (!u_visibility) return i * h;
+  if (!u_visibility || u_visibility_open_share) return i * h;
   return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
 
@@ -243,6 +246,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         // Per vertex the weights are (1, 0, 0): the other corners cost two fetches for nothing.
         if (bary.y != 0.0 || bary.z != 0.0)
           vis_k += bary.y * sg_visibility(corners.y, k) + bary.z * sg_visibility(corners.z, k);
+        if (u_visibility_open_share) amplitude *= vis_k.x;
       }
       for (int j = 0; j < 2; ++j) {
         Thread p = u_threads[j];
@@ -262,7 +266,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           Lobe light = Lobe(1.0, theta_k, sigma_k);
           float spread_k = separable_spread(lambda_k, theta_k, sigma_k);
           vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
-          vec3 sdf = u_visibility ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
+          vec3 sdf = u_visibility && !u_visibility_open_share ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.

@@ -31,6 +31,10 @@ struct IwasakiVisibility {
   // Eq. 14's sigmoid with the baked gains replaces the closed-form H when given (the runtime's
   // choice: the GPU reads the same table).
   const SigmoidGainTable* kappa = nullptr;
+  // Instead of an SDF: the share V_k of SG k's part above the surface that no geometry blocks
+  // (a baked visibility mask, iwasaki_visibility.h's SgVisibility::from_mask), multiplying the
+  // SG's whole contribution; the lobes are then cut at the surface's horizon alone.
+  std::function<double(int sg)> open_share;
 };
 
 struct IwasakiTerms {

@@ -59,6 +59,7 @@ struct IwasakiCloth::Object {
   // Occluded objects: the bundle's PCA and the mesh (vertex frames), and the per-(vertex, SG)
   // values for the lighting they were last computed for.
   const ObjectVisibility* visibility = nullptr;
+  const VisibilityMask* mask = nullptr;  // IwasakiShaders::open_share_masks
   const TriangleMesh* source = nullptr;
   std::unique_ptr<SgVisibilityTexture> sg_visibility;
   SgLighting computed_for;
@@ -97,6 +98,13 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
   if (vis) {
     o->visibility = vis;
+    if (shaders_.open_share_masks) {
+      const auto m = data_->masks.find(scene_index);
+      if (m == data_->masks.end() || m->second.vertex_count() != mesh.positions.size())
+        throw GpuError("method iwasaki_vertex_mask: the bundle has no visibility mask for object " +
+                       std::to_string(scene_index) + " (bake it again with `weft bake`)");
+      o->mask = &m->second;
+    }
     o->source = &mesh;
     o->sg_visibility = std::make_unique<SgVisibilityTexture>();
   }
@@ -108,7 +116,12 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
 std::optional<SgVisibility> IwasakiCloth::prepare_lighting(size_t handle, const SgLighting& sgs) const {
   const Object& o = *objects_.at(handle);
   if (!o.visibility) return std::nullopt;
-  return SgVisibility::compute(*o.visibility, *o.source, shaded(sgs), shaders_.sdf_above_horizon);
+  return values_for(o, shaded(sgs));
+}
+
+SgVisibility IwasakiCloth::values_for(const Object& o, const SgLighting& drawn) const {
+  if (o.mask) return SgVisibility::from_mask(*o.mask, *o.source, drawn);
+  return SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon);
 }
 
 void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) {
@@ -168,9 +181,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
   }
   glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
+  glUniform1i(program_.uniform("u_visibility_open_share"), o.mask ? 1 : 0);
   if (shaders_.upload) shaders_.upload(program_, o.bsdf->fabric(), drawn);
   if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
-    o.sg_visibility->upload(SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon));
+    o.sg_visibility->upload(values_for(o, drawn));
     o.computed_for = drawn;
   }
   // Samplers of every declared unit get a texture of their type, used or not.

@@ -40,6 +40,9 @@ struct IwasakiShaders {
   // SgVisibility::compute's `above_horizon`: d looked up where iwasaki.glsl shades a lobe whose
   // axis is below a vertex's surface; false for a layer that reads d at the SG axes (sheer).
   bool sdf_above_horizon = true;
+  // Per (vertex, SG) the exact visible share V_k from the bundle's visibility masks
+  // (SgVisibility::from_mask) instead of the SDF's d and ∇d (iwasaki.glsl's u_visibility_open_share).
+  bool open_share_masks = false;
 };
 IwasakiShaders iwasaki_shaders();
 
@@ -63,6 +66,7 @@ public:
 private:
   struct Object;
   const WeightingTablesTexture& tables_for(const Fabric& fabric);
+  SgVisibility values_for(const Object& o, const SgLighting& drawn) const;  // per (vertex, SG), for the lighting drawn
   std::shared_ptr<const IwasakiBundleData> data_;
   Evaluation evaluation_;
   IwasakiShaders shaders_;

@@ -11,11 +11,15 @@ namespace weft::methods {
 namespace {
 const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl"};
 
-RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation) {
+RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, bool open_share_masks = false) {
   RuntimeMethod m;
   m.seed000 = Seed000Tables::required;
   m.glsl = kGlsl;
-  m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) { return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation); };
+  m.make_gpu = [evaluation, open_share_masks](const gpu::ClothMethodSetup& s) {
+    gpu::IwasakiShaders shaders = gpu::iwasaki_shaders();
+    shaders.open_share_masks = open_share_masks;
+    return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, shaders);
+  };
   return m;
 }
 }  // namespace
@@ -36,6 +40,13 @@ RuntimeMethod iwasaki_method() {
 RuntimeMethod iwasaki_vertex_method() {
   RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex);
   m.name = "iwasaki_vertex";
+  m.ladder_position = 1;
+  return m;
+}
+
+RuntimeMethod iwasaki_vertex_mask_method() {
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, true);
+  m.name = "iwasaki_vertex_mask";
   m.ladder_position = 1;
   return m;
 }

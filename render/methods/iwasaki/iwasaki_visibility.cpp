@@ -87,4 +87,26 @@ SdfSample sdf_in_sample_frame(const SgVisibility& vis, int sg, const SurfaceFram
   return out;
 }
 
+SgVisibility SgVisibility::from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs) {
+  SgVisibility out;
+  out.vertices = mask.vertex_count();
+  out.sgs = int(sgs.size());
+  if (mesh.positions.size() != out.vertices || mesh.normals.size() != out.vertices || mesh.warps.size() != out.vertices)
+    throw std::invalid_argument("visibility mask of " + std::to_string(out.vertices) + " vertices for a mesh of " +
+                                std::to_string(mesh.positions.size()));
+  out.values.assign(out.vertices * sgs.size() * 3, 0.0f);
+  const MaskDirections directions(mask.resolution);
+#pragma omp parallel for schedule(static)
+  for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
+    const size_t v = size_t(vl);
+    const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
+    for (size_t k = 0; k < sgs.size(); ++k) {
+      const dvec3 a = glm::normalize(sgs[k].axis);
+      out.values[(v * sgs.size() + k) * 3] =
+          float(directions.sg_open_share(mask, v, dvec3(glm::dot(a, f.u), glm::dot(a, f.v), glm::dot(a, f.n)), sgs[k].sharpness));
+    }
+  }
+  return out;
+}
+
 }  // namespace weft

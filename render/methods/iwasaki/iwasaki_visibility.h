@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "runtime/iwasaki_bundle.h"
+#include "runtime/visibility_mask.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
 #include "scene/mesh.h"
@@ -36,6 +37,10 @@ struct SgVisibility {
   // above_horizon(G, vertex normal) (spherical_gaussian.h), instead of at its own axis.
   static SgVisibility compute(const ObjectVisibility& visibility, const TriangleMesh& mesh, const SgLighting& sgs,
                               bool above_horizon = false);
+  // The mask's alternative (method iwasaki_vertex_mask): per (vertex, SG) the share V_k of the
+  // SG's part above the vertex's surface that no geometry blocks, in place of d, as (V_k, 0, 0);
+  // the shader multiplies the SG's amplitude by it instead of taking the SDF's H per lobe.
+  static SgVisibility from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs);
   dvec3 at(size_t vertex, int sg) const {
     const float* p = &values[(vertex * size_t(sgs) + size_t(sg)) * 3];
     return dvec3(p[0], p[1], p[2]);
