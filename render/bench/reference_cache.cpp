@@ -59,13 +59,16 @@ std::optional<TangentConvergence> load_convergence(const std::filesystem::path& 
       c.samples < 1)
     return std::nullopt;
   c.converged = converged != 0;
-  std::string word;
-  TangentStep step;
-  while (in >> word >> step.samples >> step.finer >> step.relative_change) {
-    if (word != "step") return std::nullopt;
+  std::string line;
+  std::getline(in, line);  // the rest of the header line
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string word, extra;
+    TangentStep step;
+    if (!(fields >> word >> step.samples >> step.finer >> step.relative_change) || word != "step" || fields >> extra)
+      return std::nullopt;
     c.steps.push_back(step);
   }
-  if (!in.eof()) return std::nullopt;
   return c;
 }
 
