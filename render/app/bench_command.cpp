@@ -12,13 +12,13 @@ CommandAction add_bench_command(CLI::App& app) {
   auto a = std::make_shared<bench::BenchOptions>();
   CLI::App* sub = app.add_subcommand("bench", "Speed against accuracy for every GPU method: CSV, chart, report");
   sub->add_flag("--quick", a->quick,
-                "Smoke run: swatch/linen_plain at 64x48, reference SG grid 4, 8 tangent samples, "
+                "Smoke run: swatch/linen_plain at 64x48, reference SG grid 4, a fixed 8 tangent samples (no convergence), "
                 "iwasaki tables grid 12 and SDF 16, 2 stress points per case; the target-error row, and "
                 "sweeps of tangent samples 1,3 and SVD error 0.1,0.01 unless given");
   sub->add_option("--sweep", a->sweep,
                   "Preset: 'sky' (pillow and drape, linen and satin, procedural skies with the sun at 0-60 deg, "
                   "bigger and hazier suns, the bundled maps turned 90 deg; iwasaki and iwasaki_vertex at 320x240; "
-                  "writes low_sun.csv/.md with the SG fit's irradiance error) or 'sky-smoke' (its smoke version)");
+                  "writes low_sun.csv/.md with the SG fit's irradiance error) or 'sky-smoke' (its smoke version: swatch, linen, 64x48, the reference at a fixed 8 tangent samples)");
   sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
   sub->add_option("--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
   sub->add_option("--scenes", a->scenes, "Scenes: preset names or .json/.gltf/.glb paths")->delimiter(',')->capture_default_str();
@@ -33,7 +33,14 @@ CommandAction add_bench_command(CLI::App& app) {
   sub->add_option("--width", a->width, "Accuracy: frame width")->capture_default_str();
   sub->add_option("--height", a->height, "Accuracy: frame height")->capture_default_str();
   sub->add_option("--sg-grid", a->sg_grid, "Reference: SG grid N (N x 2N cells per SG)")->capture_default_str();
-  sub->add_option("--tangent-samples", a->tangent_samples, "Reference: tangent samples per thread")->capture_default_str();
+  sub->add_option("--tangent-samples", a->tangent_samples,
+                  "Reference: the minimum tangent samples per thread N_j (1..64); each reference doubles it, up to "
+                  "256, until the cloth changes by at most --reference-tolerance (results.csv: reference_tangent_samples)")
+      ->capture_default_str();
+  sub->add_option("--reference-tolerance", a->reference_tolerance,
+                  "Reference: relative RMSE between N_j and 2N_j over the cloth of every 4th pixel (x and y) that "
+                  "stops the doubling (0: N_j fixed at --tangent-samples)")
+      ->capture_default_str();
   sub->add_option("--sg-count", a->sg_count, "SGs fitted to each map")->capture_default_str();
   sub->add_option("--stress-points", a->stress_points, "Stability table: points per stress case")->capture_default_str();
   sub->add_flag("--no-stability", a->no_stability, "Skip the stability table");

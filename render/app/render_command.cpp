@@ -31,7 +31,7 @@ struct RenderArgs {
   int sg_grid = 8;
   int map_width = 128;
   int sg_count = 10;
-  int tangent_samples = 16;
+  int tangent_samples = 32;  // DESIGN.md §2: the reference converges in N_j ≥ 32
   int check_stride = 6;
   bool no_check = false;
   double exposure = 0.0;  // 0: automatic

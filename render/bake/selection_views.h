@@ -21,7 +21,7 @@ struct SelectionViewOptions {
   int count = 3;               // the scene camera, then ±spread, ±2·spread, ...
   double spread_deg = 20.0;    // turn between views about the camera target, around camera.up
   int width = 160, height = 120;
-  int sg_grid = 8, tangent_samples = 16;  // the reference's quadrature (as the bench's)
+  int sg_grid = 8, tangent_samples = 16;  // the reference's quadrature, fixed (the bench's converges from 32)
 };
 
 // $XDG_CACHE_HOME/weft/bake-references, else ~/.cache/weft/bake-references, else under /tmp.

@@ -30,7 +30,7 @@ void apply_quick(BenchOptions& a) {
   a.envs = {"scene"};
   a.speed_width = 64, a.speed_height = 48;  // --speed-frames stays (20 by default)
   a.width = 64, a.height = 48;
-  a.sg_grid = 4, a.tangent_samples = 8;
+  a.sg_grid = 4, a.tangent_samples = 8, a.reference_tolerance = 0.0;  // a smoke run: N_j fixed
   a.stress_points = 2;
   a.bake_grid = 12;
   // Smoke versions of iwasaki's knob sweeps (grid-12 tables: seconds each). No SDF sweep:
@@ -46,6 +46,8 @@ void validate(const BenchOptions& a) {
     throw InvalidOption("--width/--height/--speed-width/--speed-height: must be within 8..4096");
   if (a.sg_grid < 1 || a.sg_grid > 256) throw InvalidOption("--sg-grid: must be within 1..256");
   if (a.tangent_samples < 1 || a.tangent_samples > 64) throw InvalidOption("--tangent-samples: must be within 1..64");
+  if (!(a.reference_tolerance >= 0.0 && a.reference_tolerance < 1.0))
+    throw InvalidOption("--reference-tolerance: must be within [0, 1)");
   if (a.sg_count < 1 || a.sg_count > 40) throw InvalidOption("--sg-count: must be within 1..40");
   if (a.stress_points < 0 || a.stress_points > 1000) throw InvalidOption("--stress-points: must be within 0..1000");
   if (a.bake_grid != 0 && (a.bake_grid < 4 || a.bake_grid > 96)) throw InvalidOption("--bake-grid: must be 0 or within 4..96");
@@ -73,7 +75,7 @@ std::string command_line(const BenchOptions& a) {
     c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --envs " << joined(a.envs)
       << " --speed-width " << a.speed_width << " --speed-height " << a.speed_height << " --width " << a.width
       << " --height " << a.height << " --sg-grid " << a.sg_grid << " --tangent-samples " << a.tangent_samples
-      << " --stress-points " << a.stress_points;
+      << " --reference-tolerance " << fmt(a.reference_tolerance, 4) << " --stress-points " << a.stress_points;
   c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
   if (!a.methods.empty()) c << " --methods " << joined(a.methods);
   if (a.no_stability) c << " --no-stability";

@@ -14,6 +14,9 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// The most tangent samples per thread a converging reference takes.
+inline constexpr int kReferenceTangentCap = 256;
+
 struct BenchOptions {
   bool quick = false;
   std::string sweep;  // a preset of scenes, maps and methods (sky_sweep.h): "sky", "sky-smoke"
@@ -26,7 +29,11 @@ struct BenchOptions {
   std::vector<std::string> methods;  // empty: all available
   int speed_width = 640, speed_height = 480, speed_frames = 20;
   int width = 320, height = 240;
-  int sg_grid = 8, tangent_samples = 16, sg_count = 10;
+  // Reference: SG grid; tangent samples per thread N_j, the minimum the reference starts from
+  // (reference_set.h: doubled up to kReferenceTangentCap until the cloth changes by at most
+  // reference_tolerance; 0: fixed at tangent_samples).
+  int sg_grid = 8, tangent_samples = 32, sg_count = 10;
+  double reference_tolerance = 0.01;
   int stress_points = 24;
   bool no_stability = false;
   int bake_grid = 0;           // iwasaki tables' ξ/ω grids n×n; 0: the paper's 48 (12 with --quick)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench/ladder.h"
+#include "bench/reference_set.h"
 #include "bench/stability.h"
 
 namespace weft::bench {
@@ -32,6 +33,7 @@ struct Row {
   int subdivision = -1;           // target-error and subdivided rows: the cloth meshes' levels (< 0: not refined)
   size_t cloth_mesh_bytes = 0;    // the cloth meshes' bundle sections (scene_bundle_writer.h)
   double visibility_bake_s = -1;  // subdivided rows: the visibility bake on the refined cloth (< 0: none)
+  int reference_tangent_samples = 0;  // N_j of the reference the row is measured against
 };
 
 // One point of the SG-count sweep.
@@ -82,6 +84,7 @@ struct BenchResults {
   double seconds = 0.0;              // the whole run, before writing the outputs
   double reference_seconds = 0.0;
   int references_rendered = 0, references_cached = 0;
+  std::vector<ReferenceRecord> references;  // each reference's N_j and how it was chosen
 };
 
 }  // namespace weft::bench

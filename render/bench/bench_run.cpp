@@ -142,6 +142,7 @@ int run_bench(BenchOptions a) {
   res.reference_seconds = references.render_seconds();
   res.references_rendered = references.rendered();
   res.references_cached = references.cached();
+  res.references = references.records();
 
   write_results_csv(out, a, res);
   write_chart(out, a, res);

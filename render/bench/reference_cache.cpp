@@ -48,4 +48,42 @@ void store_reference(const std::filesystem::path& file, const CachedReference& r
   std::filesystem::rename(tmp, file);
 }
 
+std::optional<TangentConvergence> load_convergence(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  std::string magic, w1, w2, w3, w4;
+  TangentConvergence c;
+  int converged = 0;
+  in >> magic >> w1 >> c.samples >> w2 >> converged >> w3 >> c.cloth_pixels >> w4 >> c.seconds;
+  if (!in || magic != "WEFTNJ1" || w1 != "samples" || w2 != "converged" || w3 != "cloth_pixels" || w4 != "seconds" ||
+      c.samples < 1)
+    return std::nullopt;
+  c.converged = converged != 0;
+  std::string line;
+  std::getline(in, line);  // the rest of the header line
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string word, extra;
+    TangentStep step;
+    if (!(fields >> word >> step.samples >> step.finer >> step.relative_change) || word != "step" || fields >> extra)
+      return std::nullopt;
+    c.steps.push_back(step);
+  }
+  return c;
+}
+
+void store_convergence(const std::filesystem::path& file, const TangentConvergence& c) {
+  std::filesystem::create_directories(file.parent_path());
+  const auto tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out.precision(17);
+    out << "WEFTNJ1\nsamples " << c.samples << " converged " << (c.converged ? 1 : 0) << " cloth_pixels "
+        << c.cloth_pixels << " seconds " << c.seconds << "\n";
+    for (const auto& s : c.steps) out << "step " << s.samples << " " << s.finer << " " << s.relative_change << "\n";
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  std::filesystem::rename(tmp, file);
+}
+
 }  // namespace weft::bench

@@ -13,6 +13,7 @@
 #include "core/input_hash.h"
 #include "image/image.h"
 #include "reference/scene_render.h"
+#include "reference/tangent_convergence.h"
 
 namespace weft::bench {
 
@@ -24,9 +25,15 @@ InputHash& add_file(InputHash& h, const std::filesystem::path& file);
 struct CachedReference {
   Image image;
   std::vector<PixelKind> kinds;
+  int tangent_samples = 0;  // N_j it was rendered with (the key holds it; the file does not)
 };
 
 std::optional<CachedReference> load_reference(const std::filesystem::path& file);
 void store_reference(const std::filesystem::path& file, const CachedReference& r);  // atomic rename
+
+// A tangent-sample choice (reference/tangent_convergence.h) as text: "WEFTNJ1", then
+// "samples N converged 0|1 cloth_pixels P seconds S", then one "step N finer change" line per doubling.
+std::optional<TangentConvergence> load_convergence(const std::filesystem::path& file);
+void store_convergence(const std::filesystem::path& file, const TangentConvergence& c);  // atomic rename
 
 }  // namespace weft::bench

@@ -38,6 +38,61 @@ void add_scene_inputs(InputHash& h, const std::filesystem::path& assets, const s
 
 }  // namespace
 
+CachedReference ReferenceSet::render(const std::string& name, const std::string& label, const InputHash& inputs,
+                                     const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                                     const ReferenceLighting& lighting, ReferenceRenderOptions opt) {
+  const BenchOptions& a = options_;
+  ReferenceRecord record;
+  record.name = name;
+  if (a.reference_tolerance > 0.0) {
+    TangentConvergenceOptions conv;
+    conv.minimum = a.tangent_samples, conv.cap = kReferenceTangentCap, conv.tolerance = a.reference_tolerance;
+    InputHash hc = inputs;
+    hc.add("tangent-convergence").add_number(conv.minimum).add_number(conv.cap).add_number(conv.tolerance);
+    hc.add_number(opt.check_stride);
+    const auto choice_file = cache_ / (name + "_nj_" + hc.hex() + ".txt");
+    auto choice = load_convergence(choice_file);
+    record.tangent_cached = bool(choice);
+    if (!choice) {
+      std::cerr << "weft bench: " << label << ": tangent samples from " << conv.minimum << " ..." << std::flush;
+      choice = converge_tangent_samples(scene, fabrics, lighting, opt, conv);
+      seconds_ += choice->seconds;
+      for (const auto& step : choice->steps)
+        std::cerr << " " << step.samples << " vs " << step.finer << ": " << fmt(100.0 * step.relative_change) << " %;";
+      std::cerr << " N_j " << choice->samples << (choice->converged ? "" : " (cap)") << ", " << fmt(choice->seconds)
+                << " s\n";
+      store_convergence(choice_file, *choice);
+    }
+    record.tangent = *choice;
+  } else {
+    record.tangent.samples = a.tangent_samples;
+  }
+  opt.tangent_samples = record.tangent.samples;
+  InputHash h = inputs;
+  h.add_number(opt.tangent_samples);
+  const auto cache_file = cache_ / (name + "_" + h.hex() + ".ref");
+  auto ref = load_reference(cache_file);
+  record.image_cached = bool(ref);
+  if (ref) {
+    ++cached_;
+  } else {
+    std::cerr << "weft bench: " << label << " at " << opt.width << "x" << opt.height << ", N_j " << opt.tangent_samples
+              << " ..." << std::flush;
+    opt.check_convergence = false;
+    const auto t = std::chrono::steady_clock::now();
+    const ReferenceRenderResult res = ReferenceRenderer(scene, fabrics, lighting, opt).render(0);
+    record.render_seconds = seconds_since(t);
+    seconds_ += record.render_seconds;
+    ++rendered_;
+    std::cerr << " " << fmt(record.render_seconds) << " s\n";
+    ref = CachedReference{res.image, res.kinds};
+    store_reference(cache_file, *ref);
+  }
+  ref->tangent_samples = opt.tangent_samples;
+  records_.push_back(record);
+  return std::move(*ref);
+}
+
 const CachedReference& ReferenceSet::sg_lit(const Case& c, bool thin) {
   const BenchOptions& a = options_;
   const std::string name = c.tag + (thin ? "_thin" : "");
@@ -51,31 +106,14 @@ const CachedReference& ReferenceSet::sg_lit(const Case& c, bool thin) {
     h.add_number(g.axis.x).add_number(g.axis.y).add_number(g.axis.z).add_number(g.sharpness);
     h.add_number(g.amplitude.r).add_number(g.amplitude.g).add_number(g.amplitude.b);
   }
-  h.add_number(a.width).add_number(a.height).add_number(a.sg_grid).add_number(a.tangent_samples);
-  const auto cache_file = cache_ / (name + "_" + h.hex() + ".ref");
-  auto ref = load_reference(cache_file);
-  if (ref) {
-    ++cached_;
-  } else {
-    std::cerr << "weft bench: reference " << name << " at " << a.width << "x" << a.height << " ..." << std::flush;
-    ReferenceLighting lighting;
-    lighting.sgs = c.sgs;
-    lighting.background = [sgs = c.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
-    ReferenceRenderOptions opt;
-    opt.width = a.width, opt.height = a.height, opt.sg_grid = a.sg_grid, opt.tangent_samples = a.tangent_samples;
-    opt.check_convergence = false;
-    opt.thin_cloth = thin;
-    const auto t = std::chrono::steady_clock::now();
-    const ReferenceRenderer rr(c.scene, c.fabrics, lighting, opt);
-    const ReferenceRenderResult res = rr.render(0);
-    const double secs = seconds_since(t);
-    seconds_ += secs;
-    ++rendered_;
-    std::cerr << " " << fmt(secs) << " s\n";
-    ref = CachedReference{res.image, res.kinds};
-    store_reference(cache_file, *ref);
-  }
-  return loaded_.emplace(name, std::move(*ref)).first->second;
+  h.add_number(a.width).add_number(a.height).add_number(a.sg_grid);
+  ReferenceLighting lighting;
+  lighting.sgs = c.sgs;
+  lighting.background = [sgs = c.sgs](const glm::dvec3& d) { return evaluate(sgs, d); };
+  ReferenceRenderOptions opt;
+  opt.width = a.width, opt.height = a.height, opt.sg_grid = a.sg_grid;
+  opt.thin_cloth = thin;
+  return loaded_.emplace(name, render(name, "reference " + name, h, c.scene, c.fabrics, lighting, opt)).first->second;
 }
 
 CachedReference ReferenceSet::map_lit(const std::string& scene_arg, const Scene& s,
@@ -87,28 +125,13 @@ CachedReference ReferenceSet::map_lit(const std::string& scene_arg, const Scene&
   add_scene_inputs(h, a.assets, scene_arg, s);
   add_file(h, env_file).add("map128");
   for (const auto& [name, f] : fabrics) add_file(h.add(name), fabric_file(name, a.assets / "fabrics"));
-  h.add_number(a.width).add_number(a.height).add_number(a.tangent_samples);
-  const auto cache_file = cache_ / (s.name + "_map_" + h.hex() + ".ref");
-  auto ref = load_reference(cache_file);
-  if (ref) {
-    ++cached_;
-    return std::move(*ref);
-  }
-  std::cerr << "weft bench: map-lit reference " << s.name << " ..." << std::flush;
+  h.add_number(a.width).add_number(a.height);
   ReferenceLighting lighting;
   lighting.samples = [map](int level) { return environment_samples(*map, 128 << level); };
   lighting.background = [map](const glm::dvec3& d) { return map->lookup(d); };
   ReferenceRenderOptions opt;
-  opt.width = a.width, opt.height = a.height, opt.tangent_samples = a.tangent_samples;
-  opt.check_convergence = false;
-  const auto t = std::chrono::steady_clock::now();
-  const ReferenceRenderResult res = ReferenceRenderer(s, fabrics, lighting, opt).render(0);
-  seconds_ += seconds_since(t);
-  ++rendered_;
-  std::cerr << " " << fmt(seconds_since(t)) << " s\n";
-  CachedReference made{res.image, res.kinds};
-  store_reference(cache_file, made);
-  return made;
+  opt.width = a.width, opt.height = a.height;
+  return render(s.name + "_map", "map-lit reference " + s.name, h, s, fabrics, lighting, opt);
 }
 
 }  // namespace weft::bench

@@ -24,6 +24,17 @@ std::vector<ChartPoint> chart_points(const std::vector<Row>& rows) {
 }
 
 
+}  // namespace
+
+std::string reference_samples_text(const BenchOptions& a) {
+  if (a.reference_tolerance <= 0.0) return std::to_string(a.tangent_samples) + " tangent samples per thread, fixed";
+  return "tangent samples per thread from " + std::to_string(a.tangent_samples) + ", doubled up to " +
+         std::to_string(kReferenceTangentCap) + " until the cloth changes by at most " +
+         fmt(100.0 * a.reference_tolerance) + " % (each case's in results.csv, reference_tangent_samples)";
+}
+
+namespace {
+
 // Header, the chart with its table of markers, and every row.
 void overview(std::ostream& md, const BenchOptions& a, const BenchResults& res) {
   const auto& rows = res.rows;
@@ -39,7 +50,7 @@ void overview(std::ostream& md, const BenchOptions& a, const BenchResults& res) 
      << "glFinish included, at " << a.speed_width << "x" << a.speed_height << ". Accuracy: relative RMSE "
      << "`sqrt(mean((x-r)^2))/mean(r)` over the cloth pixels at " << a.width << "x" << a.height << " against `reference` "
      << "under the same " << a.sg_count << " fitted SGs (SG grid " << a.sg_grid << "x" << 2 * a.sg_grid << ", "
-     << a.tangent_samples << " tangent samples per thread). Times on llvmpipe: compare ratios within one run.\n\n";
+     << reference_samples_text(a) << "). Times on llvmpipe: compare ratios within one run.\n\n";
   md << "![chart](chart.png)\n\n";
   md << "| method | ms/frame (geo. mean) | relative RMSE (geo. mean) | Pareto front |\n|---|---|---|---|\n";
   for (const auto& k : markers)
@@ -273,7 +284,7 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
   csv << "scene,fabric,env,method,speed_width,speed_height,ms_per_frame,frames,width,height,relative_rmse,cloth_pixels,"
          "renderer,note,bundle_bytes,shadow_pixels,shadow_relative_rmse,shadow_brightness_ratio,band_brightness_ratio,"
          "lambert_relative_rmse,lambert_brightness_ratio,setting,sg_count,subdivision,cloth_mesh_bytes,"
-         "visibility_bake_seconds\n";
+         "visibility_bake_seconds,reference_tangent_samples\n";
   for (const auto& r : rows)
     csv << r.scene << "," << r.fabric << "," << (r.env.find(',') == std::string::npos ? r.env : "\"" + r.env + "\"") << "," << r.method << "," << a.speed_width << "," << a.speed_height
         << "," << fmt(r.ms, 6) << "," << r.frames << "," << a.width << "," << a.height << ","
@@ -286,7 +297,8 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
         << (r.sg_count ? std::to_string(r.sg_count) : "") << ","
         << (r.subdivision >= 0 ? std::to_string(r.subdivision) : "") << ","
         << (r.cloth_mesh_bytes ? std::to_string(r.cloth_mesh_bytes) : "") << ","
-        << (r.visibility_bake_s >= 0 ? fmt(r.visibility_bake_s, 4) : "") << "\n";
+        << (r.visibility_bake_s >= 0 ? fmt(r.visibility_bake_s, 4) : "") << ","
+        << (r.reference_tangent_samples ? std::to_string(r.reference_tangent_samples) : "") << "\n";
   if (!csv) throw std::runtime_error("cannot write " + (out / "results.csv").string());
 }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "bench/number_text.h"
+#include "bench/report.h"
 #include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/sg_fit.h"
@@ -37,7 +38,7 @@ void apply_sweep(BenchOptions& a) {
     a.scenes = {"swatch"};
     a.fabrics = {"linen_plain"};
     a.width = 64, a.height = 48;
-    a.sg_grid = 4, a.tangent_samples = 8;
+    a.sg_grid = 4, a.tangent_samples = 8, a.reference_tolerance = 0.0;  // a smoke run: N_j fixed
     a.bake_grid = 12;
   } else {
     if (a.scenes == defaults.scenes) a.scenes = {"pillow", "drape"};
@@ -97,6 +98,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
   struct Case {
     std::string scene, fabric, env;
     double iwasaki = -1.0, vertex = -1.0, mask = -1.0;
+    int reference_samples = 0;
   };
   std::vector<Case> cases;
   for (const auto& r : res.rows) {
@@ -105,16 +107,17 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
                            [&](const Case& c) { return c.scene == r.scene && c.fabric == r.fabric && c.env == r.env; });
     if (it == cases.end()) it = cases.insert(cases.end(), Case{r.scene, r.fabric, r.env});
     (r.method == "iwasaki" ? it->iwasaki : r.method == "iwasaki_vertex" ? it->vertex : it->mask) = r.rmse;
+    it->reference_samples = r.reference_tangent_samples;
   }
 
   std::ofstream csv(out / "low_sun.csv");
   csv << "scene,fabric,env,iwasaki_rmse,iwasaki_vertex_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,"
-         "iwasaki_vertex_mask_rmse\n";
+         "reference_tangent_samples,iwasaki_vertex_mask_rmse\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
     csv << c.scene << "," << c.fabric << "," << quoted(c.env) << "," << fmt(c.iwasaki, 4) << "," << fmt(c.vertex, 4)
         << "," << fmt(f.irradiance_error, 4) << "," << fmt(f.probe_irradiance_error, 4) << ","
-        << fmt(f.probe_update_ms, 4) << "," << fmt(c.mask, 4) << "\n";
+        << fmt(f.probe_update_ms, 4) << "," << c.reference_samples << "," << fmt(c.mask, 4) << "\n";
   }
   if (!csv) throw std::runtime_error("cannot write " + (out / "low_sun.csv").string());
 
@@ -133,7 +136,8 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
   std::ofstream md(out / "low_sun.md");
   md << "# Low suns and turned maps (`weft bench --sweep " << a.sweep << "`)\n\n"
      << "Relative RMSE over the cloth pixels at " << a.width << "x" << a.height
-     << " against the reference under the same " << a.sg_count << " fitted SGs; the fit's irradiance error "
+     << " against the reference under the same " << a.sg_count << " fitted SGs (SG grid " << a.sg_grid << ", "
+     << reference_samples_text(a) << "); the fit's irradiance error "
      << "(fit_error.h) with the bench's fit and with the probe's warm update (grid 64, 8 iterations).\n\n"
      << "Summary: iwasaki worst " << fmt(iw.empty() ? -1 : *std::max_element(iw.begin(), iw.end())) << ", median "
      << fmt(median(iw)) << "; iwasaki_vertex worst " << fmt(vx.empty() ? -1 : *std::max_element(vx.begin(), vx.end()))
@@ -142,13 +146,26 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
      << "; fit irradiance error worst " << fmt(fit_worst) << " (probe update "
      << fmt(probe_worst) << ", at most " << fmt(probe_ms_worst) << " ms of CPU time per update).\n\n"
      << "| scene | fabric | env | iwasaki | iwasaki_vertex | iwasaki_vertex_mask | fit irradiance error | probe update: "
-        "error / CPU ms |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
+        "error / CPU ms | reference N_j |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
     md << "| " << c.scene << " | " << c.fabric << " | `" << c.env << "` | " << fmt(c.iwasaki) << " | " << fmt(c.vertex)
        << " | " << fmt(c.mask) << " | " << fmt(f.irradiance_error) << " | " << fmt(f.probe_irradiance_error) << " / "
-       << fmt(f.probe_update_ms) << " |\n";
+       << fmt(f.probe_update_ms) << " | " << c.reference_samples << " |\n";
+  }
+  md << "\n## References\n\nN_j: tangent samples per thread; doublings: the check subset's cloth change from N to "
+        "2N; times on this run's machine (cached: from an earlier run).\n\n"
+     << "| reference | N_j | doublings | choice: s | render: s |\n|---|---|---|---|---|\n";
+  for (const auto& r : res.references) {
+    std::string steps;
+    for (const auto& s : r.tangent.steps)
+      steps += (steps.empty() ? "" : ", ") + std::to_string(s.samples) + "→" + std::to_string(s.finer) + ": " +
+               fmt(100.0 * s.relative_change) + " %";
+    md << "| " << r.name << " | " << r.tangent.samples << (r.tangent.steps.empty() || r.tangent.converged ? "" : " (cap)")
+       << " | " << (steps.empty() ? "fixed" : steps) << " | "
+       << (r.tangent.steps.empty() ? "" : r.tangent_cached ? "cached (" + fmt(r.tangent.seconds) + ")" : fmt(r.tangent.seconds))
+       << " | " << (r.image_cached ? "cached" : fmt(r.render_seconds)) << " |\n";
   }
 }
 

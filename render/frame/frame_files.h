@@ -23,7 +23,7 @@ void write_gpu_frame(const FrameInputs& in, const GpuFrame& f, const FrameFileOp
 
 struct ReferenceFrameOptions {
   std::string lighting = "sg";  // as FrameLightingOptions::mode, for the summary
-  int sg_grid = 8, map_width = 128, tangent_samples = 16, check_stride = 6;
+  int sg_grid = 8, map_width = 128, tangent_samples = 32, check_stride = 6;
   bool check_convergence = true;
 };
 

@@ -96,6 +96,13 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   return sum;
 }
 
+PixelKind ReferenceRenderer::kind(int x, int y) const {
+  const dvec3 dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
+  const auto hit = rays_.intersect(scene_.camera.position, dir);
+  if (!hit) return PixelKind::background;
+  return scene_.objects[hit->object].material == Material::cloth ? PixelKind::cloth : PixelKind::lambertian;
+}
+
 dvec3 ReferenceRenderer::pixel(int x, int y, int level, PixelKind* kind) const {
   const dvec3 dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
   const auto hit = rays_.intersect(scene_.camera.position, dir);
@@ -165,6 +172,18 @@ ReferenceRenderResult ReferenceRenderer::render(int level) const {
   return res;
 }
 
+double relative_change(std::span<const dvec3> coarse, std::span<const dvec3> fine) {
+  if (coarse.size() != fine.size()) throw std::invalid_argument("relative_change: sizes differ");
+  double se = 0, sum = 0;
+  for (size_t i = 0; i < fine.size(); ++i) {
+    const dvec3 d = coarse[i] - fine[i];
+    se += glm::dot(d, d);
+    sum += glm::length(fine[i]);
+  }
+  if (fine.empty() || !(sum > 0)) return 0.0;
+  return std::sqrt(se / fine.size()) / (sum / fine.size());
+}
+
 ConvergenceReport ReferenceRenderer::convergence(const ReferenceRenderResult& result, int level) const {
   const auto start = std::chrono::steady_clock::now();
   if (level + 1 >= kLevels) throw std::invalid_argument("reference: convergence level out of range");
@@ -187,28 +206,20 @@ ConvergenceReport ReferenceRenderer::convergence(const ReferenceRenderResult& re
   ConvergenceReport r;
   r.level = level;
   r.pixels_checked = pixels.size();
-  double se = 0, sum = 0, se_c = 0, sum_c = 0;
-  size_t n_c = 0;
+  std::vector<dvec3> coarse(pixels.size()), coarse_cloth, fine_cloth;
   for (size_t i = 0; i < pixels.size(); ++i) {
-    const dvec3 d = result.image.at(pixels[i].x, pixels[i].y) - fine[i];
-    se += glm::dot(d, d);
-    sum += glm::length(fine[i]);
-    if (pixels[i].cloth) {
-      se_c += glm::dot(d, d);
-      sum_c += glm::length(fine[i]);
-      ++n_c;
-    }
+    coarse[i] = result.image.at(pixels[i].x, pixels[i].y);
+    if (pixels[i].cloth) coarse_cloth.push_back(coarse[i]), fine_cloth.push_back(fine[i]);
   }
+  r.relative_rmse = relative_change(coarse, fine);
+  r.cloth_relative_rmse = relative_change(coarse_cloth, fine_cloth);
+  double sum = 0;
+  for (const dvec3& f : fine) sum += glm::length(f);
   if (!pixels.empty() && sum > 0) {
     const double mean = sum / pixels.size();
-    r.relative_rmse = std::sqrt(se / pixels.size()) / mean;
-    for (size_t i = 0; i < pixels.size(); ++i) {
-      const double change = glm::length(result.image.at(pixels[i].x, pixels[i].y) - fine[i]) /
-                            std::max(glm::length(fine[i]), mean);
-      r.max_pixel_change = std::max(r.max_pixel_change, change);
-    }
+    for (size_t i = 0; i < pixels.size(); ++i)
+      r.max_pixel_change = std::max(r.max_pixel_change, glm::length(coarse[i] - fine[i]) / std::max(glm::length(fine[i]), mean));
   }
-  if (n_c > 0 && sum_c > 0) r.cloth_relative_rmse = std::sqrt(se_c / n_c) / (sum_c / n_c);
   r.seconds = seconds_since(start);
   return r;
 }

@@ -10,6 +10,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <span>
 #include <map>
 #include <string>
 #include <vector>
@@ -44,7 +45,7 @@ struct ReferenceLighting {
 struct ReferenceRenderOptions {
   int width = 320, height = 240;
   int sg_grid = 8;           // SG lighting: sg_grid × 2·sg_grid cells per SG at level 0
-  int tangent_samples = 16;  // N_j per thread at level 0 (each level doubles it too)
+  int tangent_samples = 32;  // N_j per thread at level 0 (each level doubles it too); DESIGN.md §2: ≥ 32
   // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
   int check_stride = 4;
   bool check_convergence = true;
@@ -79,6 +80,10 @@ struct ReferenceRenderResult {
   ConvergenceReport convergence;
 };
 
+// sqrt(mean |x−x₂|²) / mean |x₂| over paired pixels (Euclidean RGB norms): how far `coarse`
+// is from `fine`; 0 when `fine` is empty or black.
+double relative_change(std::span<const glm::dvec3> coarse, std::span<const glm::dvec3> fine);
+
 class ReferenceRenderer {
 public:
   // `fabrics`: preset name → fabric for every cloth object of the scene.
@@ -87,6 +92,8 @@ public:
 
   // Radiance of pixel (x, y) at a resolution level, and what it saw.
   glm::dvec3 pixel(int x, int y, int level, PixelKind* kind = nullptr) const;
+  // What pixel (x, y) sees, without shading it.
+  PixelKind kind(int x, int y) const;
   ReferenceRenderResult render(int level = 0) const;
   // Re-renders the check subset at level+1 and compares it with `result` (rendered at level).
   ConvergenceReport convergence(const ReferenceRenderResult& result, int level) const;
