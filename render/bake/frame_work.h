@@ -26,7 +26,6 @@
 // the product's case. At these constants a per-vertex pillow costs as much as per-pixel at about
 // 266 000 vertices (level 3: 206 000); on a frame with 16 times fewer cloth pixels (160×120),
 // level 2 already costs more, as measured (docs/bench/mesh_density/).
-#include <cstddef>
 
 namespace weft {
 
