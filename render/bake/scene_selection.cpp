@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "bake/frame_work.h"
 #include "bake/scene_bundle_writer.h"
 #include "bake/setting_truncation.h"
 #include "bake/sigmoid_gain.h"
@@ -243,8 +244,8 @@ private:
   gpu::EglContext ctx_;
   gpu::OffscreenTarget target_;
 
-  // The modelled frame cost of view 0: points shaded (cloth vertices per vertex, cloth pixels per
-  // pixel) × SGs × tangent samples of the points' fabric (the runtime loops over both products).
+  // The modelled frame cost of view 0 at the kiosk's resolution (bake/frame_work.h): the cloth's
+  // vertices and their fabrics' tangent samples, the reference's cloth pixels scaled to 640×480.
   double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) {
     double vertices = 0.0, vertex_samples = 0.0;
     for (const auto& o : scene(s.density).objects) {
@@ -255,8 +256,9 @@ private:
       vertex_samples += n * double(t[0] + t[1]);
     }
     if (vertices == 0.0) return 0.0;
-    return double(sg_count) *
-           (per_vertex(knobs_.methods[s.method]) ? vertex_samples : cloth_pixels_ * vertex_samples / vertices);
+    const double pixels = kiosk_cloth_pixels(cloth_pixels_, o_.views.width, o_.views.height);
+    return per_vertex(knobs_.methods[s.method]) ? per_vertex_work(pixels, sg_count, vertex_samples)
+                                                : per_pixel_work(pixels, sg_count, vertex_samples, vertices);
   }
 
   // Tables of one fabric at a tangent-sample pair (knob indices), at the richest levels and SVD error.
@@ -312,10 +314,8 @@ private:
   }
 };
 
-// The cheaper of two settings: per-vertex before per-pixel, then the modelled frame cost,
-// then bytes.
+// The cheaper of two settings, of either method: the modelled frame cost, then bytes.
 bool cheaper(const SettingMeasure& a, const SettingMeasure& b) {
-  if (a.setting.method != b.setting.method) return a.setting.method < b.setting.method;
   if (a.work != b.work) return a.work < b.work;
   return a.bytes < b.bytes;
 }
@@ -401,10 +401,10 @@ SceneSelection select_scene_settings(const Scene& scene, const std::map<std::str
   for (int m = 0; m < int(o.knobs.methods.size()); ++m) {
     double method_target = o.target_error;
     const SettingMeasure end = search_method(search, m, method_target, o.paper_margin);
-    target = method_target;
-    if (end.error <= method_target) {
-      if (!chosen || cheaper(end, *chosen)) chosen = end;
-      break;  // a later method costs more frame time
+    if (!chosen) target = method_target;
+    if (end.error <= method_target && (!chosen || cheaper(end, *chosen))) {
+      chosen = end;
+      target = method_target;
     }
   }
   out.target = target;

@@ -6,12 +6,12 @@
 // that the image error — relative RMSE over the cloth pixels (bench/image_metrics.h) of the GPU
 // frame against the reference, the worst of the scene's views (bake/selection_views.h) — stays
 // ≤ the target at the least cost: frame time first, then bundle bytes. Frame time is modelled,
-// not timed (timings on a shared machine are noise at these differences): per-vertex before
-// per-pixel, then the shading work, shaded points × SGs × tangent samples (the runtime's loops,
-// methods/iwasaki/iwasaki.glsl); the measured ms is reported beside it. Per-vertex stays first
-// at every mesh density searched, which holds while the refined cloth has fewer vertices than
-// the kiosk frame has cloth pixels; the views' 160×120 frames have fewer than a level-2 pillow
-// (52 k vertices), so there its measured ms exceeds per-pixel's (docs/bench/mesh_density/).
+// not timed (timings on a shared machine are noise at these differences): the shading work at
+// the kiosk's 640×480, on one scale for per-pixel and per-vertex settings (bake/frame_work.h,
+// calibrated on the bench's frame times), so a per-vertex setting whose refined cloth has more
+// vertices to shade than the kiosk frame has cloth pixels loses to per-pixel shading; the
+// measured ms is reported beside it. Every method is searched; the cheapest that holds the
+// target is taken.
 //
 // Mesh density: the cloth meshes refined by midpoint subdivision (scene/mesh_subdivision.h),
 // searched for per-vertex shading only (per-pixel shading interpolates only the visibility
@@ -27,8 +27,8 @@
 // richest λ levels and SVD error) and visibility once per SDF resolution (at the richest PCA
 // error); the cheaper values of the other knobs are cut from those bakes
 // (bake/setting_truncation.h), so the bundle written is the one measured. When no setting of
-// a method reaches the target the next method is searched; when none does, the setting with
-// the least error is taken and `reached` is false.
+// any method reaches the target, the setting with the least error is taken and `reached` is
+// false.
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -64,7 +64,7 @@ struct SelectionKnobs {
   std::vector<double> svd_errors{0.1, 0.05, 0.03, 0.02, 0.01};  // the richest is the paper's: its bake
   std::vector<int> sdf_resolutions{32, 64, 128};
   std::vector<double> pca_errors{0.08, 0.04, 0.02, 0.01};     // radians, RMS
-  std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // cheapest frame first
+  std::vector<std::string> methods{"iwasaki_vertex", "iwasaki"};  // each searched; the cheapest holding the target wins
   // Midpoint subdivision levels of the cloth meshes for a per-vertex method (each ×4 the
   // triangles); a per-pixel method takes the first.
   std::vector<int> subdivisions{0, 1, 2};
@@ -106,7 +106,7 @@ struct SettingMeasure {
   double error = 0.0;               // the worst view's
   std::vector<double> view_errors;  // per view
   double ms = 0.0;                  // median frame time of view 0 at the views' size
-  double work = 0.0;                // modelled frame cost of view 0: shaded points × SGs × tangent samples
+  double work = 0.0;                // modelled frame cost of view 0 at 640×480 (bake/frame_work.h)
   int sg_count = 0;                 // SGs it was drawn with
   size_t bytes = 0;                 // tables + visibility (+ κ when there is visibility) + the mesh
                                     // sections refinement adds

@@ -61,7 +61,7 @@ std::string selection_summary(const SceneSelection& s, const SceneSelectionOptio
                   s.paper->bytes / 1e6, s.paper->ms);
     out += buf;
   }
-  std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine); modelled cost %.3g (points x SGs x samples)\n",
+  std::snprintf(buf, sizeof buf, "%-14s %.1f ms per %dx%d frame (this machine); modelled cost %.3g (pixel x SG x sample steps at 640x480)\n",
                 "frame", s.chosen.ms, o.views.width, o.views.height, s.chosen.work);
   out += buf;
   std::snprintf(buf, sizeof buf, "%-14s %zu settings measured on %zu views (%d references rendered, %d cached), %.1f s\n",

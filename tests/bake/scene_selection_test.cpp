@@ -5,15 +5,19 @@
 // SG count of the map's fit searched too: a target fewer SGs reach holds on an independent
 // render under the richer lighting, and an unreachable one still takes the closest. With the
 // cloth mesh's subdivision searched, a refined setting costs its added vertices in work and its
-// added mesh sections in bytes, and draws as measured on the refined mesh.
+// added mesh sections in bytes, and draws as measured on the refined mesh. With both shadings
+// searched, per-pixel wins where the cloth has more vertices than the kiosk frame has cloth
+// pixels (bake/frame_work.h) and per-vertex wins on the scene's own coarse mesh.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "bake/frame_work.h"
 #include "bake/scene_selection.h"
 #include "bench/image_metrics.h"
 #include "frame/frame_render.h"
@@ -232,7 +236,9 @@ TEST(SceneSelection, SubdivisionCostsItsVerticesAndDrawsAsMeasured) {
       if (b.setting != twin) continue;
       ++pairs;
       EXPECT_EQ(a.bytes - b.bytes, added_bytes);
-      EXPECT_NEAR(a.work / b.work, refined_vertices / vertices, 1e-9);
+      // The linen swatch: both threads curved, each sample counted per vertex.
+      const double samples = o.knobs.tangent_samples[a.setting.samples[0]] + o.knobs.tangent_samples[a.setting.samples[1]];
+      EXPECT_NEAR(a.work - b.work, kVertexStepCost * a.sg_count * samples * (refined_vertices - vertices), 1e-6 * a.work);
     }
   }
   EXPECT_GE(pairs, 1);
@@ -242,4 +248,56 @@ TEST(SceneSelection, SubdivisionCostsItsVerticesAndDrawsAsMeasured) {
   EXPECT_NEAR(e, s.chosen.view_errors[0], 1e-3);
   o.knobs.subdivisions = {kMaxSubdivision + 1};
   EXPECT_THROW(select_scene_settings(w.scene, w.fabrics, w.texts, w.sgs, o), std::invalid_argument);
+}
+
+namespace {
+
+// Both shadings searched on the swatch with its cloth refined `given` levels as the scene's mesh
+// and the search's subdivision fixed at `levels`, the camera pulled back `distance` times from its
+// target (fewer cloth pixels against the same vertices), views `width`×`height`.
+SceneSelection both_methods(const Swatch& w, const std::string& name, int given, int levels, double distance,
+                            int width, int height) {
+  Scene scene = refine_cloth_meshes(w.scene, given);
+  scene.camera.position = scene.camera.target + distance * (scene.camera.position - scene.camera.target);
+  SceneSelectionOptions o = small_options(fresh_cache(name), 0.12);
+  o.views.width = width, o.views.height = height;
+  o.knobs.tangent_samples = {2, 3};
+  o.knobs.level_strides = {o.knobs.level_strides.back()};
+  o.knobs.svd_errors = {0.01};
+  o.knobs.subdivisions = {levels};
+  o.knobs.sdf_resolutions = {32};  // the swatch is unoccluded: the coarsest probe tells so soonest
+  return select_scene_settings(scene, w.fabrics, w.texts, w.sgs, o);
+}
+
+// The setting measured for the other method that holds the target at the least work.
+std::optional<SettingMeasure> cheapest_other(const SceneSelection& s) {
+  std::optional<SettingMeasure> best;
+  for (const auto& m : s.tried)
+    if (m.setting.method != s.chosen.setting.method && m.error <= s.target && (!best || m.work < best->work)) best = m;
+  return best;
+}
+
+}  // namespace
+
+TEST(SceneSelection, DensePerVertexLosesToPerPixelAtTheKioskResolution) {
+  // Four levels put 66 049 vertices on the swatch; pulled back four times, it covers ~450 pixels
+  // of a 160×120 view, ~7 300 of the kiosk's 640×480: shading every vertex (0.22 of a pixel's
+  // step each, bake/frame_work.h) costs about twice what shading every pixel does.
+  const SceneSelection s = both_methods(swatch(), "dense_vertex", 2, 2, 4.0, 160, 120);
+  ASSERT_TRUE(s.reached);
+  EXPECT_EQ(s.method, "iwasaki");
+  const auto other = cheapest_other(s);
+  ASSERT_TRUE(other.has_value()) << "per-vertex held the target too: it lost on cost, not on error";
+  EXPECT_GT(other->work, s.chosen.work);
+}
+
+TEST(SceneSelection, SceneMeshPerVertexBeatsPerPixel) {
+  // The swatch's own 289 vertices against its cloth pixels in a 640×480 frame (~180 000).
+  const SceneSelection s = both_methods(swatch(), "mesh_vertex", 0, 0, 1.0, 64, 48);
+  ASSERT_TRUE(s.reached);
+  EXPECT_EQ(s.method, "iwasaki_vertex");
+  EXPECT_EQ(s.subdivision, 0);
+  const auto other = cheapest_other(s);
+  ASSERT_TRUE(other.has_value()) << "per-pixel held the target too: it lost on cost, not on error";
+  EXPECT_GT(other->work, s.chosen.work);
 }
