@@ -48,8 +48,8 @@ run_default() {
   local scene=assets/scenes/showroom.json
   # Re-baked after every rebuild of weft or edit of the scene, so the bundle matches both.
   { [ "$bundle" -nt "$weft" ] && [ "$bundle" -nt "$scene" ] && [ "$bundle" -nt assets/scenes/armchair.gltf ]; } ||
-    "$weft" bake --scene "$scene" --target-error 0.05 --grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
-      --out "$bundle"  # settings that bake in about a minute of CPU (docs/showroom/README.md)
+    "$weft" bake --scene "$scene" --grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
+      --out "$bundle"  # the default settings, coarser grids: a few minutes of CPU (docs/showroom/README.md)
   mkdir -p "$state"
   local panel=none
   [ -t 0 ] && panel=keyboard  # turn the knobs from this terminal (weft run --help; input/panel/KNOBS.md)
