@@ -21,6 +21,7 @@ const std::vector<RuntimeMethod>& registry() {
       thin_method(),
       mizutani_method(),
       iwasaki_method(),
+      iwasaki_mask_method(),
       iwasaki_vertex_method(),
       iwasaki_vertex_mask_method(),
       sheer_method(), sheer_vertex_method(),

@@ -8,6 +8,14 @@
 
 namespace weft {
 
+namespace {
+// Groups at most half the lobe's σ across (their extent from centre to corner ≲ σ/2): G's second
+// order expansion over a group then holds to a small fraction of its weight.
+constexpr float kGroupPerSigma = 0.5f;
+// A partly open group is split while G's log varies across it by more than this (λ·extent).
+constexpr float kSplitBelow = 0.1f;
+}
+
 glm::dvec3 hemisphere_square_direction(double s, double t) {
   // The square turned 45° onto the diamond |a| + |b| ≤ 1, then Clarberg's equal-area map of the
   // diamond onto the upper hemisphere: r = |a| + |b|, z = 1 − r², φ from the diamond's edge.
@@ -42,20 +50,31 @@ MaskDirections::MaskDirections(int resolution) : resolution_(resolution) {
       for (int bx = 0; bx < per_row; ++bx)
         for (int gy = 0; gy < 8; gy += side)
           for (int gx = 0; gx < 8; gx += side) {
-            Group g{by * per_row + bx, 0, glm::dvec3(0.0), side * side};
+            std::uint64_t bits = 0;
+            glm::dvec3 centre(0.0);
             for (int y = gy; y < gy + side; ++y)
               for (int x = gx; x < gx + side; ++x) {
-                g.bits |= std::uint64_t(1) << (8 * y + x);
-                g.centre += hemisphere_cell_direction(resolution, 8 * bx + x, 8 * by + y);
+                bits |= std::uint64_t(1) << (8 * y + x);
+                centre += hemisphere_cell_direction(resolution, 8 * bx + x, 8 * by + y);
               }
-            g.centre = glm::normalize(g.centre);
+            centre /= double(side * side);
+            glm::dmat3 spread(0.0);
+            for (int y = gy; y < gy + side; ++y)
+              for (int x = gx; x < gx + side; ++x) {
+                const glm::dvec3 d = hemisphere_cell_direction(resolution, 8 * bx + x, 8 * by + y) - centre;
+                spread += glm::outerProduct(d, d) / double(side * side);
+              }
+            double radius = radius_[level];
             for (int y = gy; y < gy + side; ++y)
               for (int x = gx; x < gx + side; ++x) {
                 const glm::dvec3 c = hemisphere_cell_direction(resolution, 8 * bx + x, 8 * by + y);
-                radius_[level] = std::max(radius_[level], std::acos(std::clamp(glm::dot(g.centre, c), -1.0, 1.0)) +
-                                                              cell_radius(8 * bx + x, 8 * by + y));
+                radius = std::max(radius, std::acos(std::clamp(glm::dot(glm::normalize(centre), c), -1.0, 1.0)) + cell_radius(8 * bx + x, 8 * by + y));
               }
-            groups_[level].push_back(g);
+            radius_[level] = float(radius);
+            // a·ω over the group's cells is at most a·centre + margin: |cos α − cos β| ≤ |α − β| from
+            // the normalised centre, which is 1 − |centre| from the centre.
+            margin_[level] = std::max(margin_[level], float(radius + 1.0 - glm::length(centre)));
+            groups_[level].push_back(Group{bits, glm::vec3(centre), glm::mat3(spread), float(side * side)});
           }
   }
 }
@@ -63,31 +82,40 @@ MaskDirections::MaskDirections(int resolution) : resolution_(resolution) {
 double MaskDirections::sg_open_share(const VisibilityMask& mask, size_t vertex, const glm::dvec3& axis_local,
                                      double sharpness) const {
   if (mask.resolution != resolution_) throw std::invalid_argument("visibility mask: directions of another resolution");
-  // The coarsest grouping over which G varies by under ~10 %: λ·r ≤ 0.1 (G's log changes by up to λ
-  // per radian where its level lines cross a group, e.g. at the horizon under a zenith lobe).
+  const float lambda = float(sharpness);
+  const float sigma = std::sqrt(2.0f / lambda);
   int level = 0;
-  while (level < 3 && sharpness * radius_[level + 1] <= 0.1) ++level;
-  constexpr double kCut = -14.0;  // G below e^{−14} of its peak: skipped
+  while (level < 3 && radius_[level + 1] <= kGroupPerSigma * sigma) ++level;
+  constexpr float kCut = -14.0f;  // G below e^{−14} of its peak: skipped
+  const glm::vec3 axis(axis_local);
   const std::uint64_t* words = &mask.words[vertex * size_t(mask.blocks())];
-  const double block_radius = radius_[3];
-  double open = 0.0, all = 0.0;
-  const auto& blocks = groups_[3];
-  const auto& groups = groups_[level];
-  const size_t per_block = groups.size() / blocks.size();
-  for (size_t b = 0; b < blocks.size(); ++b) {
-    const double angle = std::acos(std::clamp(glm::dot(blocks[b].centre, axis_local), -1.0, 1.0));
-    if (sharpness * (std::cos(std::max(0.0, angle - block_radius)) - 1.0) < kCut) continue;
-    const std::uint64_t w = words[b];
-    for (size_t i = b * per_block; i < (b + 1) * per_block; ++i) {
-      const Group& g = groups[i];
-      const double e = sharpness * (glm::dot(g.centre, axis_local) - 1.0);
-      if (e < kCut) continue;
-      const double weight = std::exp(e);
-      open += weight * std::popcount(w & g.bits);
+  float open = 0.0f, all = 0.0f;
+  // A group partly open is split into its four quarters, down to single cells: G's variation
+  // inside a group then weighs open and blocked cells alike.
+  auto add = [&](auto&& self, int l, size_t b, int gx, int gy, std::uint64_t w) -> void {
+    const int side = 1 << l;
+    const Group& g = groups_[l][b * size_t(64 >> (2 * l)) + size_t((gy >> l) * (8 >> l) + (gx >> l))];
+    const float c = glm::dot(g.centre, axis);
+    if (lambda * (c - 1.0f + margin_[l]) < kCut) return;
+    const int n = std::popcount(w & g.bits);
+    if (l == 0 || n == 0 || n == side * side || lambda * radius_[l] <= kSplitBelow) {
+      const float weight = std::exp(lambda * (c - 1.0f) + 0.5f * lambda * lambda * glm::dot(axis, g.spread * axis));
+      open += weight * float(n);
       all += weight * g.cells;
+      return;
     }
+    const int half = side / 2;
+    for (int q = 0; q < 4; ++q) self(self, l - 1, b, gx + (q & 1) * half, gy + (q >> 1) * half, w);
+  };
+  const auto& blocks = groups_[3];
+  const int side = 1 << level;
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    if (lambda * (glm::dot(blocks[b].centre, axis) - 1.0f + margin_[3]) < kCut) continue;
+    const std::uint64_t w = words[b];
+    for (int gy = 0; gy < 8; gy += side)
+      for (int gx = 0; gx < 8; gx += side) add(add, level, b, gx, gy, w);
   }
-  return all > 0.0 ? open / all : 1.0;
+  return all > 0.0f ? double(open / all) : 1.0;
 }
 
 }  // namespace weft

@@ -39,8 +39,11 @@ glm::dvec3 hemisphere_cell_direction(int resolution, int x, int y);
 
 // The share of G's part above the vertex's surface that no geometry blocks: Σ bit·G / Σ G over
 // the cells (equal solid angle), G in the vertex frame (`axis_local`: its axis in (u, v, n)).
-// Cells are grouped (2×2 … 8×8, the coarsest over which G varies by under ~10 %) and blocks
-// where G < e^{−14} of its peak skipped. 1 when G has no weight above the surface.
+// Cells are summed in groups (2×2 … 8×8 cells, each group's open count a popcount of a masked
+// word), the coarsest whose extent is at most kGroupPerSigma of the lobe's σ = √(2/λ), G's sum over
+// a group from its cells' mean and covariance; a group partly open is split down to single cells.
+// Groups where G < e^{−14} of its peak are skipped. Float arithmetic.
+// 1 when G has no weight above the surface.
 class MaskDirections {
 public:
   explicit MaskDirections(int resolution);
@@ -49,14 +52,15 @@ public:
 
 private:
   struct Group {
-    int block;
     std::uint64_t bits;
-    glm::dvec3 centre;  // unit: the normalised mean of its cells' directions
-    int cells;
+    glm::vec3 centre;  // the mean of its cells' directions
+    glm::mat3 spread;  // their covariance: Σ_cells e^{λa·ω} = cells·e^{λa·centre + λ²aᵀ·spread·a/2} to second order
+    float cells;
   };
   int resolution_;
   std::vector<Group> groups_[4];  // 1×1, 2×2, 4×4, 8×8 cells, in block order
-  double radius_[4] = {};         // the largest angle from a group's centre to a point of its cells
+  float radius_[4] = {};          // the largest angle from a group's centre to a point of its cells
+  float margin_[4] = {};          // the most a·ω exceeds a·centre over a group's cells, any unit a
 };
 
 }  // namespace weft

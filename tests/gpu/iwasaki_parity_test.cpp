@@ -7,7 +7,8 @@
 // point by casting the pixel's camera ray (Embree), which gives the same perspective-correct
 // barycentrics the rasteriser interpolates with. For iwasaki_vertex the C++ side evaluates the
 // triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics;
-// iwasaki_vertex_mask the same with each vertex's V_k from its visibility mask in place of the SDF.
+// iwasaki_vertex_mask the same with each vertex's V_k from its visibility mask in place of the SDF;
+// iwasaki_mask per pixel, the three vertices' V_k blended with the barycentrics.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -62,7 +63,7 @@ class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, gpu::Method method) {
   const bool per_vertex = method.name == "iwasaki_vertex" || method.name == "iwasaki_vertex_mask";
-  const bool masks = method.name == "iwasaki_vertex_mask";
+  const bool masks = method.name == "iwasaki_mask" || method.name == "iwasaki_vertex_mask";
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
   size_t cloth_index = 0;
@@ -127,7 +128,9 @@ void check_parity(const Case& c, gpu::Method method) {
         IwasakiVisibility vis;
         if (grids && masks) {
           vis.open_share = [&](int sg) {
-            const double share = grids->at(sdf_corners[0], sg).x;
+            double share = 0;  // blended over the triangle's vertices as the SDF's values are
+            for (int i = 0; i < 3; ++i)
+              if (sdf_bary[i] != 0) share += sdf_bary[i] * grids->at(sdf_corners[i], sg).x;
             if (share < 0.9) ++occluded_pixels;
             return share;
           };
@@ -179,6 +182,7 @@ void check_parity(const Case& c, gpu::Method method) {
 }
 
 TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki")); }
+TEST_P(IwasakiParity, PerPixelMaskGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_mask")); }
 TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex")); }
 TEST_P(IwasakiParity, PerVertexMaskGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex_mask")); }
 

@@ -101,7 +101,8 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
     if (shaders_.open_share_masks) {
       const auto m = data_->masks.find(scene_index);
       if (m == data_->masks.end() || m->second.vertex_count() != mesh.positions.size())
-        throw GpuError("method iwasaki_vertex_mask: the bundle has no visibility mask for object " +
+        throw GpuError(std::string("method ") + (per_vertex ? "iwasaki_vertex_mask" : "iwasaki_mask") +
+                       ": the bundle has no visibility mask for object " +
                        std::to_string(scene_index) + " (bake it again with `weft bake`)");
       o->mask = &m->second;
     }

@@ -37,6 +37,13 @@ RuntimeMethod iwasaki_method() {
   return m;
 }
 
+RuntimeMethod iwasaki_mask_method() {
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, true);
+  m.name = "iwasaki_mask";
+  m.ladder_position = 0;
+  return m;
+}
+
 RuntimeMethod iwasaki_vertex_method() {
   RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex);
   m.name = "iwasaki_vertex";

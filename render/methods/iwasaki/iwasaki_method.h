@@ -8,6 +8,9 @@
 namespace weft::methods {
 RuntimeMethod iwasaki_method();
 RuntimeMethod iwasaki_vertex_method();
+// iwasaki with each SG's exact visible share (V_k from the bundle's visibility masks, blended over
+// the triangle's vertices by barycentrics) in place of the SDF's linearised H.
+RuntimeMethod iwasaki_mask_method();
 // iwasaki_vertex with each SG's exact visible share per vertex (V_k from the bundle's visibility
 // masks, SgVisibility::from_mask) in place of the SDF's linearised H.
 RuntimeMethod iwasaki_vertex_mask_method();
