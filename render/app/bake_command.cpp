@@ -16,6 +16,7 @@
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
+#include "runtime/visibility_mask.h"
 #include "scene/mesh_subdivision.h"
 
 namespace weft {
@@ -24,8 +25,7 @@ namespace {
 struct BakeArgs {
   std::string scene, fabric, sgs_file, out;
   int fit_sgs = 0;
-  bool only_scene_fabrics = false;
-  bool no_tables = false;
+  bool only_scene_fabrics = false, no_tables = false, masks = false;
   int sdf_resolution = 128;  // the paper's
   // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
@@ -58,7 +58,7 @@ int run_bake(const BakeArgs& a) {
   } catch (const BundleFabricError& e) {
     throw UsageError(e.what());
   }
-  std::string lighting;
+  std::string lighting, tables_line = "no seed 000 tables (--no-tables)";
   if (!a.sgs_file.empty()) {
     progress(3, kSteps, "SGs from " + a.sgs_file);
     try {
@@ -77,12 +77,11 @@ int run_bake(const BakeArgs& a) {
   }
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
-  std::string tables_line = "no seed 000 tables (--no-tables)";
   if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
-    opt.progress = open_progress_bar;
+    opt.progress = open_progress_bar, opt.mask_resolution = a.masks ? kMaskResolution : 0;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.select.grid, opt.lambda_levels = a.lambda_levels;
     if (!a.samples.empty()) {
@@ -131,10 +130,11 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
-  sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
-  sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
+  auto* no_tables = sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
+  auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
+  sub->add_flag("--masks", a->masks, "Per-vertex visibility masks for iwasaki_mask / iwasaki_vertex_mask (512 B per occluded cloth vertex)")->excludes(no_tables)->excludes(target);
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();

@@ -14,6 +14,7 @@
 #include "gpu/egl_context.h"
 #include "frame/frame_render.h"
 #include "gpu/scene_renderer.h"
+#include "runtime/visibility_mask.h"
 
 namespace weft {
 
@@ -77,6 +78,7 @@ int run_render(const RenderArgs& a) {
     std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;
     o.progress = open_progress_bar;
+    if (gpu::reads_visibility_masks(a.method)) o.mask_resolution = kMaskResolution;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, o));
   }
   const FrameFileOptions files{a.method, a.out, a.width, a.height, a.exposure, a.exposure_bias};

@@ -30,7 +30,10 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
   Row r;
   r.scene = c.scene_name, r.fabric = c.fabric_label, r.env = c.env, r.method = label;
   r.reference_tangent_samples = ref->tangent_samples;
-  if (bundle) r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
+  if (bundle) {
+    r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
+    if (gpu::reads_visibility_masks(m.name)) r.bundle_bytes += mask_bytes(*bundle);
+  }
   r.visibility = gpu::uses_seed000_tables(m.name);
   r.sg_count = int(c.sgs.size());
   for (const auto& o : scene.objects)

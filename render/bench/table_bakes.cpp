@@ -1,11 +1,13 @@
 #include "bench/table_bakes.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
 #include "bench/number_text.h"
 #include "bench/stopwatch.h"
 #include "gpu/scene_renderer.h"
+#include "runtime/visibility_mask.h"
 
 namespace weft::bench {
 
@@ -14,6 +16,10 @@ IwasakiBakeOptions TableBakes::paper_options() const {
   o.quiet = true;
   o.grid = options_.bake_grid;
   if (options_.quick) o.visibility.resolution = 16;
+  // Masks only when a method reads them (an empty list runs every method).
+  const auto& m = options_.methods;
+  if (m.empty() || std::any_of(m.begin(), m.end(), [](const std::string& n) { return gpu::reads_visibility_masks(n); }))
+    o.mask_resolution = kMaskResolution;
   return o;
 }
 

@@ -17,6 +17,12 @@ size_t visibility_bytes(const IwasakiBundleData& d) {
   return b;
 }
 
+size_t mask_bytes(const IwasakiBundleData& d) {
+  size_t b = 0;
+  for (const auto& [i, m] : d.masks) b += sizeof(m.words[0]) * m.words.size();
+  return b;
+}
+
 std::string tables_summary(const IwasakiBundleData& d) {
   std::string s;
   for (const auto& [name, t] : d.tables) {

@@ -10,6 +10,8 @@ namespace weft::bench {
 
 size_t table_bytes(const IwasakiBundleData& d);
 size_t visibility_bytes(const IwasakiBundleData& d);
+// The per-vertex visibility masks (only the mask methods read them).
+size_t mask_bytes(const IwasakiBundleData& d);
 // "linen_plain: 3+3 samples, 9 levels, rank 7.1 (mean), 0.42 MB" per fabric, joined by "; ".
 std::string tables_summary(const IwasakiBundleData& d);
 

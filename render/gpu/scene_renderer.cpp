@@ -29,6 +29,10 @@ bool reads_seed000_tables(const std::string& name) {
   const auto* m = methods::find_method(name);
   return m && reads_seed000_tables(*m);
 }
+bool reads_visibility_masks(const std::string& name) {
+  const auto* m = methods::find_method(name);
+  return m && m->visibility_masks;
+}
 
 SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness) {
   SgLighting out = sgs;

@@ -46,6 +46,8 @@ struct RuntimeMethod {
   // The cloth shows what lies behind it: drawn last, blended dst·α + src, over the SG environment.
   bool see_through = false;
   Seed000Tables seed000 = Seed000Tables::unused;
+  // Reads the bundle's per-vertex visibility masks (baked only on request: `weft bake --masks`).
+  bool visibility_masks = false;
   BenchReference reference = BenchReference::opaque;
   std::set<std::string> bench_scenes;  // the scenes the bench runs it on; empty: every scene
   int ladder_position = 0;             // its row on the bench's chart and report (ascending)

@@ -32,6 +32,9 @@ struct VisibilityMask {
   }
 };
 
+// The resolution the bake uses when masks are asked for (cells of ≈ 2.2°).
+inline constexpr int kMaskResolution = 64;
+
 // The direction at square point (s, t) ∈ [−1, 1]² in the vertex frame's (u, v, n) coordinates
 // (z ≥ 0); cell (x, y)'s centre is s = (2x + 1)/N − 1, t = (2y + 1)/N − 1.
 glm::dvec3 hemisphere_square_direction(double s, double t);

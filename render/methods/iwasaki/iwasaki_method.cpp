@@ -20,6 +20,7 @@ RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, bool open
     shaders.open_share_masks = open_share_masks;
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, shaders);
   };
+  m.visibility_masks = open_share_masks;
   return m;
 }
 }  // namespace
