@@ -106,16 +106,25 @@ static Scene shadow_scene() {
                      "shadow.json", kAssets / "scenes");
 }
 
+// The shadow scene at 41×31 under an overhead sun (λ 200, unit amplitude), and the floor's
+// radiance where that sun reaches it: albedo/π · the SG's clamped-cosine integral (closed form).
+ReferenceRenderOptions shadow_scene_options(bool occlusion) {
+  ReferenceRenderOptions opt;
+  opt.width = 41, opt.height = 31, opt.occlusion = occlusion;
+  return opt;
+}
+ReferenceLighting overhead_sun() {
+  ReferenceLighting lighting;
+  lighting.sgs = {SphericalGaussian{dvec3(0, 0, 1), 200.0, dvec3(1.0)}};
+  return lighting;
+}
+const double kSunlitFloor = 2.0 * 0.5 * (1.0 / 200.0 - -std::expm1(-200.0) / (200.0 * 200.0));
+
 TEST(ReferenceRender, OccluderCastsShadowOnLambertianFloor) {
   const Scene scene = shadow_scene();
-  const SphericalGaussian sun{dvec3(0, 0, 1), 200.0, dvec3(1.0)};
-  ReferenceLighting lighting;
-  lighting.sgs = {sun};
-  ReferenceRenderOptions opt;
-  opt.width = 41;
-  opt.height = 31;
-  const ReferenceRenderer renderer(scene, {}, lighting, opt);
-  const double lit = 2.0 * 0.5 * (1.0 / 200.0 - -std::expm1(-200.0) / (200.0 * 200.0));
+  const ReferenceRenderOptions opt = shadow_scene_options(true);
+  const ReferenceRenderer renderer(scene, {}, overhead_sun(), opt);
+  const double lit = kSunlitFloor;
   PixelKind kind;
   // The centre ray hits the floor at (0, 0.3, 0), straight under the blocker.
   const dvec3 shadowed = renderer.pixel(20, 15, 0, &kind);
@@ -136,20 +145,15 @@ TEST(ReferenceRender, OccluderCastsShadowOnLambertianFloor) {
 
 TEST(ReferenceRender, WithoutOcclusionOnlyTheHorizonCutsTheLight) {
   const Scene scene = shadow_scene();
-  const SphericalGaussian sun{dvec3(0, 0, 1), 200.0, dvec3(1.0)};
-  ReferenceLighting lighting;
-  lighting.sgs = {sun};
-  ReferenceRenderOptions opt;
-  opt.width = 41;
-  opt.height = 31;
-  opt.occlusion = false;
-  const ReferenceRenderer renderer(scene, {}, lighting, opt);
-  const double lit = 2.0 * 0.5 * (1.0 / 200.0 - -std::expm1(-200.0) / (200.0 * 200.0));
+  const ReferenceRenderOptions opt = shadow_scene_options(false);
+  const ReferenceRenderer renderer(scene, {}, overhead_sun(), opt);
+  const double lit = kSunlitFloor;
   // Straight under the blocker the floor is lit as if it were not there.
   EXPECT_NEAR(renderer.pixel(20, 15, 0).r, lit, 2e-3 * lit);
   // A sun below the floor still leaves it dark: the surface's own horizon stays.
-  lighting.sgs = {{dvec3(0, 0, -1), 200.0, dvec3(1.0)}};
-  const ReferenceRenderer below(scene, {}, lighting, opt);
+  ReferenceLighting below_floor;
+  below_floor.sgs = {{dvec3(0, 0, -1), 200.0, dvec3(1.0)}};
+  const ReferenceRenderer below(scene, {}, below_floor, opt);
   EXPECT_LT(below.pixel(20, 15, 0).r, 1e-6 * lit);
 }
 
