@@ -96,23 +96,28 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   return sum;
 }
 
-PixelKind ReferenceRenderer::kind(int x, int y) const {
-  const dvec3 dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
-  const auto hit = rays_.intersect(scene_.camera.position, dir);
+std::optional<RayHit> ReferenceRenderer::primary_hit(int x, int y, dvec3& dir) const {
+  dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
+  return rays_.intersect(scene_.camera.position, dir);
+}
+
+PixelKind ReferenceRenderer::kind_of(const std::optional<RayHit>& hit) const {
   if (!hit) return PixelKind::background;
   return scene_.objects[hit->object].material == Material::cloth ? PixelKind::cloth : PixelKind::lambertian;
 }
 
+PixelKind ReferenceRenderer::kind(int x, int y) const {
+  dvec3 dir;
+  return kind_of(primary_hit(x, y, dir));
+}
+
 dvec3 ReferenceRenderer::pixel(int x, int y, int level, PixelKind* kind) const {
-  const dvec3 dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
-  const auto hit = rays_.intersect(scene_.camera.position, dir);
-  if (!hit) {
-    if (kind) *kind = PixelKind::background;
-    return lighting_.background ? lighting_.background(dir) : dvec3(0.0);
-  }
-  const bool cloth = scene_.objects[hit->object].material == Material::cloth;
-  if (kind) *kind = cloth ? PixelKind::cloth : PixelKind::lambertian;
-  if (cloth && options_.thin_cloth) return shade_thin(*hit, dir, level, 0);
+  dvec3 dir;
+  const auto hit = primary_hit(x, y, dir);
+  const PixelKind k = kind_of(hit);
+  if (kind) *kind = k;
+  if (!hit) return lighting_.background ? lighting_.background(dir) : dvec3(0.0);
+  if (k == PixelKind::cloth && options_.thin_cloth) return shade_thin(*hit, dir, level, 0);
   return shade(*hit, -dir, level);
 }
 
@@ -184,21 +189,27 @@ double relative_change(std::span<const dvec3> coarse, std::span<const dvec3> fin
   return std::sqrt(se / fine.size()) / (sum / fine.size());
 }
 
+std::vector<std::pair<int, int>> ReferenceRenderer::check_pixels() const {
+  const int stride = std::max(1, options_.check_stride);
+  std::vector<std::pair<int, int>> lattice;
+  for (int y = stride / 2; y < options_.height; y += stride)
+    for (int x = stride / 2; x < options_.width; x += stride) lattice.emplace_back(x, y);
+  return lattice;
+}
+
 ConvergenceReport ReferenceRenderer::convergence(const ReferenceRenderResult& result, int level) const {
   const auto start = std::chrono::steady_clock::now();
   if (level + 1 >= kLevels) throw std::invalid_argument("reference: convergence level out of range");
   if (lighting_.sgs.empty()) samples_at(level + 1);
-  const int stride = std::max(1, options_.check_stride);
   struct Pair {
     int x, y;
     bool cloth;
   };
   std::vector<Pair> pixels;
-  for (int y = stride / 2; y < options_.height; y += stride)
-    for (int x = stride / 2; x < options_.width; x += stride) {
-      const PixelKind k = result.kinds[static_cast<size_t>(y) * options_.width + x];
-      if (k != PixelKind::background) pixels.push_back({x, y, k == PixelKind::cloth});
-    }
+  for (const auto& [x, y] : check_pixels()) {
+    const PixelKind k = result.kinds[static_cast<size_t>(y) * options_.width + x];
+    if (k != PixelKind::background) pixels.push_back({x, y, k == PixelKind::cloth});
+  }
   std::vector<dvec3> fine(pixels.size());
 #pragma omp parallel for schedule(dynamic, 16)
   for (size_t i = 0; i < pixels.size(); ++i) fine[i] = pixel(pixels[i].x, pixels[i].y, level + 1);

@@ -10,9 +10,11 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/cloth_bsdf.h"
@@ -95,6 +97,8 @@ public:
   // What pixel (x, y) sees, without shading it.
   PixelKind kind(int x, int y) const;
   ReferenceRenderResult render(int level = 0) const;
+  // The check subset's lattice: every check_stride-th pixel in x and y (all kinds).
+  std::vector<std::pair<int, int>> check_pixels() const;
   // Re-renders the check subset at level+1 and compares it with `result` (rendered at level).
   ConvergenceReport convergence(const ReferenceRenderResult& result, int level) const;
 
@@ -113,6 +117,9 @@ private:
   ReferenceRenderOptions options_;
   mutable std::map<int, std::vector<DirectionalSample>> samples_;  // filled before parallel use
   const std::vector<DirectionalSample>& samples_at(int level) const;
+  // The primary ray through pixel (x, y)'s centre (`dir`) and what it hits; its kind.
+  std::optional<RayHit> primary_hit(int x, int y, glm::dvec3& dir) const;
+  PixelKind kind_of(const std::optional<RayHit>& hit) const;
 };
 
 }  // namespace weft

@@ -38,11 +38,8 @@ TangentConvergence converge_tangent_samples(const Scene& scene, const std::map<s
   std::vector<std::pair<int, int>> pixels;
   {
     const ReferenceRenderer probe(scene, fabrics, lighting, options);
-    const int stride = std::max(1, options.check_stride);
-    for (int y = stride / 2; y < options.height; y += stride)
-      for (int x = stride / 2; x < options.width; x += stride) {
-        if (probe.kind(x, y) == PixelKind::cloth) pixels.emplace_back(x, y);
-      }
+    for (const auto& xy : probe.check_pixels())
+      if (probe.kind(xy.first, xy.second) == PixelKind::cloth) pixels.push_back(xy);
   }
   res.cloth_pixels = pixels.size();
   if (pixels.empty()) {
