@@ -9,15 +9,24 @@
 
 namespace weft {
 
+namespace {
+// Zeroed values for `vertices` × the SGs, once `mesh` is known to have that many vertices, each with
+// a normal and a warp (`what` names the baked data in the error).
+SgVisibility sized_for(const char* what, size_t vertices, const TriangleMesh& mesh, const SgLighting& sgs) {
+  if (mesh.positions.size() != vertices || mesh.normals.size() != vertices || mesh.warps.size() != vertices)
+    throw std::invalid_argument(std::string(what) + " of " + std::to_string(vertices) + " vertices for a mesh of " +
+                                std::to_string(mesh.positions.size()));
+  SgVisibility out;
+  out.vertices = vertices;
+  out.sgs = int(sgs.size());
+  out.values.assign(vertices * sgs.size() * 3, 0.0f);
+  return out;
+}
+}  // namespace
+
 SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh& mesh, const SgLighting& sgs,
                                    bool above_horizon) {
-  SgVisibility out;
-  out.vertices = o.vertex_count();
-  out.sgs = int(sgs.size());
-  if (mesh.positions.size() != out.vertices || mesh.normals.size() != out.vertices || mesh.warps.size() != out.vertices)
-    throw std::invalid_argument("visibility of " + std::to_string(out.vertices) + " vertices for a mesh of " +
-                                std::to_string(mesh.positions.size()));
-  out.values.resize(out.vertices * sgs.size() * 3);
+  SgVisibility out = sized_for("visibility", o.vertex_count(), mesh, sgs);
   constexpr double kHalfPi = std::numbers::pi / 2;
   const int n = o.resolution, cells = n * n;
   const double h = std::numbers::pi / n;
@@ -88,13 +97,7 @@ SdfSample sdf_in_sample_frame(const SgVisibility& vis, int sg, const SurfaceFram
 }
 
 SgVisibility SgVisibility::from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs) {
-  SgVisibility out;
-  out.vertices = mask.vertex_count();
-  out.sgs = int(sgs.size());
-  if (mesh.positions.size() != out.vertices || mesh.normals.size() != out.vertices || mesh.warps.size() != out.vertices)
-    throw std::invalid_argument("visibility mask of " + std::to_string(out.vertices) + " vertices for a mesh of " +
-                                std::to_string(mesh.positions.size()));
-  out.values.assign(out.vertices * sgs.size() * 3, 0.0f);
+  SgVisibility out = sized_for("visibility mask", mask.vertex_count(), mesh, sgs);
   const MaskDirections directions(mask.resolution);
 #pragma omp parallel for schedule(static)
   for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
