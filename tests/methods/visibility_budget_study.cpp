@@ -42,6 +42,7 @@
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "reference/ray_scene.h"
 #include "reference/scene_render.h"
+#include "reference/sg_quadrature.h"
 #include "scene/scene.h"
 #include "support/ray_pixels.h"
 
@@ -82,6 +83,21 @@ double lobe_visibility(const RayScene& rays, const dvec3& p, const dvec3& n, con
   return above ? double(open) / above : 1.0;
 }
 
+// The share of G's part above the plane of `shade` that also lies above the plane of `geo`
+// (the facet: the reference blocks directions below the geometric surface).
+double facet_share(const SphericalGaussian& g, const dvec3& shade, const dvec3& geo) {
+  constexpr int kStrata = 24;
+  int above = 0, both = 0;
+  for (int i = 0; i < kStrata; ++i)
+    for (int j = 0; j < kStrata; ++j) {
+      const dvec3 w = sg_direction(g, (i + 0.5) / kStrata, (j + 0.5) / kStrata);
+      if (glm::dot(w, shade) <= 0.0) continue;
+      ++above;
+      both += glm::dot(w, geo) > 0.0;
+    }
+  return above ? double(both) / above : 1.0;
+}
+
 // The seed 000 bundle of `scene` at the bench's settings, cached as a bundle file; `tables`: the
 // fabric's tables when another scene's bundle holds them (then only the visibility is baked).
 IwasakiBundleData bundle_for(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
@@ -112,12 +128,15 @@ IwasakiBundleData bundle_for(const Scene& scene, const std::map<std::string, Fab
   return data;
 }
 
-constexpr int kVariants = 9;  // per SG and pixel, in this order:
-enum Variant { ref_open, ref_occ, iw_open, iw_sdf, iw_exact, iwv_open, iwv_sdf, iwv_exact, iwv_mask };
+constexpr int kVariants = 15;  // per SG and pixel, in this order:
+enum Variant { ref_open, ref_occ, iw_open, iw_sdf, iw_exact, iwv_open, iwv_sdf, iwv_exact, iwv_mask, bq4_v, bq8_v, bq8_p, bq12_v, bq16_v, iw_geo };
+// Broad lobes by quadrature of the model (bq*): SGs sharper than this are not integrated.
+constexpr double kQuadratureUpTo = 16.0;
 
 struct Study {
   std::FILE* budget;
   std::FILE* per_sg;
+  std::FILE* quad;
   int width = env_int("WEFT_STUDY_WIDTH", 160), height = env_int("WEFT_STUDY_HEIGHT", 120);
   std::map<std::string, WeightingTables> tables_by_fabric;
 
@@ -213,6 +232,37 @@ struct Study {
                        1e3 * std::chrono::duration<double>(t2 - t1).count(), scene.objects[object].mesh.positions.size(), K);
         }
 
+    // Broad lobes by quadrature per vertex: the model on an M × 2M SG-warped grid (the reference's
+    // own rule, fixed level), shadow rays from the vertex, at the runtime's tangent samples.
+    std::map<size_t, std::vector<dvec3>> vertex_quad;  // [(vertex · K + k) · 4 + (M = 4, 8, 12, 16)]
+    const auto tq0 = std::chrono::steady_clock::now();
+    for (size_t object = 0; object < scene.objects.size(); ++object) {
+      if (scene.objects[object].material != Material::cloth) continue;
+      const TriangleMesh& mesh = scene.objects[object].mesh;
+      auto& q = vertex_quad[object];
+      q.assign(mesh.positions.size() * K * 4, dvec3(0));
+#pragma omp parallel for schedule(dynamic, 16)
+      for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        dvec3 n = glm::normalize(mesh.normals[v]);
+        const dvec3 to_eye = scene.camera.position - mesh.positions[v];
+        if (glm::dot(n, to_eye) < 0) n = -n;
+        const SurfaceFrame frame = SurfaceFrame::from_normal_warp(n, mesh.warps[v]);
+        const dvec3 origin = mesh.positions[v] + n * rays.ray_epsilon();
+        SgQuadratureOptions o;
+        o.parallel = false;
+        o.visible = [&](const dvec3& w) { return rays.unoccluded(origin, w); };
+        for (int k = 0; k < K; ++k) {
+          if (sgs[k].sharpness >= kQuadratureUpTo) continue;
+          for (int g = 0; g < 4; ++g) {
+            o.fixed_polar = 4 * (g + 1);
+            q[(v * K + k) * 4 + g] = integrate_sg_lighting(bsdf, frame, glm::normalize(to_eye), std::span(&sgs[k], 1), o).radiance;
+          }
+        }
+      }
+    }
+    std::fprintf(stderr, "%s %s: broad quadrature per vertex %.1f s\n", scene_name.c_str(), env.c_str(),
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - tq0).count());
+
     const size_t pixels = size_t(width) * height;
     std::vector<dvec3> values(pixels * K * kVariants, dvec3(0));
     std::vector<bool> cloth(pixels, false);
@@ -237,6 +287,12 @@ struct Study {
           const double v = pixel_vk[i * K + k] = lobe_visibility(rays, s.position, s.geometric_normal, sgs[k]);
           for (int mode = 0; mode < 3; ++mode) {
             out[iw_open + mode] = iwasaki_at(hit->object, tri, bary, {tri[0], tri[1], tri[2]}, bary, mode, k, v);
+            if (mode == 1) {
+              const test::MeshPoint m = test::mesh_point(scene.objects[hit->object].mesh, tri, bary);
+              dvec3 n = glm::normalize(m.normal);
+              if (glm::dot(n, -dir) < 0) n = -n;
+              out[iw_geo] = out[iw_sdf] * facet_share(sgs[k], n, s.geometric_normal);
+            }
             dvec3 sum(0);
             for (int c = 0; c < 3; ++c) {
               dvec3 one(0);
@@ -255,6 +311,24 @@ struct Study {
                                         mk == mask_vk.end() ? 1.0 : mk->second.at(tri[c], k).x);
           }
           out[iwv_mask] = sum;
+          if (sgs[k].sharpness < kQuadratureUpTo) {
+            const auto& q = vertex_quad.at(hit->object);
+            for (int c = 0; c < 3; ++c) {
+              out[bq4_v] += bary[c] * q[(tri[c] * K + k) * 4 + 0];
+              out[bq8_v] += bary[c] * q[(tri[c] * K + k) * 4 + 1];
+              out[bq12_v] += bary[c] * q[(tri[c] * K + k) * 4 + 2];
+              out[bq16_v] += bary[c] * q[(tri[c] * K + k) * 4 + 3];
+            }
+            const test::MeshPoint m = test::mesh_point(scene.objects[hit->object].mesh, tri, bary);
+            dvec3 n = glm::normalize(m.normal);
+            if (glm::dot(n, -dir) < 0) n = -n;
+            const dvec3 origin = s.position + s.geometric_normal * rays.ray_epsilon();
+            SgQuadratureOptions o;
+            o.parallel = false;
+            o.fixed_polar = 8;
+            o.visible = [&](const dvec3& w) { return glm::dot(w, s.geometric_normal) > 0 && rays.unoccluded(origin, w); };
+            out[bq8_p] = integrate_sg_lighting(bsdf, SurfaceFrame::from_normal_warp(n, m.warp), -dir, std::span(&sgs[k], 1), o).radiance;
+          }
         }
       }
 
@@ -277,6 +351,29 @@ struct Study {
     }
     std::fprintf(budget, "\n");
     std::fflush(budget);
+
+    // Narrow SGs from one variant, broad ones (λ < λ_b) from a quadrature variant.
+    auto split = [&](int narrow, int broad, double lambda_b) {
+      Image im(width, height);
+      for (size_t i = 0; i < pixels; ++i)
+        for (int j = 0; j < K; ++j)
+          im.pixels[i] += values[(i * K + j) * kVariants + (sgs[j].sharpness < lambda_b ? broad : narrow)];
+      return bench::masked_error(im, r_occ, cloth);
+    };
+    const std::pair<const char*, std::pair<int, int>> combos[] = {
+        {"pixel_sdf+vertex_quad4", {iw_sdf, bq4_v}},     {"pixel_sdf+vertex_quad8", {iw_sdf, bq8_v}},
+        {"pixel_sdf+pixel_quad8", {iw_sdf, bq8_p}},
+        {"pixel_sdf_facet+vertex_quad8", {iw_geo, bq8_v}},
+        {"pixel_sdf+vertex_quad12", {iw_sdf, bq12_v}},   {"pixel_sdf+vertex_quad16", {iw_sdf, bq16_v}},      {"pixel_exact+vertex_quad8", {iw_exact, bq8_v}},
+        {"vertex_sdf+vertex_quad4", {iwv_sdf, bq4_v}},   {"vertex_sdf+vertex_quad8", {iwv_sdf, bq8_v}},
+        {"vertex_mask+vertex_quad8", {iwv_mask, bq8_v}}, {"vertex_exact+vertex_quad8", {iwv_exact, bq8_v}}};
+    for (double lambda_b : {2.0, 4.0, 8.0, 16.0})
+      for (const auto& [name, c] : combos) {
+        const auto e = split(c.first, c.second, lambda_b);
+        std::fprintf(quad, "%s,%s,%s,%s,%g,%.4f,%.4f\n", scene_name.c_str(), fabric_name.c_str(), env.c_str(), name,
+                     lambda_b, e.relative_rmse, e.brightness_ratio);
+      }
+    std::fflush(quad);
 
     // Per SG: its share of the reference and its own error, relative to the whole image's mean.
     double mean_occ = 0, mean_open = 0;
@@ -324,7 +421,9 @@ TEST(Study, VisibilityBudget) {
   Study s;
   s.budget = std::fopen((out / "budget.csv").string().c_str(), "w");
   s.per_sg = std::fopen((out / "per_sg.csv").string().c_str(), "w");
-  ASSERT_TRUE(s.budget && s.per_sg);
+  s.quad = std::fopen((out / "quad.csv").string().c_str(), "w");
+  ASSERT_TRUE(s.budget && s.per_sg && s.quad);
+  std::fprintf(s.quad, "scene,fabric,env,variant,broad_below_lambda,relative_rmse,brightness_ratio\n");
   std::fprintf(s.budget,
                "scene,fabric,env,width,height,cloth_pixels,occlusion_effect,open_over_occluded,"
                "open_err,open_ratio,sdf_err,sdf_ratio,exact_err,exact_ratio,"
@@ -335,9 +434,26 @@ TEST(Study, VisibilityBudget) {
                "sdf_rmse,sdf_bias,exact_rmse,exact_bias,vertex_sdf_rmse,vertex_sdf_bias,vertex_exact_rmse,vertex_exact_bias,"
                "vertex_mask_rmse,vertex_mask_bias\n");
   const char* only = std::getenv("WEFT_STUDY_CASES");  // e.g. "pillow" to run one scene
-  for (const std::string scene : {"pillow", "drape"})
-    for (const std::string env : {"sky:elev=5", "sky:elev=20"})
-      if (!only || std::string(only).find(scene) != std::string::npos) s.run(scene, "linen_plain", env);
+  // $WEFT_STUDY_RUNS: "scene/fabric/env;..." in place of the four linen cases.
+  std::vector<std::array<std::string, 3>> runs;
+  if (const char* r = std::getenv("WEFT_STUDY_RUNS")) {
+    std::string list = r;
+    for (size_t a = 0; a < list.size();) {
+      size_t b = list.find(';', a);
+      if (b == std::string::npos) b = list.size();
+      const std::string item = list.substr(a, b - a);
+      const size_t s1 = item.find('/'), s2 = item.find('/', s1 + 1);
+      if (s1 != std::string::npos && s2 != std::string::npos)
+        runs.push_back({item.substr(0, s1), item.substr(s1 + 1, s2 - s1 - 1), item.substr(s2 + 1)});
+      a = b + 1;
+    }
+  } else {
+    for (const std::string scene : {"pillow", "drape"})
+      for (const std::string env : {"sky:elev=5", "sky:elev=20"})
+        if (!only || std::string(only).find(scene) != std::string::npos) runs.push_back({scene, "linen_plain", env});
+  }
+  for (const auto& [scene, fabric, env] : runs) s.run(scene, fabric, env);
+  std::fclose(s.quad);
   std::fclose(s.budget);
   std::fclose(s.per_sg);
 }
