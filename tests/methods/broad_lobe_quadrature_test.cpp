@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "bake/weighting_bake.h"
 #include "core/cloth_bsdf.h"
@@ -20,9 +21,12 @@ using test::at_elevation;
 
 namespace {
 
-// Measured worst 3.7 % (λ = 3.9, below: FourByEightCellsConvergeToTheFineGrid's output).
-constexpr double kQuadratureBound = 0.05;
-// Measured 0.4–0.5 %: the quadrature's part is within kQuadratureBound of the fine grid and
+// GridConvergesToTheFineGrid's measured worst at M = 8: linen 1.25 % (M = 4: 3.7 %); satin 21 %
+// at λ = 0.5, 7–10 % at λ ≥ 1 (M = 4: 31–42 %): satin's float lobe is a sharp feature inside a
+// broad SG at the grazing view. On the images M = 8 is enough (IWASAKI.md: drape/satin/sky:elev=5).
+constexpr double kLinenQuadratureBound = 0.02;
+constexpr double kSatinQuadratureBound = 0.25;
+// Measured 0.6–0.8 %: the quadrature's part is within kQuadratureBound of the fine grid and
 // iwasaki's at λ = 4 within ~10 % (IWASAKI.md); a lobe dropped or counted twice is off by 40–60 %.
 constexpr double kSplitBound = 0.05;
 
@@ -55,39 +59,47 @@ TriangleMesh one_vertex() {
 
 }  // namespace
 
-// M = 4 against M = 32 (the same quadrature, 64× the cells) for broad SGs overhead, low and
-// partly below the horizon, at four views. The cloth's integrand is smooth over a broad lobe
-// (W and f_s vary over tens of degrees), so 32 cells already hold it to a few percent; the
-// measured worst is asserted with a margin.
-TEST(BroadLobeQuadrature, FourByEightCellsConvergeToTheFineGrid) {
-  const ClothBsdf bsdf(linen(), std::array<int, 2>{3, 3});
+// M = kBroadLobeGrid against M = 32 (the same quadrature, 16× the cells) for broad SGs overhead,
+// low and partly below the horizon, at four views, on linen and on satin, whose narrow float lobe
+// is the feature a coarse grid misses (M = 4, printed for comparison, is off by up to ~25 % on
+// satin). The measured worst is asserted with a margin.
+TEST(BroadLobeQuadrature, GridConvergesToTheFineGrid) {
   const SurfaceFrame frame;
-  double worst = 0.0;
-  for (double lambda : {0.5, 1.0, 2.0, 3.9}) {
-    double worst_here = 0.0;
-    for (double elevation : {70.0, 20.0, -10.0})
-      for (const dvec3& view : {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93), dvec3(-0.6, 0.3, 0.74), dvec3(0.2, -0.9, 0.3)}) {
-        const SgLighting sgs = {{at_elevation(40, elevation), lambda, dvec3(1.0, 0.8, 0.6)}};
-        const dvec3 wo = glm::normalize(view);
-        SgQuadratureOptions fine;
-        fine.fixed_polar = 32;
-        fine.parallel = false;
-        const dvec3 ref = integrate_sg_lighting(bsdf, frame, wo, sgs, fine).radiance;
-        const dvec3 got = broad_lobe_radiance(bsdf, frame, wo, sgs, broad_lobe_slots(sgs), {});
-        worst_here = std::max(worst_here, relative(got, ref));
-      }
-    std::printf("λ = %.1f: worst relative difference %.2f %%\n", lambda, 100 * worst_here);
-    worst = std::max(worst, worst_here);
+  for (const char* fabric : {"linen_plain", "polyester_satin_charmeuse"}) {
+    double worst = 0.0, worst_m4_all = 0.0;
+    const ClothBsdf bsdf(load_fabric_preset(fabric, WEFT_SOURCE_ASSETS "/fabrics"), std::array<int, 2>{3, 3});
+    for (double lambda : {0.5, 1.0, 2.0, 3.9}) {
+      double worst_here = 0.0, worst_m4 = 0.0;
+      for (double elevation : {70.0, 20.0, -10.0})
+        for (const dvec3& view : {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93), dvec3(-0.6, 0.3, 0.74), dvec3(0.2, -0.9, 0.3)}) {
+          const SgLighting sgs = {{at_elevation(40, elevation), lambda, dvec3(1.0, 0.8, 0.6)}};
+          const dvec3 wo = glm::normalize(view);
+          SgQuadratureOptions fine, m4;
+          fine.fixed_polar = 32, m4.fixed_polar = 4;
+          fine.parallel = m4.parallel = false;
+          const dvec3 ref = integrate_sg_lighting(bsdf, frame, wo, sgs, fine).radiance;
+          const dvec3 got = broad_lobe_radiance(bsdf, frame, wo, sgs, broad_lobe_slots(sgs), {});
+          worst_here = std::max(worst_here, relative(got, ref));
+          worst_m4 = std::max(worst_m4, relative(integrate_sg_lighting(bsdf, frame, wo, sgs, m4).radiance, ref));
+        }
+      std::printf("%s λ = %.1f: M = %d worst relative difference %.2f %% (M = 4: %.2f %%)\n", fabric, lambda,
+                  kBroadLobeGrid, 100 * worst_here, 100 * worst_m4);
+      worst = std::max(worst, worst_here);
+      worst_m4_all = std::max(worst_m4_all, worst_m4);
+    }
+    std::printf("%s: M = %d against M = 32: worst relative difference %.2f %%\n", fabric, kBroadLobeGrid, 100 * worst);
+    EXPECT_GT(worst, 0.0);
+    EXPECT_LT(worst, std::string(fabric) == "linen_plain" ? kLinenQuadratureBound : kSatinQuadratureBound) << fabric;
+    EXPECT_LT(worst, 0.6 * worst_m4_all) << fabric << ": the grid does not converge";
   }
-  std::printf("M = %d against M = 32: worst relative difference %.2f %%\n", kBroadLobeGrid, 100 * worst);
-  EXPECT_GT(worst, 0.0);
-  EXPECT_LT(worst, kQuadratureBound);
 }
 
 // The mask's bits: all blocked gives no broad light, all open exactly the unoccluded quadrature
-// (the reference's on the same grid), one quadrant of the vertex frame (u > 0, v > 0) the
-// reference's quadrature with that visibility, which also pins the mask's frame (u, v, n) to
-// the vertex's normal and warp as the bake builds it.
+// (the reference's on the same grid), a mask open on one quadrant of the vertex frame (u > 0,
+// v > 0) the reference's quadrature with that mask's visibility (a direction is visible where its
+// cell is open, hemisphere_cell_of; a few of the grid's directions lie in cells straddling the
+// quadrant's edges), which also pins the mask's frame (u, v, n) to the vertex's normal and warp
+// as the bake builds it.
 TEST(BroadLobeQuadrature, MaskBitsGateTheCells) {
   const ClothBsdf bsdf(linen(), std::array<int, 2>{3, 3});
   const TriangleMesh mesh = one_vertex();
@@ -113,7 +125,10 @@ TEST(BroadLobeQuadrature, MaskBitsGateTheCells) {
   const VisibilityMask part = one_vertex_mask(quadrant);
   const dvec3 some = broad_lobe_radiance(bsdf, frame, wo, sgs, slots, BroadLobeBits::compute(part, mesh, sgs).vertex(0));
   SgQuadratureOptions shadowed = same_grid;
-  shadowed.visible = [&](const dvec3& w) { return quadrant(dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n))); };
+  shadowed.visible = [&](const dvec3& w) {
+    const int cell = hemisphere_cell_of(part.resolution, dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n)));
+    return part.open(0, cell % part.resolution, cell / part.resolution);
+  };
   const dvec3 expected = integrate_sg_lighting(bsdf, frame, wo, sgs, shadowed).radiance;
   std::printf("quadrant open: %.6f of the unoccluded %.6f (green); reference %.6f\n", some.g, all.g, expected.g);
   EXPECT_GT(expected.g, 0.1 * all.g);

@@ -73,8 +73,10 @@ dvec3 broad_lobe_radiance(const ClothBsdf& bsdf, const SurfaceFrame& frame, cons
     for (int i = 0, c = 0; i < grid.polar(); ++i) {
       const double cos_t = grid.polar_cosine(i);
       for (int j = 0; j < grid.azimuthal(); ++j, ++c) {
+        const dvec3 wi = grid.direction(cos_t, j);
+        if (glm::dot(wi, frame.n) <= 0.0) continue;  // below the surface: the model is zero there
         if (!bits.empty() && !((bits[slots[k] * kBroadLobeWordsPerSg + c / 32] >> (c % 32)) & 1u)) continue;
-        sum += point.integrand(grid.direction(cos_t, j), wo);
+        sum += point.integrand(wi, wo);
       }
     }
     out += sgs[k].amplitude * sum * grid.cell_weight();

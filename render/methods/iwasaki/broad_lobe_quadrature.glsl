@@ -32,10 +32,12 @@ vec3 broad_lobe_radiance(int vertex, vec3 position, vec3 normal, vec3 warp) {
     for (int i = 0; i < u_broad_grid; ++i) {
       float cos_t = sg_grid_polar_cosine(lambda, u_broad_grid, i);
       for (int j = 0; j < cells_per_row; ++j) {
+        vec3 wi = sg_grid_direction(axis, cos_t, u_broad_grid, j);
+        if (dot(wi, n) <= 0.0) continue;  // below the surface: the model is zero there
         int c = i * cells_per_row + j;
         uint word = broad_word(vertex, slot * u_broad_words_per_sg + c / 32);
         if (((word >> uint(c - (c / 32) * 32)) & 1u) == 0u) continue;
-        lobe += cloth_integrand(n, u, sg_grid_direction(axis, cos_t, u_broad_grid, j), wo);
+        lobe += cloth_integrand(n, u, wi, wo);
       }
     }
     sum += u_sg_amplitude[k] * lobe * sg_grid_cell_weight(lambda, u_broad_grid);

@@ -22,7 +22,7 @@
 namespace weft {
 
 inline constexpr double kBroadLobeSharpness = 4.0;  // λ_b: an SG with λ < λ_b is broad
-inline constexpr int kBroadLobeGrid = 4;            // M: M × 2M cells per broad SG
+inline constexpr int kBroadLobeGrid = 8;            // M: M × 2M cells per broad SG
 // Broad SGs beyond this many (the sharpest of them) stay with iwasaki; a 10-SG sky fit holds 2–5.
 inline constexpr int kMaxBroadLobes = 4;
 inline constexpr int kBroadLobeCells = 2 * kBroadLobeGrid * kBroadLobeGrid;
