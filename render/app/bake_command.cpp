@@ -134,7 +134,7 @@ CommandAction add_bake_command(CLI::App& app) {
   auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
-  sub->add_flag("--masks", a->masks, "Per-vertex visibility masks for iwasaki_mask / iwasaki_vertex_mask (512 B per occluded cloth vertex)")->excludes(no_tables)->excludes(target);
+  sub->add_flag("--masks", a->masks, "Per-vertex visibility masks for iwasaki_mask / iwasaki_vertex_mask / iwasaki_quadrature / iwasaki_vertex_quadrature (512 B per occluded cloth vertex)")->excludes(no_tables)->excludes(target);
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();

@@ -45,7 +45,7 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--sim-speed", a->sim_speed, "Play the sim: script this many times faster")->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Write the last frame, tone-mapped, as PNG");
   sub->add_option("--size", a->size, "Headless frame size WIDTH HEIGHT")->expected(2)->capture_default_str();
-  sub->add_option("--method", a->method, "Runtime method: auto (iwasaki_vertex when the bundle has seed 000 tables, sheer_vertex if a cloth object is a sheer, else sgpoint), iwasaki (per pixel), iwasaki_vertex (per vertex: same tables, a fraction of the cost), iwasaki_mask or iwasaki_vertex_mask (visibility from the masks of `weft bake --masks`), sheer, sheer_vertex (a sheer over what lies behind) or sgpoint")->capture_default_str();
+  sub->add_option("--method", a->method, "Runtime method: auto (iwasaki_vertex when the bundle has seed 000 tables, sheer_vertex if a cloth object is a sheer, else sgpoint), iwasaki (per pixel), iwasaki_vertex (per vertex: same tables, a fraction of the cost), iwasaki_mask or iwasaki_vertex_mask (visibility from the masks of `weft bake --masks`), iwasaki_quadrature or iwasaki_vertex_quadrature (the broad sky lobes by quadrature per vertex, visibility from the masks), sheer, sheer_vertex (a sheer over what lies behind) or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
   sub->add_option("--exposure-bias", a->exposure_bias, "EV added to the exposure metered on the cloth (+1: twice as bright)")

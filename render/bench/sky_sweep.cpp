@@ -30,7 +30,8 @@ void apply_sweep(BenchOptions& a) {
   const BenchOptions defaults;
   a.quick = false;
   if (a.envs == defaults.envs) a.envs = sky_sweep_envs(smoke);
-  a.methods = {"iwasaki", "iwasaki_vertex", "iwasaki_vertex_mask", "iwasaki_mask"};
+  a.methods = {"iwasaki", "iwasaki_vertex", "iwasaki_vertex_mask", "iwasaki_mask", "iwasaki_vertex_quadrature",
+               "iwasaki_quadrature"};
   a.no_stability = true;
   a.target_error = 0.0;
   a.speed_width = 64, a.speed_height = 48, a.speed_frames = 1;  // the sweep is about accuracy
@@ -97,7 +98,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
 
   struct Case {
     std::string scene, fabric, env;
-    double iwasaki = -1.0, vertex = -1.0, mask = -1.0, pixel_mask = -1.0;
+    double iwasaki = -1.0, vertex = -1.0, mask = -1.0, pixel_mask = -1.0, vertex_quadrature = -1.0, quadrature = -1.0;
     int reference_samples = 0;
   };
   std::vector<Case> cases;
@@ -106,7 +107,9 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
                            : r.method == "iwasaki_vertex"      ? &Case::vertex
                            : r.method == "iwasaki_vertex_mask" ? &Case::mask
                            : r.method == "iwasaki_mask"        ? &Case::pixel_mask
-                                                               : nullptr;
+                           : r.method == "iwasaki_vertex_quadrature" ? &Case::vertex_quadrature
+                           : r.method == "iwasaki_quadrature"        ? &Case::quadrature
+                                                                     : nullptr;
     if (!column) continue;
     auto it = std::find_if(cases.begin(), cases.end(),
                            [&](const Case& c) { return c.scene == r.scene && c.fabric == r.fabric && c.env == r.env; });
@@ -117,22 +120,25 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
 
   std::ofstream csv(out / "low_sun.csv");
   csv << "scene,fabric,env,iwasaki_rmse,iwasaki_vertex_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,"
-         "reference_tangent_samples,iwasaki_vertex_mask_rmse,iwasaki_mask_rmse\n";
+         "reference_tangent_samples,iwasaki_vertex_mask_rmse,iwasaki_mask_rmse,iwasaki_vertex_quadrature_rmse,"
+         "iwasaki_quadrature_rmse\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
     csv << c.scene << "," << c.fabric << "," << quoted(c.env) << "," << fmt(c.iwasaki, 4) << "," << fmt(c.vertex, 4)
         << "," << fmt(f.irradiance_error, 4) << "," << fmt(f.probe_irradiance_error, 4) << ","
         << fmt(f.probe_update_ms, 4) << "," << c.reference_samples << "," << fmt(c.mask, 4) << "," << fmt(c.pixel_mask, 4)
-        << "\n";
+        << "," << fmt(c.vertex_quadrature, 4) << "," << fmt(c.quadrature, 4) << "\n";
   }
   if (!csv) throw std::runtime_error("cannot write " + (out / "low_sun.csv").string());
 
-  std::vector<double> iw, vx, mk, pm;
+  std::vector<double> iw, vx, mk, pm, vq, pq;
   for (const auto& c : cases) {
     if (c.iwasaki >= 0) iw.push_back(c.iwasaki);
     if (c.vertex >= 0) vx.push_back(c.vertex);
     if (c.mask >= 0) mk.push_back(c.mask);
     if (c.pixel_mask >= 0) pm.push_back(c.pixel_mask);
+    if (c.vertex_quadrature >= 0) vq.push_back(c.vertex_quadrature);
+    if (c.quadrature >= 0) pq.push_back(c.quadrature);
   }
   double fit_worst = 0.0, probe_worst = 0.0, probe_ms_worst = 0.0;
   for (const auto& [env, f] : fits) {
@@ -151,16 +157,21 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
      << ", median " << fmt(median(vx)) << "; iwasaki_vertex_mask worst "
      << fmt(mk.empty() ? -1 : *std::max_element(mk.begin(), mk.end())) << ", median " << fmt(median(mk))
      << "; iwasaki_mask worst " << fmt(pm.empty() ? -1 : *std::max_element(pm.begin(), pm.end())) << ", median "
-     << fmt(median(pm))
+     << fmt(median(pm)) << "; iwasaki_vertex_quadrature worst "
+     << fmt(vq.empty() ? -1 : *std::max_element(vq.begin(), vq.end())) << ", median " << fmt(median(vq))
+     << "; iwasaki_quadrature worst " << fmt(pq.empty() ? -1 : *std::max_element(pq.begin(), pq.end())) << ", median "
+     << fmt(median(pq))
      << "; fit irradiance error worst " << fmt(fit_worst) << " (probe update "
      << fmt(probe_worst) << ", at most " << fmt(probe_ms_worst) << " ms of CPU time per update).\n\n"
-     << "| scene | fabric | env | iwasaki | iwasaki_vertex | iwasaki_vertex_mask | iwasaki_mask | fit irradiance error | "
-        "probe update: error / CPU ms | reference N_j |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n";
+     << "| scene | fabric | env | iwasaki | iwasaki_vertex | iwasaki_vertex_mask | iwasaki_mask | "
+        "iwasaki_vertex_quadrature | iwasaki_quadrature | fit irradiance error | probe update: error / CPU ms | "
+        "reference N_j |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
     md << "| " << c.scene << " | " << c.fabric << " | `" << c.env << "` | " << fmt(c.iwasaki) << " | " << fmt(c.vertex)
-       << " | " << fmt(c.mask) << " | " << fmt(c.pixel_mask) << " | " << fmt(f.irradiance_error) << " | " << fmt(f.probe_irradiance_error) << " / "
+       << " | " << fmt(c.mask) << " | " << fmt(c.pixel_mask) << " | " << fmt(c.vertex_quadrature) << " | "
+       << fmt(c.quadrature) << " | " << fmt(f.irradiance_error) << " | " << fmt(f.probe_irradiance_error) << " / "
        << fmt(f.probe_update_ms) << " | " << c.reference_samples << " |\n";
   }
   md << "\n## References\n\nN_j: tangent samples per thread; doublings: the check subset's cloth change from N to "

@@ -173,4 +173,23 @@ SphericalGaussian product(const SphericalGaussian& a, const SphericalGaussian& b
 
 glm::dvec3 inner_product(const SphericalGaussian& a, const SphericalGaussian& b) { return integral(product(a, b)); }
 
+SgWarpedGrid::SgWarpedGrid(const glm::dvec3& axis, double sharpness, int polar)
+    : z_(axis), lambda_(sharpness), mass_(-std::expm1(-2.0 * sharpness)), polar_(polar) {
+  x_ = glm::normalize(std::abs(z_.x) < 0.9 ? glm::cross(glm::dvec3(1, 0, 0), z_) : glm::cross(glm::dvec3(0, 1, 0), z_));
+  y_ = glm::cross(z_, x_);
+}
+
+double SgWarpedGrid::polar_cosine(int i) const {
+  const double u = (i + 0.5) / polar_;
+  return std::clamp(1.0 + std::log1p(-u * mass_) / lambda_, -1.0, 1.0);
+}
+
+glm::dvec3 SgWarpedGrid::direction(double cos_t, int j) const {
+  const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+  const double phi = 2.0 * kPi * (j + 0.5) / azimuthal();
+  return sin_t * std::cos(phi) * x_ + sin_t * std::sin(phi) * y_ + cos_t * z_;
+}
+
+double SgWarpedGrid::cell_weight() const { return (mass_ / lambda_) * (1.0 / polar_) * (2.0 * kPi / azimuthal()); }
+
 }  // namespace weft

@@ -96,6 +96,30 @@ inline constexpr double kHorizonSharpnessLogRange = 12.0;
 inline constexpr int kHorizonSharpnessSteps = 16;
 double horizon_sharpness_for_mean_cosine(double mean_cosine, double min_sharpness);
 
+// The SG-warped grid: an n × 2n midpoint grid in (u, φ) in the SG's own frame (axis ξ, x and y
+// from sg_grid_basis), u the SG's cumulative polar mass: cos θ = 1 + ln(1 − u(1 − e^{−2λ}))/λ makes
+// exp(λ(cos θ − 1)) dcos θ = (1 − e^{−2λ})/λ du, so every cell holds the same share of the SG,
+// (1 − e^{−2λ})/λ · 2π/(2n²) = ∫exp(λ(ω·ξ − 1))dω/(2n²), and a sum over cells weights only the
+// integrand. The reference's SG quadrature and the broad-lobe quadrature of the runtime
+// (methods/iwasaki/broad_lobe_quadrature.h; GLSL in shaders/sg_lighting.glsl) use it.
+class SgWarpedGrid {
+public:
+  SgWarpedGrid(const glm::dvec3& axis, double sharpness, int polar);
+  int polar() const { return polar_; }              // n: rows of equal polar mass
+  int azimuthal() const { return 2 * polar_; }      // 2n: columns of equal φ
+  double polar_cosine(int i) const;                 // cos θ of row i's centre
+  // Cell (i, j)'s centre, a unit vector (i < n, j < 2n); `cos_theta` = polar_cosine(i).
+  glm::dvec3 direction(int i, int j) const { return direction(polar_cosine(i), j); }
+  glm::dvec3 direction(double cos_theta, int j) const;
+  // ∫exp(λ(ω·ξ − 1))dω over one cell (unit amplitude).
+  double cell_weight() const;
+
+private:
+  glm::dvec3 x_, y_, z_;
+  double lambda_, mass_;
+  int polar_;
+};
+
 // The product of two SGs is an SG, exactly: λ_m ξ_m = λ_a ξ_a + λ_b ξ_b, λ_m = |λ_a ξ_a + λ_b ξ_b|,
 // μ_m = μ_a μ_b exp(λ_m − λ_a − λ_b) (amplitudes multiply per channel). Where the lobes cancel
 // (λ_m = 0) the product is the constant μ_m and the axis is a's.

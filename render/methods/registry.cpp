@@ -22,8 +22,10 @@ const std::vector<RuntimeMethod>& registry() {
       mizutani_method(),
       iwasaki_method(),
       iwasaki_mask_method(),
+      iwasaki_quadrature_method(),
       iwasaki_vertex_method(),
       iwasaki_vertex_mask_method(),
+      iwasaki_vertex_quadrature_method(),
       sheer_method(), sheer_vertex_method(),
   };
   return methods;

@@ -8,31 +8,23 @@ namespace weft {
 
 namespace {
 
-// ∫ G(ω) f(ω) dω over the hemisphere n·ω > 0 with an n × 2n midpoint grid in (u, φ), where u is
-// the SG's cumulative polar mass: cos θ = 1 + ln(1 − u(1 − e^{−2λ}))/λ makes
-// exp(λ(cos θ − 1)) dcos θ = (1 − e^{−2λ})/λ du.
+// ∫ G(ω) f(ω) dω over the hemisphere n·ω > 0 on the SG-warped n × 2n grid (SgWarpedGrid: every
+// cell holds the same share of G, so the sum weights only f).
 // `make_f()` returns the integrand f(ω_i) for one thread of execution (it may hold scratch).
 template <class MakeIntegrand>
 dvec3 integrate_one(const MakeIntegrand& make_f, const dvec3& normal, const SphericalGaussian& g, int n,
                     const SgQuadratureOptions& opt) {
-  const double lambda = g.sharpness;
-  const double mass = -std::expm1(-2.0 * lambda);  // 1 − e^{−2λ}
-  const dvec3 z = g.axis;
-  const dvec3 x = glm::normalize(std::abs(z.x) < 0.9 ? glm::cross(dvec3(1, 0, 0), z) : glm::cross(dvec3(0, 1, 0), z));
-  const dvec3 y = glm::cross(z, x);
-  const int n_phi = 2 * n;
+  const SgWarpedGrid grid(g.axis, g.sharpness, n);
+  const int n_phi = grid.azimuthal();
   double r = 0, gr = 0, b = 0;
 #pragma omp parallel reduction(+ : r, gr, b) if (opt.parallel)
   {
     auto f = make_f();
 #pragma omp for schedule(dynamic, 4)
     for (int i = 0; i < n; ++i) {
-      const double u = (i + 0.5) / n;
-      const double cos_t = std::clamp(1.0 + std::log1p(-u * mass) / lambda, -1.0, 1.0);
-      const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+      const double cos_t = grid.polar_cosine(i);
       for (int k = 0; k < n_phi; ++k) {
-        const double phi = 2.0 * std::numbers::pi * (k + 0.5) / n_phi;
-        const dvec3 wi = sin_t * std::cos(phi) * x + sin_t * std::sin(phi) * y + cos_t * z;
+        const dvec3 wi = grid.direction(cos_t, k);
         if (glm::dot(wi, normal) <= 0.0) continue;
         if (opt.visible && !opt.visible(wi)) continue;
         const dvec3 v = f(wi);
@@ -42,8 +34,7 @@ dvec3 integrate_one(const MakeIntegrand& make_f, const dvec3& normal, const Sphe
       }
     }
   }
-  const double cell = (mass / lambda) * (1.0 / n) * (2.0 * std::numbers::pi / n_phi);
-  return g.amplitude * dvec3(r, gr, b) * cell;
+  return g.amplitude * dvec3(r, gr, b) * grid.cell_weight();
 }
 
 template <class MakeIntegrand>

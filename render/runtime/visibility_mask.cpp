@@ -30,6 +30,17 @@ glm::dvec3 hemisphere_cell_direction(int resolution, int x, int y) {
   return hemisphere_square_direction((2.0 * x + 1.0) / resolution - 1.0, (2.0 * y + 1.0) / resolution - 1.0);
 }
 
+int hemisphere_cell_of(int resolution, const glm::dvec3& local) {
+  // hemisphere_square_direction backwards: r from z = 1 − r², the diamond's (|a|, |b|) from φ,
+  // the signs from x and y, then the square's (s, t) = (a − b, a + b).
+  const double r = std::sqrt(std::max(0.0, 1.0 - std::min(local.z, 1.0)));
+  const double phi = std::atan2(std::abs(local.y), std::abs(local.x));
+  const double b = std::copysign(r * phi * 2.0 / std::numbers::pi, local.y);
+  const double a = std::copysign(r - std::abs(b), local.x);
+  auto cell = [&](double q) { return std::clamp(int(std::floor(0.5 * (q + 1.0) * resolution)), 0, resolution - 1); };
+  return cell(a + b) * resolution + cell(a - b);
+}
+
 MaskDirections::MaskDirections(int resolution) : resolution_(resolution) {
   if (resolution < 8 || resolution % 8) throw std::invalid_argument("visibility mask: resolution must be a multiple of 8");
   const int per_row = resolution / 8;

@@ -39,6 +39,9 @@ inline constexpr int kMaskResolution = 64;
 // (z ≥ 0); cell (x, y)'s centre is s = (2x + 1)/N − 1, t = (2y + 1)/N − 1.
 glm::dvec3 hemisphere_square_direction(double s, double t);
 glm::dvec3 hemisphere_cell_direction(int resolution, int x, int y);
+// The cell (x, y) holding direction `local` (unit, z ≥ 0; the inverse of the map above), as
+// y·N + x.
+int hemisphere_cell_of(int resolution, const glm::dvec3& local);
 
 // The share of G's part above the vertex's surface that no geometry blocks: Σ bit·G / Σ G over
 // the cells (equal solid angle), G in the vertex frame (`axis_local`: its axis in (u, v, n)).

@@ -8,6 +8,9 @@ uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
 uniform float u_sg_sharpness[MAX_SGS];
 uniform vec3 u_sg_amplitude[MAX_SGS];
+// 0: the method shades SG k itself; s + 1: the broad-lobe quadrature does, in slot s
+// (methods/iwasaki/broad_lobe_quadrature.h's broad_lobe_slots).
+uniform int u_sg_broad[MAX_SGS];
 
 const float SG_PI = 3.14159265358979;
 const float SG_HORIZON_COSINE = 0.02;  // kSgHorizonCosine
@@ -79,4 +82,21 @@ vec3 lift_above_horizon(vec3 axis, vec3 n) {
   }
   float h = SG_HORIZON_COSINE;
   return t / len * sqrt(1.0 - h * h) + h * n;
+}
+
+// core's SgWarpedGrid: an n × 2n midpoint grid in (u, φ) in the SG's frame, cos θ = 1 + ln(1 −
+// u(1 − e^{−2λ}))/λ, so every cell holds ∫exp(λ(ω·ξ − 1))dω/(2n²) (sg_grid_cell_weight).
+float sg_grid_polar_cosine(float lambda, int n, int i) {
+  float u = (float(i) + 0.5) / float(n);
+  return clamp(1.0 + log(1.0 + u * sg_expm1(-2.0 * lambda)) / lambda, -1.0, 1.0);
+}
+vec3 sg_grid_direction(vec3 axis, float cos_t, int n, int j) {
+  vec3 x = normalize(abs(axis.x) < 0.9 ? cross(vec3(1.0, 0.0, 0.0), axis) : cross(vec3(0.0, 1.0, 0.0), axis));
+  vec3 y = cross(axis, x);
+  float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
+  float phi = 2.0 * SG_PI * (float(j) + 0.5) / float(2 * n);
+  return sin_t * cos(phi) * x + sin_t * sin(phi) * y + cos_t * axis;
+}
+float sg_grid_cell_weight(float lambda, int n) {
+  return 2.0 * SG_PI * sg_one_minus_exp_over(2.0 * lambda) * 2.0 / float(2 * n * n);
 }

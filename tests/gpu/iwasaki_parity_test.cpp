@@ -9,9 +9,14 @@
 // triangle's three vertices (each with its own SDF grid) and blends them with those barycentrics;
 // iwasaki_vertex_mask the same with each vertex's V_k from its visibility mask in place of the SDF;
 // iwasaki_mask per pixel, the three vertices' V_k blended with the barycentrics.
+// iwasaki_vertex_quadrature and iwasaki_quadrature: the broad SGs (λ < λ_b) by the quadrature of
+// broad_lobe_quadrature.cpp at the triangle's vertices, with each cell's bit from the vertex's
+// mask, blended with the barycentrics; iwasaki (SDF) over the others, per vertex or per pixel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <memory>
 
@@ -23,6 +28,7 @@
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
+#include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "methods/registry.h"
@@ -62,8 +68,9 @@ struct Case {
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, gpu::Method method) {
-  const bool per_vertex = method.name == "iwasaki_vertex" || method.name == "iwasaki_vertex_mask";
+  const bool per_vertex = method.name.starts_with("iwasaki_vertex");
   const bool masks = method.name == "iwasaki_mask" || method.name == "iwasaki_vertex_mask";
+  const bool quadrature = method.name.ends_with("quadrature");
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
   size_t cloth_index = 0;
@@ -102,8 +109,21 @@ void check_parity(const Case& c, gpu::Method method) {
   if (c.expect_visibility)
     grids = std::make_unique<SgVisibility>(masks ? SgVisibility::from_mask(data->masks.at(cloth_index), mesh, sgs)
                                                  : SgVisibility::compute(data->visibility.at(cloth_index), mesh, sgs, true));
+  // The broad lobes' cell bits (all open without a mask) and how many of them the mask closes.
+  const std::vector<int> slots = broad_lobe_slots(sgs);
+  const auto mask = data->masks.find(cloth_index);
+  const BroadLobeBits bits = mask != data->masks.end() ? BroadLobeBits::compute(mask->second, mesh, sgs)
+                                                       : BroadLobeBits::all_open(mesh.positions.size());
+  const BroadLobeBits open_bits = BroadLobeBits::all_open(mesh.positions.size());
+  if (quadrature) {
+    ASSERT_GE(*std::max_element(slots.begin(), slots.end()), 1) << "the lighting should hold two broad lobes";
+    size_t closed = 0;
+    for (std::uint32_t w : bits.words) closed += size_t(std::popcount(~w));
+    if (c.expect_visibility) EXPECT_GT(closed, 0u) << "no broad cell is blocked: the mask path went untested";
+  }
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
+  double broad_share = 0;
   double worst = 0, visibility_effect = 0;
   for (int y = 1; y < h - 1; y += 2)
     for (int x = 1; x < w - 1; x += 2) {
@@ -144,11 +164,26 @@ void check_parity(const Case& c, gpu::Method method) {
             if (d < 0.1) ++occluded_pixels;
           };
         }
-        return iwasaki_radiance(bsdf, tables, frame, wo, sgs, grids && with_visibility ? &vis : nullptr).radiance;
+        const IwasakiVisibility* v = grids && with_visibility ? &vis : nullptr;
+        if (quadrature) return iwasaki_narrow_radiance(bsdf, tables, frame, wo, sgs, slots, v).radiance;
+        return iwasaki_radiance(bsdf, tables, frame, wo, sgs, v).radiance;
+      };
+      // The broad lobes' quadrature at vertex i of the triangle.
+      auto broad = [&](int i, bool with_visibility) {
+        dvec3 one(0);
+        one[i] = 1;
+        const test::MeshPoint m = test::mesh_point(mesh, tri, one);
+        const dvec3 wo = glm::normalize(scene.camera.position - m.position);
+        dvec3 n = glm::normalize(m.normal);
+        if (glm::dot(n, wo) < 0) n = -n;
+        const BroadLobeBits& b = with_visibility ? bits : open_bits;
+        return broad_lobe_radiance(bsdf, SurfaceFrame::from_normal_warp(n, m.warp), wo, sgs, slots, b.vertex(tri[i]));
       };
       auto shade = [&](bool with_visibility) {
-        if (!per_vertex) return radiance(bary, {tri[0], tri[1], tri[2]}, bary, with_visibility);
         dvec3 sum(0);
+        if (quadrature)
+          for (int k = 0; k < 3; ++k) sum += bary[k] * broad(k, with_visibility);
+        if (!per_vertex) return sum + radiance(bary, {tri[0], tri[1], tri[2]}, bary, with_visibility);
         for (int k = 0; k < 3; ++k) {
           dvec3 one(0);
           one[k] = 1;
@@ -157,6 +192,11 @@ void check_parity(const Case& c, gpu::Method method) {
         return sum;
       };
       const dvec3 cpu = shade(true);
+      if (quadrature) {
+        dvec3 b(0);
+        for (int k = 0; k < 3; ++k) b += bary[k] * broad(k, true);
+        broad_share = std::max(broad_share, glm::length(b) / glm::length(cpu));
+      }
       if (grids) {  // how much the visibility path changes this pixel: parity must cover it
         const dvec3 open = shade(false);
         visibility_effect = std::max(visibility_effect, glm::length(open - cpu) / glm::length(open));
@@ -175,6 +215,7 @@ void check_parity(const Case& c, gpu::Method method) {
   std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
               method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
+  if (quadrature) EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested";
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";
     EXPECT_GT(visibility_effect, 0.05) << "visibility hardly changes any compared pixel: the path went untested";
@@ -185,6 +226,10 @@ TEST_P(IwasakiParity, PerPixelGlslMatchesCpp) { check_parity(GetParam(), methods
 TEST_P(IwasakiParity, PerPixelMaskGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_mask")); }
 TEST_P(IwasakiParity, PerVertexGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex")); }
 TEST_P(IwasakiParity, PerVertexMaskGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_vertex_mask")); }
+TEST_P(IwasakiParity, PerVertexQuadratureGlslMatchesCpp) {
+  check_parity(GetParam(), methods::method("iwasaki_vertex_quadrature"));
+}
+TEST_P(IwasakiParity, PerPixelQuadratureGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_quadrature")); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,
                          ::testing::Values(Case{"swatch", "silk_shot", false}, Case{"pillow", "linen_plain", true},

@@ -111,3 +111,21 @@ TEST(VisibilityMask, AllOpenAndAllBlocked) {
 }
 
 }  // namespace
+
+// hemisphere_cell_of inverts the map: every cell's centre, and points near its corners, land in
+// that cell (the broad lobes' quadrature finds its directions' bits this way).
+TEST(VisibilityMask, CellOfADirectionInvertsTheMap) {
+  for (int n : {8, 64}) {
+    int wrong = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        if (hemisphere_cell_of(n, hemisphere_cell_direction(n, x, y)) != y * n + x) ++wrong;
+        for (double dx : {-0.45, 0.45})
+          for (double dy : {-0.45, 0.45}) {
+            const glm::dvec3 d = hemisphere_square_direction((2.0 * (x + 0.5 + dx)) / n - 1.0, (2.0 * (y + 0.5 + dy)) / n - 1.0);
+            if (hemisphere_cell_of(n, d) != y * n + x) ++wrong;
+          }
+      }
+    EXPECT_EQ(wrong, 0) << "resolution " << n;
+  }
+}

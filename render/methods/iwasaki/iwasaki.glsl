@@ -206,6 +206,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
   if (wo_local.z > 0.0) {
     vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
     for (int k = 0; k < u_sg_count; ++k) {
+      if (u_sg_broad[k] != 0) continue;  // shaded by the broad lobes' quadrature (broad_lobe_quadrature.glsl)
       vec3 xi = u_sg_axis[k];
       float sigma_k = u_sg_sigma[k];
       vec3 amplitude = u_sg_amplitude[k];

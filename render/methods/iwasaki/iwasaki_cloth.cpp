@@ -50,6 +50,15 @@ IwasakiShaders iwasaki_shaders() {
   return s;
 }
 
+IwasakiShaders iwasaki_quadrature_shaders() {
+  IwasakiShaders s = iwasaki_shaders();
+  s.pixel_fs.back() = "iwasaki_quadrature.frag";
+  s.pass_fs.back() = "broad_lobe_quadrature.glsl";
+  s.pass_fs.push_back("iwasaki_quadrature_pass.frag");
+  s.broad_lobe_quadrature = true;
+  return s;
+}
+
 struct IwasakiCloth::Object {
   explicit Object(GpuMesh m) : mesh(std::move(m)) {}
   GpuMesh mesh;
@@ -60,6 +69,9 @@ struct IwasakiCloth::Object {
   // values for the lighting they were last computed for.
   const ObjectVisibility* visibility = nullptr;
   const VisibilityMask* mask = nullptr;  // IwasakiShaders::open_share_masks
+  // IwasakiShaders::broad_lobe_quadrature: the cells' bits, from this mask (all open without one).
+  const VisibilityMask* broad_mask = nullptr;
+  std::unique_ptr<BroadLobeBitsTexture> broad_bits;
   const TriangleMesh* source = nullptr;
   std::unique_ptr<SgVisibilityTexture> sg_visibility;
   SgLighting computed_for;
@@ -69,6 +81,8 @@ IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evalua
     : data_(std::move(data)), evaluation_(evaluation), shaders_(std::move(shaders)), program_(make_program(evaluation, shaders_)) {
   if (evaluation_ == Evaluation::per_vertex)
     draw_program_ = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs), program_source(shaders_.vertex_fs));
+  else if (shaders_.broad_lobe_quadrature)
+    broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
@@ -87,7 +101,8 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   const ObjectVisibility* vis = checked_visibility(*data_, scene_index, mesh);
   const bool per_vertex = evaluation_ == Evaluation::per_vertex;
   std::unique_ptr<Object> o;
-  if (vis && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices
+  const bool quadrature = shaders_.broad_lobe_quadrature;
+  if ((vis || quadrature) && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices
     std::vector<glm::vec3> corners, bary;
     o = std::make_unique<Object>(GpuMesh(deindexed(mesh, corners, bary)));
     o->mesh.add_attribute(4, corners);
@@ -95,7 +110,14 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   } else {
     o = std::make_unique<Object>(GpuMesh(mesh));
   }
-  if (per_vertex) o->pass = std::make_unique<VertexPass>(mesh);  // each vertex reads its own SDF values
+  // Each vertex reads its own SDF values; per pixel, the pass computes the broad lobes' part.
+  if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh);
+  if (quadrature) {
+    o->broad_bits = std::make_unique<BroadLobeBitsTexture>();
+    o->broad_bits->upload(BroadLobeBits::all_open(mesh.positions.size()));
+    const auto m = data_->masks.find(scene_index);
+    if (vis && m != data_->masks.end() && m->second.vertex_count() == mesh.positions.size()) o->broad_mask = &m->second;
+  }
   if (vis) {
     o->visibility = vis;
     if (shaders_.open_share_masks) {
@@ -122,7 +144,9 @@ std::optional<SgVisibility> IwasakiCloth::prepare_lighting(size_t handle, const 
 
 SgVisibility IwasakiCloth::values_for(const Object& o, const SgLighting& drawn) const {
   if (o.mask) return SgVisibility::from_mask(*o.mask, *o.source, drawn);
-  return SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon);
+  SgVisibility out = SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon);
+  if (o.broad_mask) out.broad = BroadLobeBits::compute(*o.broad_mask, *o.source, drawn);
+  return out;
 }
 
 void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) {
@@ -131,7 +155,10 @@ void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVi
   const SgLighting drawn = shaded(sgs);
   if (values.vertices != o.visibility->vertex_count() || values.sgs != int(drawn.size()))
     throw GpuError("method iwasaki: visibility computed for another object or lighting");
+  if (o.broad_mask && values.broad.vertices != values.vertices)
+    throw GpuError("method iwasaki: the broad lobes' cell bits were not computed for this object");
   o.sg_visibility->upload(values);
+  if (o.broad_mask) o.broad_bits->upload(values.broad);
   o.computed_for = drawn;
 }
 
@@ -152,51 +179,78 @@ void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
 void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
   Object& o = *objects_.at(handle);
   if (sgs.size() > kMaxSgs) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
-  program_.use();
-  glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-  glUniform3f(program_.uniform("u_eye"), eye.x, eye.y, eye.z);
-  upload_fabric(program_, *o.bsdf);
-  o.tables->bind(program_, 0);
+  const SgLighting drawn = shaded(sgs);
+  if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
+    const SgVisibility values = values_for(o, drawn);
+    o.sg_visibility->upload(values);
+    if (o.broad_mask) o.broad_bits->upload(values.broad);
+    o.computed_for = drawn;
+  }
   const WeightingTables& t = o.tables->tables();
   // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
-  std::vector<float> axes, amplitudes, sigmas, level_w;
+  std::vector<float> axes, amplitudes, sigmas, sharpness, level_w;
   std::vector<GLint> levels;
-  const SgLighting drawn = shaded(sgs);
   for (const auto& g : drawn) {
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     amplitudes.insert(amplitudes.end(), {float(g.amplitude.r), float(g.amplitude.g), float(g.amplitude.b)});
     sigmas.push_back(float(sg_bandwidth(g.sharpness)));
+    sharpness.push_back(float(g.sharpness));
     int l0 = 0, l1 = 0;
     double f = 0;
     t.level_weights(g.sharpness, l0, l1, f);
     levels.insert(levels.end(), {l0, l1});
     level_w.push_back(float(f));
   }
+  // Per SG: 0 for iwasaki, slot + 1 for the broad lobes' quadrature.
+  std::vector<GLint> broad(drawn.size(), 0);
+  if (shaders_.broad_lobe_quadrature) {
+    const std::vector<int> slots = broad_lobe_slots(drawn);
+    for (size_t k = 0; k < drawn.size(); ++k) broad[k] = slots[k] + 1;
+  }
   const int count = int(drawn.size());
-  glUniform1i(program_.uniform("u_sg_count"), count);
-  if (count > 0) {
-    glUniform3fv(program_.uniform("u_sg_axis"), count, axes.data());
-    glUniform3fv(program_.uniform("u_sg_amplitude"), count, amplitudes.data());
-    glUniform1fv(program_.uniform("u_sg_sigma"), count, sigmas.data());
-    glUniform2iv(program_.uniform("u_sg_levels"), count, levels.data());
-    glUniform1fv(program_.uniform("u_sg_level_w"), count, level_w.data());
+  // Everything a program built on iwasaki.glsl reads (the cloth's draw or the vertex pass).
+  auto set_up = [&](const GlProgram& p) {
+    p.use();
+    glUniformMatrix4fv(p.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform3f(p.uniform("u_eye"), eye.x, eye.y, eye.z);
+    upload_fabric(p, *o.bsdf);
+    o.tables->bind(p, 0);
+    glUniform1i(p.uniform("u_sg_count"), count);
+    if (count > 0) {
+      glUniform3fv(p.uniform("u_sg_axis"), count, axes.data());
+      glUniform3fv(p.uniform("u_sg_amplitude"), count, amplitudes.data());
+      glUniform1fv(p.uniform("u_sg_sigma"), count, sigmas.data());
+      glUniform1fv(p.uniform("u_sg_sharpness"), count, sharpness.data());
+      glUniform2iv(p.uniform("u_sg_levels"), count, levels.data());
+      glUniform1fv(p.uniform("u_sg_level_w"), count, level_w.data());
+      glUniform1iv(p.uniform("u_sg_broad"), count, broad.data());
+    }
+    glUniform1i(p.uniform("u_visibility"), o.visibility ? 1 : 0);
+    glUniform1i(p.uniform("u_visibility_open_share"), o.mask ? 1 : 0);
+    if (shaders_.upload) shaders_.upload(p, o.bsdf->fabric(), drawn);
+    // Samplers of every declared unit get a texture of their type, used or not.
+    if (o.sg_visibility) o.sg_visibility->bind(p, 2);
+    if (kappa_) kappa_->bind(p, 3);
+    if (!o.sg_visibility) glUniform1i(p.uniform("u_sg_visibility"), 2);
+    if (!kappa_) glUniform1i(p.uniform("u_kappa"), 3);
+    if (o.broad_bits) o.broad_bits->bind(p, 7);
+  };
+  if (broad_pass_) {  // per pixel: the broad lobes' part per vertex first (units 4–6: the pass's inputs)
+    set_up(*broad_pass_);
+    glUniform1i(broad_pass_->uniform("u_pass_narrow"), 0);
+    o.pass->run(*broad_pass_, 4);
   }
-  glUniform1i(program_.uniform("u_visibility"), o.visibility ? 1 : 0);
-  glUniform1i(program_.uniform("u_visibility_open_share"), o.mask ? 1 : 0);
-  if (shaders_.upload) shaders_.upload(program_, o.bsdf->fabric(), drawn);
-  if (o.visibility && !same_lighting(o.computed_for, drawn)) {  // lighting-only work, when it changes
-    o.sg_visibility->upload(values_for(o, drawn));
-    o.computed_for = drawn;
-  }
-  // Samplers of every declared unit get a texture of their type, used or not.
-  if (o.sg_visibility) o.sg_visibility->bind(program_, 2);
-  if (kappa_) kappa_->bind(program_, 3);
-  if (!o.sg_visibility) glUniform1i(program_.uniform("u_sg_visibility"), 2);
-  if (!kappa_) glUniform1i(program_.uniform("u_kappa"), 3);
+  set_up(program_);
   if (!o.pass) {
     o.mesh.draw();
     return;
   }
+  if (broad_pass_) {
+    o.pass->bind_result(program_, 8);
+    o.mesh.draw();
+    return;
+  }
+  glUniform1i(program_.uniform("u_pass_narrow"), 1);
   o.pass->run(program_, 4);
   draw_program_->use();
   glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

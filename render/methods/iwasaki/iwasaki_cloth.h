@@ -5,7 +5,9 @@
 // (and, per pixel, a de-indexed mesh), κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
 // cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
 // interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in a fragment pass with one texel
-// per vertex, vertex_pass.h).
+// per vertex, vertex_pass.h). With broad-lobe quadrature (`iwasaki_quadrature`,
+// `iwasaki_vertex_quadrature`) the broad SGs are shaded in that pass instead, by
+// broad_lobe_quadrature.glsl, and added per vertex or blended into the per-pixel iwasaki.
 #include <functional>
 #include <map>
 #include <memory>
@@ -43,8 +45,14 @@ struct IwasakiShaders {
   // Per (vertex, SG) the exact visible share V_k from the bundle's visibility masks
   // (SgVisibility::from_mask) instead of the SDF's d and ∇d (iwasaki.glsl's u_visibility_open_share).
   bool open_share_masks = false;
+  // The broad SGs (λ < kBroadLobeSharpness) by quadrature per vertex (broad_lobe_quadrature.h),
+  // with cell bits from the bundle's visibility masks; iwasaki shades the others. pass_fs then
+  // computes the broad part (plus, per vertex, iwasaki's); per pixel, pixel_fs adds the pass's
+  // results blended over the triangle's vertices.
+  bool broad_lobe_quadrature = false;
 };
 IwasakiShaders iwasaki_shaders();
+IwasakiShaders iwasaki_quadrature_shaders();
 
 class IwasakiCloth : public ClothMethod {
 public:
@@ -71,6 +79,7 @@ private:
   Evaluation evaluation_;
   IwasakiShaders shaders_;
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
+  std::unique_ptr<GlProgram> broad_pass_;    // per pixel with broad-lobe quadrature: the vertex pass
   std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
   std::unique_ptr<KappaTexture> kappa_;
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;

@@ -11,16 +11,19 @@ namespace weft::methods {
 namespace {
 const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl"};
 
-RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, bool open_share_masks = false) {
+enum class Masks { none, open_share, broad_lobe_quadrature };
+
+RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Masks masks = Masks::none) {
   RuntimeMethod m;
   m.seed000 = Seed000Tables::required;
   m.glsl = kGlsl;
-  m.make_gpu = [evaluation, open_share_masks](const gpu::ClothMethodSetup& s) {
-    gpu::IwasakiShaders shaders = gpu::iwasaki_shaders();
-    shaders.open_share_masks = open_share_masks;
+  m.make_gpu = [evaluation, masks](const gpu::ClothMethodSetup& s) {
+    gpu::IwasakiShaders shaders =
+        masks == Masks::broad_lobe_quadrature ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();
+    shaders.open_share_masks = masks == Masks::open_share;
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, shaders);
   };
-  m.visibility_masks = open_share_masks;
+  m.visibility_masks = masks != Masks::none;
   return m;
 }
 }  // namespace
@@ -39,7 +42,7 @@ RuntimeMethod iwasaki_method() {
 }
 
 RuntimeMethod iwasaki_mask_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, true);
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, Masks::open_share);
   m.name = "iwasaki_mask";
   m.ladder_position = 0;
   return m;
@@ -53,8 +56,22 @@ RuntimeMethod iwasaki_vertex_method() {
 }
 
 RuntimeMethod iwasaki_vertex_mask_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, true);
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, Masks::open_share);
   m.name = "iwasaki_vertex_mask";
+  m.ladder_position = 1;
+  return m;
+}
+
+RuntimeMethod iwasaki_quadrature_method() {
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, Masks::broad_lobe_quadrature);
+  m.name = "iwasaki_quadrature";
+  m.ladder_position = 0;
+  return m;
+}
+
+RuntimeMethod iwasaki_vertex_quadrature_method() {
+  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, Masks::broad_lobe_quadrature);
+  m.name = "iwasaki_vertex_quadrature";
   m.ladder_position = 1;
   return m;
 }

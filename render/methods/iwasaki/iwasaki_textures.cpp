@@ -116,6 +116,40 @@ void SgVisibilityTexture::bind(const GlProgram& p, int unit) const {
   glUniform1i(p.uniform("u_sg_visibility_per_row"), per_row_);
 }
 
+namespace {
+constexpr int kBroadTexelsPerVertex = (kBroadLobeWordsPerVertex + 3) / 4;
+}
+
+void BroadLobeBitsTexture::upload(const BroadLobeBits& bits) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  per_row_ = std::max(1, std::min(256, int(max_size) / kBroadTexelsPerVertex));
+  const int width = per_row_ * kBroadTexelsPerVertex, height = std::max(1, int((bits.vertices + per_row_ - 1) / per_row_));
+  if (height > max_size)
+    throw GpuError("broad lobe quadrature: " + std::to_string(bits.vertices) + " vertices do not fit a " +
+                   std::to_string(max_size) + "² texture");
+  std::vector<GLuint> texels(size_t(width) * height * 4, 0u);
+  for (size_t v = 0; v < bits.vertices; ++v) {
+    const size_t first = ((v / per_row_) * width + (v % per_row_) * kBroadTexelsPerVertex) * 4;
+    std::memcpy(&texels[first], &bits.words[v * kBroadLobeWordsPerVertex], kBroadLobeWordsPerVertex * sizeof(GLuint));
+  }
+  glBindTexture(GL_TEXTURE_2D, texture_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32UI, width, height, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  check_gl("uploading the broad lobes' cell bits");
+}
+
+void BroadLobeBitsTexture::bind(const GlProgram& p, int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, texture_.id());
+  glUniform1i(p.uniform("u_broad_bits"), unit);
+  glUniform1i(p.uniform("u_broad_bits_per_row"), per_row_);
+  glUniform1i(p.uniform("u_broad_texels_per_vertex"), kBroadTexelsPerVertex);
+  glUniform1i(p.uniform("u_broad_grid"), kBroadLobeGrid);
+  glUniform1i(p.uniform("u_broad_words_per_sg"), kBroadLobeWordsPerSg);
+}
+
 KappaTexture::KappaTexture(const SigmoidGainTable& t) : spec_(t.spec()) {
   require_float_linear();
   // Stored [σ_l][σ'][β] with β fastest: x = β, y = σ', z = σ_l.

@@ -12,6 +12,7 @@
 #include "runtime/weighting_tables.h"
 #include "gl/gl_program.h"
 #include "gl/gl_texture.h"
+#include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "scene/mesh.h"
 
@@ -39,6 +40,19 @@ private:
 class SgVisibilityTexture {
 public:
   void upload(const SgVisibility& visibility);
+  void bind(const GlProgram& program, int unit) const;
+
+private:
+  GlTexture texture_;
+  int per_row_ = 1;
+};
+
+// BroadLobeBits' words per vertex (broad_lobe_quadrature.h) as RGBA32UI, four words a texel,
+// texel ((v mod P)·T + w/4, v div P) for P vertices per row and T texels per vertex, read with
+// texelFetch by broad_lobe_quadrature.glsl.
+class BroadLobeBitsTexture {
+public:
+  void upload(const BroadLobeBits& bits);
   void bind(const GlProgram& program, int unit) const;
 
 private:

@@ -21,6 +21,7 @@
 
 #include "runtime/iwasaki_bundle.h"
 #include "runtime/visibility_mask.h"
+#include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
 #include "scene/mesh.h"
@@ -32,6 +33,9 @@ struct SgVisibility {
   size_t vertices = 0;
   int sgs = 0;
   std::vector<float> values;  // [vertex][sg] × (d, ∂d/∂θ', ∂d/∂φ') (radians, vertex frame)
+  // The broad lobes' cell bits from the visibility mask (rungs with broad-lobe quadrature;
+  // broad_lobe_quadrature.h), computed with the values; empty (0 vertices) otherwise.
+  BroadLobeBits broad;
   // `mesh`: the object's mesh (the vertex frames the bake cast from: normal + warp).
   // `above_horizon`: look each SG up where iwasaki shades it at that vertex, the axis of
   // above_horizon(G, vertex normal) (spherical_gaussian.h), instead of at its own axis.
