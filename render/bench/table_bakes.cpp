@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "bake/visibility_mask_bake.h"
 #include "bench/number_text.h"
 #include "bench/stopwatch.h"
 #include "gpu/scene_renderer.h"
@@ -75,10 +76,24 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
     it->second.seconds = seconds_since(t);
     std::cerr << " " << fmt(it->second.seconds) << " s\n";
   }
+  // The base mesh's masks do not fit the refined vertices: bake them again for the methods that read them.
+  const bool masks = gpu::reads_visibility_masks(method);
+  if (masks && it->second.masks.empty()) {
+    std::cerr << "weft bench: baking visibility masks of " << scene.name << "'s cloth subdivided " << levels << " ..."
+              << std::flush;
+    const auto t = std::chrono::steady_clock::now();
+    for (const auto& [i, v] : it->second.cloth)
+      if (auto m = bake_visibility_mask(refined, i, kMaskResolution)) it->second.masks.emplace(i, std::move(*m));
+    const double s = seconds_since(t);
+    it->second.seconds += s;
+    std::cerr << " " << fmt(s) << " s\n";
+  }
   auto data = std::make_shared<IwasakiBundleData>(*base);
   for (size_t i = 0; i < refined.objects.size(); ++i)
-    if (refined.objects[i].material == Material::cloth) data->visibility.erase(i);
+    if (refined.objects[i].material == Material::cloth) data->visibility.erase(i), data->masks.erase(i);
   for (const auto& [i, v] : it->second.cloth) data->visibility.emplace(i, v);
+  if (masks)
+    for (const auto& [i, m] : it->second.masks) data->masks.emplace(i, m);
   bake_s = it->second.seconds;
   return data;
 }

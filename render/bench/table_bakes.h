@@ -42,6 +42,7 @@ private:
   std::map<std::string, std::shared_ptr<const IwasakiBundleData>> by_fabrics_;  // a bake holding each fabric set's tables
   struct Refined {
     std::map<size_t, ObjectVisibility> cloth;
+    std::map<size_t, VisibilityMask> masks;  // baked on first use by a method that reads them
     double seconds = 0.0;
   };
   std::map<std::pair<std::string, int>, Refined> refined_;  // by scene and level
