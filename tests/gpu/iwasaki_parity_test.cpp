@@ -12,6 +12,8 @@
 // iwasaki_vertex_quadrature and iwasaki_quadrature: the broad SGs (λ < λ_b) by the quadrature of
 // broad_lobe_quadrature.cpp at the triangle's vertices, with each cell's bit from the vertex's
 // mask, blended with the barycentrics; iwasaki (SDF) over the others, per vertex or per pixel.
+// Per pixel, each SG is also cut by the triangle's own plane (facet_horizon_factor: the GPU takes
+// the facet normal from the position's screen derivatives, the C++ side from the triangle).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -124,6 +126,7 @@ void check_parity(const Case& c, gpu::Method method) {
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double broad_share = 0;
+  long facet_cuts = 0;  // (pixel, SG) pairs the facet's plane cuts by more than 1 %
   double worst = 0, visibility_effect = 0;
   for (int y = 1; y < h - 1; y += 2)
     for (int x = 1; x < w - 1; x += 2) {
@@ -164,7 +167,16 @@ void check_parity(const Case& c, gpu::Method method) {
             if (d < 0.1) ++occluded_pixels;
           };
         }
-        const IwasakiVisibility* v = grids && with_visibility ? &vis : nullptr;
+        if (!(grids && with_visibility)) vis = IwasakiVisibility{};
+        if (!per_vertex) {  // per pixel: the triangle's own plane cuts the SGs too (facet_horizon_factor)
+          const dvec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+          dvec3 facet = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+          if (glm::dot(facet, wo) < 0) facet = -facet;
+          vis.facet_normal = facet;
+          for (const auto& g : sgs)
+            if (facet_horizon_factor(g, n, facet) < 0.99) ++facet_cuts;
+        }
+        const IwasakiVisibility* v = &vis;
         if (quadrature) return iwasaki_narrow_radiance(bsdf, tables, frame, wo, sgs, slots, v).radiance;
         return iwasaki_radiance(bsdf, tables, frame, wo, sgs, v).radiance;
       };
@@ -215,6 +227,7 @@ void check_parity(const Case& c, gpu::Method method) {
   std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
               method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
+  if (!per_vertex && c.expect_visibility) EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested";
   if (quadrature) EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested";
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";

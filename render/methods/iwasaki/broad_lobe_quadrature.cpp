@@ -94,6 +94,7 @@ IwasakiTerms iwasaki_narrow_radiance(const ClothBsdf& bsdf, const WeightingTable
     IwasakiVisibility one;
     if (visibility) {
       one.kappa = visibility->kappa;
+      one.facet_normal = visibility->facet_normal;
       if (visibility->sdf)
         one.sdf = [&, k](int, const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
           visibility->sdf(int(k), tf, theta, phi, d, dt, dp);

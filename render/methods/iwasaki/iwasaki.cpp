@@ -128,6 +128,14 @@ double lobe_horizon_fraction(const ThreadFrame& tf, const dvec3& n, double theta
   return sg_hemisphere_fraction(2.0 / width2, h);
 }
 
+double facet_horizon_factor(const SphericalGaussian& g, const dvec3& shading_normal, const dvec3& facet_normal) {
+  if (facet_normal == dvec3(0.0) || glm::dot(shading_normal, facet_normal) > 1.0 - 1e-4) return 1.0;
+  const dvec3 axis = glm::normalize(g.axis);
+  const double shading = sg_hemisphere_fraction(g.sharpness, glm::dot(axis, shading_normal));
+  const double facet = sg_hemisphere_fraction(g.sharpness, glm::dot(axis, facet_normal));
+  return shading > 0.0 ? std::min(1.0, facet / shading) : 1.0;
+}
+
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,
                               const IwasakiVisibility* visibility) {
@@ -220,8 +228,9 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
           vol += (T_lobe * lobe + T * iso) * p.albedo;
         }
       }
-      const dvec3 amplitude = visibility && visibility->open_share ? g.amplitude * visibility->open_share(int(sg_index))
-                                                                   : g.amplitude;
+      dvec3 amplitude = visibility && visibility->open_share ? g.amplitude * visibility->open_share(int(sg_index))
+                                                             : g.amplitude;
+      if (visibility) amplitude *= facet_horizon_factor(sgs[sg_index], frame.n, visibility->facet_normal);
       out.surface += amplitude * surf / double(n);
       out.volume += amplitude * vol / double(n);
     }

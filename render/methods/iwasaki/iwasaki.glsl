@@ -193,6 +193,21 @@ float horizon_sharpness_for_mean_cosine(float mean_cosine, float min_lambda) {
   return exp(0.5 * (lo + hi));
 }
 
+// iwasaki.cpp's facet_horizon_factor: the share of SG k the facet's plane lets through. A per-pixel
+// caller sets iwasaki_facet_normal (facing the eye) before iwasaki_radiance; zero (per vertex): none.
+vec3 iwasaki_facet_normal = vec3(0.0);
+// The plane of the triangle drawn at this fragment (from the position's screen derivatives), facing the eye.
+void set_facet_normal(vec3 position) {
+  vec3 c = cross(dFdx(position), dFdy(position));
+  if (dot(c, c) > 0.0) iwasaki_facet_normal = normalize(c) * (dot(c, u_eye - position) < 0.0 ? -1.0 : 1.0);
+}
+float facet_horizon_factor(float lambda, vec3 axis, vec3 ns, vec3 ng) {
+  if (ng == vec3(0.0) || dot(ns, ng) > 1.0 - 1e-4) return 1.0;
+  float shading = sg_hemisphere_fraction(lambda, dot(axis, ns));
+  float facet = sg_hemisphere_fraction(lambda, dot(axis, ng));
+  return shading > 0.0 ? min(1.0, facet / shading) : 1.0;
+}
+
 // Outgoing radiance at a cloth point: `corners` are the vertices whose SDF grids are blended
 // with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per vertex).
 vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {
@@ -209,7 +224,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       if (u_sg_broad[k] != 0) continue;  // shaded by the broad lobes' quadrature (broad_lobe_quadrature.glsl)
       vec3 xi = u_sg_axis[k];
       float sigma_k = u_sg_sigma[k];
-      vec3 amplitude = u_sg_amplitude[k];
+      vec3 amplitude = u_sg_amplitude[k] * facet_horizon_factor(2.0 / (sigma_k * sigma_k), xi, n, iwasaki_facet_normal);
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
       // core's above_horizon: a lobe whose axis is below the surface as its part above it.

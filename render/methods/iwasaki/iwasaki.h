@@ -35,6 +35,9 @@ struct IwasakiVisibility {
   // (a baked visibility mask, iwasaki_visibility.h's SgVisibility::from_mask), multiplying the
   // SG's whole contribution; the lobes are then cut at the surface's horizon alone.
   std::function<double(int sg)> open_share;
+  // The facet's (geometric) normal at a pixel, facing ω_o, or zero for none (per vertex): each SG
+  // is scaled by facet_horizon_factor, the share of it the facet's plane lets through.
+  dvec3 facet_normal{0.0};
 };
 
 struct IwasakiTerms {
@@ -55,6 +58,14 @@ double horizon_ratio(const ThreadFrame& tf, const dvec3& n, double theta, double
 // keeps a broad lobe's far side below the surface out, and a nadir lobe's tail above it in.
 double lobe_horizon_fraction(const ThreadFrame& tf, const dvec3& n, double theta, double phi, double sigma_l,
                              double sigma_p);
+
+// A faceted mesh with interpolated normals: the surface seen at a pixel is the triangle, whose
+// plane blocks what lies below it even where the shading normal's horizon lets it through (the
+// reference casts rays from the facet). The share of SG g above both planes over its share above
+// the shading plane, approximated by min(1, H(λ, ξ·n_g)/H(λ, ξ·n_s)) with H the share above one
+// plane (sg_hemisphere_fraction): exact when the planes coincide and, for a narrow lobe, when
+// only one of them cuts it. 1 where the normals agree to 1e−4 or the facet normal is zero.
+double facet_horizon_factor(const SphericalGaussian& g, const dvec3& shading_normal, const dvec3& facet_normal);
 
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,

@@ -11,6 +11,7 @@ in vec3 v_bary;
 out vec4 o_radiance;
 vec3 vertex_broad(int i) { return texelFetch(u_vertex_radiance, ivec2(i - (i / u_vertex_width) * u_vertex_width, i / u_vertex_width), 0).rgb; }
 void main() {
+  set_facet_normal(v_position);
   ivec3 c = ivec3(v_corners + 0.5);
   vec3 broad = v_bary.x * vertex_broad(c.x) + v_bary.y * vertex_broad(c.y) + v_bary.z * vertex_broad(c.z);
   o_radiance = vec4(iwasaki_radiance(v_position, v_normal, v_warp, c, v_bary) + broad, 1.0);
