@@ -44,7 +44,16 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
     if (o.material == Material::cloth)
       sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
   const bool searched = bundle.baked_for == "iwasaki" || bundle.baked_for == "iwasaki_vertex";
-  const std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
+  std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
+  // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
+  // mask for every occluded cloth object (weft bake --masks), or none occluded, take the quadrature rung.
+  if (bundle.iwasaki) {
+    bool masks_cover = true;
+    for (const auto& [i, v] : bundle.iwasaki->visibility)
+      if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].material == Material::cloth)
+        masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
+    if (masks_cover) opaque = opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
+  }
   const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
                                                       : bundle.iwasaki ? (sheer ? "sheer_vertex" : opaque)
                                                                        : "sgpoint");

@@ -21,8 +21,30 @@ KioskBundle cloth_bundle(const std::string& preset, bool tables) {
   return b;
 }
 
+// Occluded cloth without masks: the quadrature rungs would light it unoccluded, so the search's choice stands.
+KioskBundle occluded_without_masks(const std::string& preset) {
+  KioskBundle b = cloth_bundle(preset, true);
+  auto data = std::make_shared<IwasakiBundleData>();
+  data->visibility.emplace(0, ObjectVisibility{});
+  b.iwasaki = data;
+  return b;
+}
+
+TEST(KioskMethod, AutoTakesTheQuadratureRungWhereMasksCoverTheOccludedCloth) {
+  KioskBundle open = cloth_bundle("linen_plain", true);  // nothing occluded: every cell is open
+  EXPECT_EQ(kiosk_method("auto", open, "x.weft").name, "iwasaki_vertex_quadrature");
+  open.baked_for = "iwasaki";
+  EXPECT_EQ(kiosk_method("auto", open, "x.weft").name, "iwasaki_quadrature");
+  KioskBundle masked = occluded_without_masks("linen_plain");
+  auto data = std::make_shared<IwasakiBundleData>(*masked.iwasaki);
+  data->masks.emplace(0, VisibilityMask{});
+  masked.iwasaki = data;
+  EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_vertex_quadrature");
+  EXPECT_EQ(kiosk_method("iwasaki_vertex", masked, "x.weft").name, "iwasaki_vertex");  // --method wins
+}
+
 TEST(KioskMethod, AutoTakesTheMethodTheBakeSearchChose) {
-  KioskBundle b = cloth_bundle("linen_plain", true);
+  KioskBundle b = occluded_without_masks("linen_plain");
   EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki_vertex");
   b.baked_for = "iwasaki";
   EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki");
