@@ -1,6 +1,8 @@
 #include "bench/sky_sweep.h"
 
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <ctime>
 #include <fstream>
 #include <map>
@@ -13,6 +15,14 @@
 #include "lighting/sg_fit.h"
 
 namespace weft::bench {
+
+namespace {
+// The sweep's methods, in the order of low_sun.csv's columns (iwasaki and iwasaki_vertex first, the
+// others after the fit's columns) and of low_sun.md's summary and table.
+constexpr const char* kSweepMethods[] = {"iwasaki",      "iwasaki_vertex",           "iwasaki_vertex_mask",
+                                         "iwasaki_mask", "iwasaki_vertex_quadrature", "iwasaki_quadrature"};
+constexpr size_t kSweepMethodCount = std::size(kSweepMethods);
+}  // namespace
 
 std::vector<std::string> sky_sweep_envs(bool smoke) {
   if (smoke) return {"sky:elev=0", "sky:elev=20,size=2", "studio@90"};
@@ -30,8 +40,7 @@ void apply_sweep(BenchOptions& a) {
   const BenchOptions defaults;
   a.quick = false;
   if (a.envs == defaults.envs) a.envs = sky_sweep_envs(smoke);
-  a.methods = {"iwasaki", "iwasaki_vertex", "iwasaki_vertex_mask", "iwasaki_mask", "iwasaki_vertex_quadrature",
-               "iwasaki_quadrature"};
+  a.methods.assign(std::begin(kSweepMethods), std::end(kSweepMethods));
   a.no_stability = true;
   a.target_error = 0.0;
   a.speed_width = 64, a.speed_height = 48, a.speed_frames = 1;  // the sweep is about accuracy
@@ -98,48 +107,38 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
 
   struct Case {
     std::string scene, fabric, env;
-    double iwasaki = -1.0, vertex = -1.0, mask = -1.0, pixel_mask = -1.0, vertex_quadrature = -1.0, quadrature = -1.0;
+    std::array<double, kSweepMethodCount> rmse;  // by kSweepMethods; −1: not run
     int reference_samples = 0;
   };
   std::vector<Case> cases;
   for (const auto& r : res.rows) {
-    double Case::*column = r.method == "iwasaki"               ? &Case::iwasaki
-                           : r.method == "iwasaki_vertex"      ? &Case::vertex
-                           : r.method == "iwasaki_vertex_mask" ? &Case::mask
-                           : r.method == "iwasaki_mask"        ? &Case::pixel_mask
-                           : r.method == "iwasaki_vertex_quadrature" ? &Case::vertex_quadrature
-                           : r.method == "iwasaki_quadrature"        ? &Case::quadrature
-                                                                     : nullptr;
-    if (!column) continue;
+    const auto m = std::find(std::begin(kSweepMethods), std::end(kSweepMethods), r.method);
+    if (m == std::end(kSweepMethods)) continue;
     auto it = std::find_if(cases.begin(), cases.end(),
                            [&](const Case& c) { return c.scene == r.scene && c.fabric == r.fabric && c.env == r.env; });
-    if (it == cases.end()) it = cases.insert(cases.end(), Case{r.scene, r.fabric, r.env});
-    (*it).*column = r.rmse;
+    if (it == cases.end()) {
+      it = cases.insert(cases.end(), Case{r.scene, r.fabric, r.env, {}});
+      it->rmse.fill(-1.0);
+    }
+    it->rmse[size_t(m - std::begin(kSweepMethods))] = r.rmse;
     it->reference_samples = r.reference_tangent_samples;
   }
 
   std::ofstream csv(out / "low_sun.csv");
-  csv << "scene,fabric,env,iwasaki_rmse,iwasaki_vertex_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,"
-         "reference_tangent_samples,iwasaki_vertex_mask_rmse,iwasaki_mask_rmse,iwasaki_vertex_quadrature_rmse,"
-         "iwasaki_quadrature_rmse\n";
+  csv << "scene,fabric,env," << kSweepMethods[0] << "_rmse," << kSweepMethods[1]
+      << "_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,reference_tangent_samples";
+  for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << kSweepMethods[i] << "_rmse";
+  csv << "\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
-    csv << c.scene << "," << c.fabric << "," << quoted(c.env) << "," << fmt(c.iwasaki, 4) << "," << fmt(c.vertex, 4)
+    csv << c.scene << "," << c.fabric << "," << quoted(c.env) << "," << fmt(c.rmse[0], 4) << "," << fmt(c.rmse[1], 4)
         << "," << fmt(f.irradiance_error, 4) << "," << fmt(f.probe_irradiance_error, 4) << ","
-        << fmt(f.probe_update_ms, 4) << "," << c.reference_samples << "," << fmt(c.mask, 4) << "," << fmt(c.pixel_mask, 4)
-        << "," << fmt(c.vertex_quadrature, 4) << "," << fmt(c.quadrature, 4) << "\n";
+        << fmt(f.probe_update_ms, 4) << "," << c.reference_samples;
+    for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << fmt(c.rmse[i], 4);
+    csv << "\n";
   }
   if (!csv) throw std::runtime_error("cannot write " + (out / "low_sun.csv").string());
 
-  std::vector<double> iw, vx, mk, pm, vq, pq;
-  for (const auto& c : cases) {
-    if (c.iwasaki >= 0) iw.push_back(c.iwasaki);
-    if (c.vertex >= 0) vx.push_back(c.vertex);
-    if (c.mask >= 0) mk.push_back(c.mask);
-    if (c.pixel_mask >= 0) pm.push_back(c.pixel_mask);
-    if (c.vertex_quadrature >= 0) vq.push_back(c.vertex_quadrature);
-    if (c.quadrature >= 0) pq.push_back(c.quadrature);
-  }
   double fit_worst = 0.0, probe_worst = 0.0, probe_ms_worst = 0.0;
   for (const auto& [env, f] : fits) {
     fit_worst = std::max(fit_worst, f.irradiance_error);
@@ -152,27 +151,26 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
      << " against the reference under the same " << a.sg_count << " fitted SGs (SG grid " << a.sg_grid << ", "
      << reference_samples_text(a) << "); the fit's irradiance error "
      << "(fit_error.h) with the bench's fit and with the probe's warm update (grid 64, 8 iterations).\n\n"
-     << "Summary: iwasaki worst " << fmt(iw.empty() ? -1 : *std::max_element(iw.begin(), iw.end())) << ", median "
-     << fmt(median(iw)) << "; iwasaki_vertex worst " << fmt(vx.empty() ? -1 : *std::max_element(vx.begin(), vx.end()))
-     << ", median " << fmt(median(vx)) << "; iwasaki_vertex_mask worst "
-     << fmt(mk.empty() ? -1 : *std::max_element(mk.begin(), mk.end())) << ", median " << fmt(median(mk))
-     << "; iwasaki_mask worst " << fmt(pm.empty() ? -1 : *std::max_element(pm.begin(), pm.end())) << ", median "
-     << fmt(median(pm)) << "; iwasaki_vertex_quadrature worst "
-     << fmt(vq.empty() ? -1 : *std::max_element(vq.begin(), vq.end())) << ", median " << fmt(median(vq))
-     << "; iwasaki_quadrature worst " << fmt(pq.empty() ? -1 : *std::max_element(pq.begin(), pq.end())) << ", median "
-     << fmt(median(pq))
-     << "; fit irradiance error worst " << fmt(fit_worst) << " (probe update "
-     << fmt(probe_worst) << ", at most " << fmt(probe_ms_worst) << " ms of CPU time per update).\n\n"
-     << "| scene | fabric | env | iwasaki | iwasaki_vertex | iwasaki_vertex_mask | iwasaki_mask | "
-        "iwasaki_vertex_quadrature | iwasaki_quadrature | fit irradiance error | probe update: error / CPU ms | "
-        "reference N_j |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "Summary: ";
+  for (size_t i = 0; i < kSweepMethodCount; ++i) {
+    std::vector<double> run;
+    for (const auto& c : cases)
+      if (c.rmse[i] >= 0) run.push_back(c.rmse[i]);
+    md << kSweepMethods[i] << " worst " << fmt(run.empty() ? -1 : *std::max_element(run.begin(), run.end()))
+       << ", median " << fmt(median(run)) << "; ";
+  }
+  md << "fit irradiance error worst " << fmt(fit_worst) << " (probe update " << fmt(probe_worst) << ", at most "
+     << fmt(probe_ms_worst) << " ms of CPU time per update).\n\n| scene | fabric | env | ";
+  for (const char* m : kSweepMethods) md << m << " | ";
+  md << "fit irradiance error | probe update: error / CPU ms | reference N_j |\n|---|---|---|";
+  for (size_t i = 0; i < kSweepMethodCount; ++i) md << "---|";
+  md << "---|---|---|\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
-    md << "| " << c.scene << " | " << c.fabric << " | `" << c.env << "` | " << fmt(c.iwasaki) << " | " << fmt(c.vertex)
-       << " | " << fmt(c.mask) << " | " << fmt(c.pixel_mask) << " | " << fmt(c.vertex_quadrature) << " | "
-       << fmt(c.quadrature) << " | " << fmt(f.irradiance_error) << " | " << fmt(f.probe_irradiance_error) << " / "
-       << fmt(f.probe_update_ms) << " | " << c.reference_samples << " |\n";
+    md << "| " << c.scene << " | " << c.fabric << " | `" << c.env << "` | ";
+    for (double e : c.rmse) md << fmt(e) << " | ";
+    md << fmt(f.irradiance_error) << " | " << fmt(f.probe_irradiance_error) << " / " << fmt(f.probe_update_ms) << " | "
+       << c.reference_samples << " |\n";
   }
   md << "\n## References\n\nN_j: tangent samples per thread; doublings: the check subset's cloth change from N to "
         "2N; times on this run's machine (cached: from an earlier run).\n\n"
