@@ -224,7 +224,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       if (u_sg_broad[k] != 0) continue;  // shaded by the broad lobes' quadrature (broad_lobe_quadrature.glsl)
       vec3 xi = u_sg_axis[k];
       float sigma_k = u_sg_sigma[k];
-      vec3 amplitude = u_sg_amplitude[k] * facet_horizon_factor(2.0 / (sigma_k * sigma_k), xi, n, iwasaki_facet_normal);
+      vec3 amplitude = u_sg_amplitude[k] * facet_horizon_factor(u_sg_sharpness[k], xi, n, iwasaki_facet_normal);
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
       // core's above_horizon: a lobe whose axis is below the surface as its part above it.
