@@ -5,29 +5,21 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <vector>
 
-#include "bake/visibility_mask_bake.h"
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "runtime/visibility_mask.h"
 #include "scene/scene.h"
+#include "support/lighting_change_bench.h"
 
 using namespace weft;
 
 namespace {
-
-double process_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
 
 // Σ bit·G / Σ G over every cell, in double: the share the mask holds exactly; −1 where G stays
 // below e^{−14} of its peak over the whole hemisphere (the share is 1 by definition there).
@@ -45,26 +37,14 @@ double exact_share(const VisibilityMask& m, size_t vertex, const glm::dvec3& axi
 }
 
 TEST(MaskOpenShareBench, PillowUnderSkies) {
-  Scene scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
-  size_t cloth = 0;
-  for (size_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].material == Material::cloth) cloth = i;
-  const auto mask = bake_visibility_mask(scene, cloth, 64);
-  ASSERT_TRUE(mask);
-  const TriangleMesh& mesh = scene.objects[cloth].mesh;
+  const test::PillowClothMask pillow;
+  ASSERT_TRUE(pillow.mask);
+  const VisibilityMask& mask = *pillow.mask;
+  const TriangleMesh& mesh = pillow.mesh();
   for (const char* env : {"sky:elev=5", "sky:elev=20"}) {
     const SgLighting sgs = fit_sgs(load_env(env, WEFT_SOURCE_ASSETS "/envmaps"), SgFitOptions{});
-    std::vector<double> cpu, wall;
     SgVisibility v;
-    for (int i = 0; i < 3; ++i) {
-      const double c0 = process_cpu_ms();
-      const auto w0 = std::chrono::steady_clock::now();
-      v = SgVisibility::from_mask(*mask, mesh, sgs);
-      wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count());
-      cpu.push_back(process_cpu_ms() - c0);
-    }
-    std::sort(cpu.begin(), cpu.end());
-    std::sort(wall.begin(), wall.end());
+    const test::MedianTimes t = test::median_of_three([&] { v = SgVisibility::from_mask(mask, mesh, sgs); });
     // Against the exact sum on every 97th vertex.
     double worst = 0, sum = 0;
     int n = 0;
@@ -72,7 +52,7 @@ TEST(MaskOpenShareBench, PillowUnderSkies) {
       const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[vx], mesh.warps[vx]);
       for (size_t k = 0; k < sgs.size(); ++k) {
         const glm::dvec3 a = glm::normalize(sgs[k].axis);
-        const double want = exact_share(*mask, vx, glm::dvec3(glm::dot(a, f.u), glm::dot(a, f.v), glm::dot(a, f.n)), sgs[k].sharpness);
+        const double want = exact_share(mask, vx, glm::dvec3(glm::dot(a, f.u), glm::dot(a, f.v), glm::dot(a, f.n)), sgs[k].sharpness);
         if (want < 0) continue;
         const double e = std::abs(v.at(vx, int(k)).x - want);
         if (e > worst && std::getenv("WEFT_BENCH_VERBOSE"))
@@ -83,7 +63,7 @@ TEST(MaskOpenShareBench, PillowUnderSkies) {
     }
     std::printf("pillow %s: %zu vertices x %zu SGs: V_k in %.1f ms CPU (all threads), %.1f ms wall; "
                 "against the exact cell sum (%d pairs): worst %.4f, mean %.5f\n",
-                env, mesh.positions.size(), sgs.size(), cpu[1], wall[1], n, worst, sum / n);
+                env, mesh.positions.size(), sgs.size(), t.cpu_ms, t.wall_ms, n, worst, sum / n);
   }
 }
 
