@@ -2,7 +2,7 @@
 // maps): a unit local direction → the node square [−1,1]², whose nodes sit at s = −1 + 2i/(n−1).
 // One copy for iwasaki.glsl and mizutani.glsl; their parity tests pin it to the C++.
 // Needs microcylinder.glsl (PI) before it.
-const float NODE_RING_B = 1.52876106;  // 2 − kNodeRingHorizonSpacing·π/4 (hemisphere_grid.cpp's kRingB)
+const float NODE_RING_B = 1.84292037;  // 2 − kNodeRingHorizonSpacing·π/4 (hemisphere_grid.cpp's kRingB)
 
 // Concentric square ↔ Lambert equal-area hemisphere (square_from_hemisphere).
 vec2 square_from_hemisphere(vec3 w) {

@@ -39,3 +39,20 @@ TEST(Study, GrazingSharpLobe) {
                         ref > 0 ? 100 * (iw / ref - 1) : 0.0, ref > 0 ? 100 * (coarse / ref - 1) : 0.0);
           }
 }
+
+// The pillow's silhouette under the bundled studio (grazing_pillow_study): a λ = 311 SG 26° up and
+// the view opposite it, a degree or two over the horizon. Sweeps the view's elevation through the
+// last few degrees, where the converged model changes several-fold.
+TEST(Study, GrazingView) {
+  const test::LinenSwatchStudy study;
+  std::printf("light_azimuth,view_elevation,reference,model_3_3,iwasaki\n");
+  for (double az : {0.0, 45.0, 90.0})
+    for (double view_el : {0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 10.0}) {
+      SgLighting one{{direction(az, 26.0), 311.0, dvec3(1)}};
+      const dvec3 wo = direction(az + 180.0, view_el);
+      const double ref = integrate_sg_lighting(study.exact, SurfaceFrame{}, wo, one).radiance.g;
+      const double coarse = integrate_sg_lighting(study.approx, SurfaceFrame{}, wo, one).radiance.g;
+      const double iw = iwasaki_radiance(study.approx, study.tables, SurfaceFrame{}, wo, one).radiance.g;
+      std::printf("%.0f,%.1f,%.4g,%.4g,%.4g\n", az, view_el, ref, coarse, iw);
+    }
+}

@@ -87,7 +87,7 @@ TEST(HemisphereGrid, NodeRingsAreDensestAtTheHorizon) {
   const HemisphereNodeGrid g{48};
   const double h = 2.0 / (g.n - 1);
   const double last = std::acos(g.node(g.n * (g.n / 2) + g.n - 2).z);  // one node in from the horizon at +x
-  EXPECT_NEAR((0.5 * pi - last) / (0.5 * pi * h), a, 0.03);  // 0.622 over the finite step
+  EXPECT_NEAR((0.5 * pi - last) / (0.5 * pi * h), a, 0.06);  // 0.245 over the finite step
   const double equal_area_last = std::acos(hemisphere_from_square({1.0 - h, 0.0}).z);
   EXPECT_GT((0.5 * pi - equal_area_last) / (0.5 * pi * h), 1.2);
   // Taps reproduce a node exactly.
