@@ -9,6 +9,9 @@
 // blocked part.
 #include <gtest/gtest.h>
 
+#include <GLES3/gl3.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -98,6 +101,11 @@ TEST(VertexFacet, PerVertexSgsAreCutByTheFacetsPlane) {
   target.bind();
   renderer.draw(scene.camera, w, h);
   const Image image = gpu::read_linear_image(w, h);
+  GLint outputs = 0, inputs = 0;  // what bounds the SGs a per-vertex draw can carry (iwasaki_cloth.cpp's facet_draw)
+  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &outputs);
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &inputs);
+  std::printf("GL_MAX_VERTEX_OUTPUT_COMPONENTS %d, GL_MAX_FRAGMENT_INPUT_COMPONENTS %d: up to %d SGs per vertex\n", outputs,
+              inputs, 4 * ((std::min(outputs, inputs) - 8) / 12));
 
   const WeightingTables& tables = data->tables.at(name);
   const ClothBsdf bsdf(fabric, tables.tangent_samples);
