@@ -40,7 +40,7 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
-  // Before a new target's making binds its framebuffer.
+  // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_VIEWPORT, viewport);
