@@ -16,6 +16,9 @@ std::string shader_source(const std::vector<std::string_view>& parts, const std:
 }  // namespace
 
 std::string program_source(const std::vector<std::string_view>& parts) { return shader_source(parts, ""); }
+std::string program_source(const std::vector<std::string_view>& parts, const std::string& defines) {
+  return shader_source(parts, defines);
+}
 
 std::vector<std::string_view> with_main(std::vector<std::string_view> parts, std::string_view main) {
   parts.push_back(main);

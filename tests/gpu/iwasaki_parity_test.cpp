@@ -12,8 +12,10 @@
 // iwasaki_vertex_quadrature and iwasaki_quadrature: the broad SGs (λ < λ_b) by the quadrature of
 // broad_lobe_quadrature.cpp at the triangle's vertices, with each cell's bit from the vertex's
 // mask, blended with the barycentrics; iwasaki (SDF) over the others, per vertex or per pixel.
-// Per pixel, each SG is also cut by the triangle's own plane (facet_horizon_factor: the GPU takes
-// the facet normal from the position's screen derivatives, the C++ side from the triangle).
+// Each SG is also cut by the triangle's own plane (facet_horizon_factor: the GPU takes the facet
+// normal from the position's screen derivatives, the C++ side from the triangle): per pixel inside
+// iwasaki, per vertex after blending each SG's radiance at the three vertices
+// (facet_interpolated_radiance), at the interpolated shading normal.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +23,8 @@
 #include <bit>
 #include <cmath>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "bake/scene_visibility.h"
 #include "bake/sigmoid_gain.h"
@@ -140,7 +144,18 @@ void check_parity(const Case& c, gpu::Method method) {
       const auto& tri = mesh.triangles[hit->triangle];
       const dvec3 bary(b0, hit->b1, hit->b2);
       // The radiance at surface point (bary over `corners`, SDF blended over `sdf_corners`).
-      auto radiance = [&](dvec3 b, std::array<uint32_t, 3> sdf_corners, dvec3 sdf_bary, bool with_visibility) {
+      // The facet's plane, facing the eye at the pixel.
+      const test::MeshPoint here = test::mesh_point(mesh, tri, bary);
+      const dvec3 wo_here = glm::normalize(scene.camera.position - here.position);
+      const dvec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+      dvec3 facet = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+      if (glm::dot(facet, wo_here) < 0) facet = -facet;
+      dvec3 shading_normal = glm::normalize(here.normal);
+      if (glm::dot(shading_normal, wo_here) < 0) shading_normal = -shading_normal;
+      for (const auto& g : sgs)
+        if (facet_horizon_factor(g, shading_normal, facet) < 0.99) ++facet_cuts;
+      // SG `only` (−1: all of them).
+      auto radiance = [&](dvec3 b, std::array<uint32_t, 3> sdf_corners, dvec3 sdf_bary, bool with_visibility, int only) {
         const test::MeshPoint m = test::mesh_point(mesh, tri, b);
         const dvec3 p = m.position, warp = m.warp;
         dvec3 n = m.normal;
@@ -168,20 +183,14 @@ void check_parity(const Case& c, gpu::Method method) {
           };
         }
         if (!(grids && with_visibility)) vis = IwasakiVisibility{};
-        if (!per_vertex) {  // per pixel: the triangle's own plane cuts the SGs too (facet_horizon_factor)
-          const dvec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
-          dvec3 facet = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-          if (glm::dot(facet, wo) < 0) facet = -facet;
-          vis.facet_normal = facet;
-          for (const auto& g : sgs)
-            if (facet_horizon_factor(g, n, facet) < 0.99) ++facet_cuts;
-        }
+        if (!per_vertex) vis.facet_normal = facet;  // per pixel: inside iwasaki (facet_horizon_factor)
         const IwasakiVisibility* v = &vis;
+        if (only >= 0) return iwasaki_sg_radiance(bsdf, tables, frame, wo, sgs, size_t(only), v).radiance;
         if (quadrature) return iwasaki_narrow_radiance(bsdf, tables, frame, wo, sgs, slots, v).radiance;
         return iwasaki_radiance(bsdf, tables, frame, wo, sgs, v).radiance;
       };
       // The broad lobes' quadrature at vertex i of the triangle.
-      auto broad = [&](int i, bool with_visibility) {
+      auto broad = [&](int i, bool with_visibility, int only) {
         dvec3 one(0);
         one[i] = 1;
         const test::MeshPoint m = test::mesh_point(mesh, tri, one);
@@ -189,24 +198,36 @@ void check_parity(const Case& c, gpu::Method method) {
         dvec3 n = glm::normalize(m.normal);
         if (glm::dot(n, wo) < 0) n = -n;
         const BroadLobeBits& b = with_visibility ? bits : open_bits;
-        return broad_lobe_radiance(bsdf, SurfaceFrame::from_normal_warp(n, m.warp), wo, sgs, slots, b.vertex(tri[i]));
+        std::vector<int> chosen = slots;  // SG `only`'s slot alone (−1: every broad SG)
+        if (only >= 0)
+          for (size_t k = 0; k < chosen.size(); ++k)
+            if (int(k) != only) chosen[k] = -1;
+        return broad_lobe_radiance(bsdf, SurfaceFrame::from_normal_warp(n, m.warp), wo, sgs, chosen, b.vertex(tri[i]));
       };
       auto shade = [&](bool with_visibility) {
-        dvec3 sum(0);
-        if (quadrature)
-          for (int k = 0; k < 3; ++k) sum += bary[k] * broad(k, with_visibility);
-        if (!per_vertex) return sum + radiance(bary, {tri[0], tri[1], tri[2]}, bary, with_visibility);
-        for (int k = 0; k < 3; ++k) {
-          dvec3 one(0);
-          one[k] = 1;
-          sum += bary[k] * radiance(one, {tri[k], tri[k], tri[k]}, dvec3(1, 0, 0), with_visibility);
+        if (!per_vertex) {
+          dvec3 sum(0);
+          if (quadrature)
+            for (int k = 0; k < 3; ++k) sum += bary[k] * broad(k, with_visibility, -1);
+          return sum + radiance(bary, {tri[0], tri[1], tri[2]}, bary, with_visibility, -1);
         }
-        return sum;
+        // Per vertex: each SG at each vertex (its quadrature where broad), then the facet's cut.
+        std::array<std::vector<dvec3>, 3> at;
+        for (int i = 0; i < 3; ++i) {
+          dvec3 one(0);
+          one[i] = 1;
+          for (size_t k = 0; k < sgs.size(); ++k)
+            at[i].push_back(quadrature && slots[k] >= 0
+                                ? broad(i, with_visibility, int(k))
+                                : radiance(one, {tri[i], tri[i], tri[i]}, dvec3(1, 0, 0), with_visibility, int(k)));
+        }
+        return facet_interpolated_radiance(sgs, quadrature ? std::span<const int>(slots) : std::span<const int>(),
+                                           {at[0], at[1], at[2]}, bary, shading_normal, facet);
       };
       const dvec3 cpu = shade(true);
       if (quadrature) {
         dvec3 b(0);
-        for (int k = 0; k < 3; ++k) b += bary[k] * broad(k, true);
+        for (int k = 0; k < 3; ++k) b += bary[k] * broad(k, true, -1);
         broad_share = std::max(broad_share, glm::length(b) / glm::length(cpu));
       }
       if (grids) {  // how much the visibility path changes this pixel: parity must cover it
@@ -227,7 +248,7 @@ void check_parity(const Case& c, gpu::Method method) {
   std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
               method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
-  if (!per_vertex && c.expect_visibility) EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested";
+  if (c.expect_visibility) EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested";
   if (quadrature) EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested";
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";

@@ -90,18 +90,7 @@ IwasakiTerms iwasaki_narrow_radiance(const ClothBsdf& bsdf, const WeightingTable
   IwasakiTerms out;
   for (size_t k = 0; k < sgs.size(); ++k) {
     if (slots[k] >= 0) continue;
-    // One SG at a time, with the visibility's index mapped back to k.
-    IwasakiVisibility one;
-    if (visibility) {
-      one.kappa = visibility->kappa;
-      one.facet_normal = visibility->facet_normal;
-      if (visibility->sdf)
-        one.sdf = [&, k](int, const ThreadFrame& tf, double theta, double phi, double& d, double& dt, double& dp) {
-          visibility->sdf(int(k), tf, theta, phi, d, dt, dp);
-        };
-      if (visibility->open_share) one.open_share = [&, k](int) { return visibility->open_share(int(k)); };
-    }
-    const IwasakiTerms t = iwasaki_radiance(bsdf, tables, frame, wo, sgs.subspan(k, 1), visibility ? &one : nullptr);
+    const IwasakiTerms t = iwasaki_sg_radiance(bsdf, tables, frame, wo, sgs, k, visibility);
     out.surface += t.surface;
     out.volume += t.volume;
     out.radiance += t.radiance;

@@ -16,13 +16,14 @@ uint broad_word(int vertex, int word) {
   return c == 0 ? w.x : (c == 1 ? w.y : (c == 2 ? w.z : w.w));
 }
 
-vec3 broad_lobe_radiance(int vertex, vec3 position, vec3 normal, vec3 warp) {
+// From SGs first … end − 1 (the per-vertex rung takes one SG at a time: iwasaki_quadrature_pass.frag).
+vec3 broad_lobe_radiance(int vertex, vec3 position, vec3 normal, vec3 warp, int first, int end) {
   vec3 n = normalize(normal);
   vec3 wo = normalize(u_eye - position);
   if (dot(n, wo) < 0.0) n = -n;  // as iwasaki_radiance: the side facing the eye
   vec3 u = normalize(warp - dot(warp, n) * n);
   vec3 sum = vec3(0.0);
-  for (int k = 0; k < u_sg_count; ++k) {
+  for (int k = first; k < min(end, u_sg_count); ++k) {
     int slot = u_sg_broad[k] - 1;
     if (slot < 0) continue;
     float lambda = u_sg_sharpness[k];

@@ -136,9 +136,11 @@ double facet_horizon_factor(const SphericalGaussian& g, const dvec3& shading_nor
   return shading > 0.0 ? std::min(1.0, facet / shading) : 1.0;
 }
 
-IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
-                              const dvec3& wo, std::span<const SphericalGaussian> sgs,
-                              const IwasakiVisibility* visibility) {
+namespace {
+// SGs first … end − 1 of `sgs` (the visibility called with each one's index in `sgs`).
+IwasakiTerms radiance_of(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                         const dvec3& wo, std::span<const SphericalGaussian> sgs, size_t first, size_t end,
+                         const IwasakiVisibility* visibility) {
   if (tables.tangent_samples[0] != bsdf.sample_count(0) || tables.tangent_samples[1] != bsdf.sample_count(1))
     throw std::invalid_argument("iwasaki: tables were baked for other tangent sample counts");
   IwasakiTerms out;
@@ -146,7 +148,7 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
   auto local = [&](const dvec3& w) { return dvec3(glm::dot(w, frame.u), glm::dot(w, frame.v), glm::dot(w, frame.n)); };
   const dvec3 wo_local = local(wo);
 
-  for (size_t sg_index = 0; sg_index < sgs.size(); ++sg_index) {
+  for (size_t sg_index = first; sg_index < std::min(end, sgs.size()); ++sg_index) {
     // An SG whose axis is below the surface: its part above it, with λ' no broader than T's levels.
     const SphericalGaussian g = above_horizon(sgs[sg_index], frame.n, tables.lambdas.front());
     const dvec3 xi_local = local(g.axis);
@@ -237,6 +239,32 @@ IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tabl
   }
   out.radiance = out.surface + out.volume;
   return out;
+}
+
+}  // namespace
+
+IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                              const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                              const IwasakiVisibility* visibility) {
+  return radiance_of(bsdf, tables, frame, wo, sgs, 0, sgs.size(), visibility);
+}
+
+IwasakiTerms iwasaki_sg_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                                 const dvec3& wo, std::span<const SphericalGaussian> sgs, size_t k,
+                                 const IwasakiVisibility* visibility) {
+  return radiance_of(bsdf, tables, frame, wo, sgs, k, k + 1, visibility);
+}
+
+dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
+                                  const std::array<std::span<const dvec3>, 3>& vertex_sgs, const dvec3& bary,
+                                  const dvec3& shading_normal, const dvec3& facet_normal) {
+  dvec3 sum(0.0);
+  for (size_t k = 0; k < sgs.size(); ++k) {
+    const dvec3 blended = bary[0] * vertex_sgs[0][k] + bary[1] * vertex_sgs[1][k] + bary[2] * vertex_sgs[2][k];
+    const bool broad = k < broad_slots.size() && broad_slots[k] >= 0;
+    sum += broad ? blended : blended * facet_horizon_factor(sgs[k], shading_normal, facet_normal);
+  }
+  return sum;
 }
 
 }  // namespace weft

@@ -7,9 +7,10 @@
 //   and the surface's horizon as a second linear boundary (closed-form H, the smaller one wins).
 // The same steps as render/methods/iwasaki/iwasaki.cpp (+ iwasaki_visibility.cpp); the parity test pins
 // them. Needs microcylinder.glsl (threads, tilts, fiber_angles, fresnel_dielectric), erf.glsl,
-// sg_lighting.glsl (the SG integrals) and hemisphere_grid.glsl before it.
-// Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex (iwasaki_vertex_pass.frag, a
-// fragment pass with one texel per vertex; iwasaki_vertex.vert interpolates its results).
+// sg_lighting.glsl (the SG integrals), hemisphere_grid.glsl and facet_horizon.glsl before it.
+// Method `iwasaki` calls it per pixel (iwasaki.frag), `iwasaki_vertex` per vertex and SG
+// (iwasaki_vertex_pass.frag, a fragment pass with one texel per vertex and SG; iwasaki_vertex.vert
+// and .frag interpolate each SG's result and cut it by the facet's plane).
 #define MAX_TABLES 512
 #define MAX_LEVELS 32
 const float HALF_PI = 1.57079632679490;
@@ -144,15 +145,7 @@ float horizon_h(float theta, float phi, float sigma_l, float sp, vec3 hz) {
 }
 
 // --- iwasaki.cpp's lobe_horizon_fraction: the SG share above the surface (core's
-// sg_hemisphere_fraction) for the lobe's width along h's gradient.
-float sg_hemisphere_fraction(float lambda, float c) {
-  c = clamp(c, -1.0, 1.0);
-  const float A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
-  float t = lambda * sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
-  float factor = t < 1e-6 ? 0.5 + 0.5 * c : 0.5 + 0.5 * erf_nr(t * c) / erf_nr(t);
-  float e = exp(-lambda);
-  return (e + (1.0 - e) * factor) / (1.0 + e);
-}
+// sg_hemisphere_fraction, facet_horizon.glsl) for the lobe's width along h's gradient.
 float horizon_fraction(float theta, float phi, float sigma_l, float sp, vec3 hz) {
   float ct = cos(theta), st = sin(theta), cp = cos(phi), sn = sin(phi);
   float radial = cp * hz.y + sn * hz.z;
@@ -193,24 +186,15 @@ float horizon_sharpness_for_mean_cosine(float mean_cosine, float min_lambda) {
   return exp(0.5 * (lo + hi));
 }
 
-// iwasaki.cpp's facet_horizon_factor: the share of SG k the facet's plane lets through. A per-pixel
-// caller sets iwasaki_facet_normal (facing the eye) before iwasaki_radiance; zero (per vertex): none.
+// The facet's plane (facet_horizon.glsl) cuts each SG too. A per-pixel caller sets
+// iwasaki_facet_normal (facing the eye) before iwasaki_radiance; zero (per vertex): none.
 vec3 iwasaki_facet_normal = vec3(0.0);
-// The plane of the triangle drawn at this fragment (from the position's screen derivatives), facing the eye.
-void set_facet_normal(vec3 position) {
-  vec3 c = cross(dFdx(position), dFdy(position));
-  if (dot(c, c) > 0.0) iwasaki_facet_normal = normalize(c) * (dot(c, u_eye - position) < 0.0 ? -1.0 : 1.0);
-}
-float facet_horizon_factor(float lambda, vec3 axis, vec3 ns, vec3 ng) {
-  if (ng == vec3(0.0) || dot(ns, ng) > 1.0 - 1e-4) return 1.0;
-  float shading = sg_hemisphere_fraction(lambda, dot(axis, ns));
-  float facet = sg_hemisphere_fraction(lambda, dot(axis, ng));
-  return shading > 0.0 ? min(1.0, facet / shading) : 1.0;
-}
+void set_facet_normal(vec3 position) { iwasaki_facet_normal = facet_normal(position, u_eye); }
 
-// Outgoing radiance at a cloth point: `corners` are the vertices whose SDF grids are blended
-// with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per vertex).
-vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {
+// Outgoing radiance at a cloth point from SGs first … end − 1: `corners` are the vertices whose SDF
+// grids are blended with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per
+// vertex). The per-vertex pass takes one SG at a time (iwasaki_vertex_pass.frag).
+vec3 iwasaki_sg_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary, int first, int end) {
   vec3 n = normalize(normal);
   vec3 wo = normalize(u_eye - position);
   if (dot(n, wo) < 0.0) n = -n;  // thin cloth seen from behind: shade the side facing the eye
@@ -220,7 +204,7 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
   vec3 surface = vec3(0.0), volume = vec3(0.0);
   if (wo_local.z > 0.0) {
     vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
-    for (int k = 0; k < u_sg_count; ++k) {
+    for (int k = first; k < min(end, u_sg_count); ++k) {
       if (u_sg_broad[k] != 0) continue;  // shaded by the broad lobes' quadrature (broad_lobe_quadrature.glsl)
       vec3 xi = u_sg_axis[k];
       float sigma_k = u_sg_sigma[k];
@@ -332,4 +316,8 @@ vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
     }
   }
   return surface + volume;
+}
+// From every SG.
+vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {
+  return iwasaki_sg_radiance(position, normal, warp, corners, bary, 0, u_sg_count);
 }

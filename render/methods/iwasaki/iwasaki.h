@@ -11,6 +11,7 @@
 // the lobes are cut there too, by lobe_horizon_fraction; φ then runs over the whole circle).
 // An SG whose axis is below the surface is shaded as its part above it (above_horizon), and Eq.
 // 13's frozen σ' and cos θ are scaled to the SG's exact integral (iwasaki.cpp, separable_spread).
+#include <array>
 #include <functional>
 #include <span>
 
@@ -70,5 +71,18 @@ double facet_horizon_factor(const SphericalGaussian& g, const dvec3& shading_nor
 IwasakiTerms iwasaki_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
                               const dvec3& wo, std::span<const SphericalGaussian> sgs,
                               const IwasakiVisibility* visibility = nullptr);
+// SG k of `sgs` alone (the visibility called with k): what the per-vertex pass stores per (vertex, SG).
+IwasakiTerms iwasaki_sg_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
+                                 const dvec3& wo, std::span<const SphericalGaussian> sgs, size_t k,
+                                 const IwasakiVisibility* visibility = nullptr);
+
+// The per-vertex rungs at a pixel (iwasaki_vertex.frag): SG k's radiance at the triangle's three
+// vertices (vertex_sgs[i][k], from iwasaki_sg_radiance or a broad lobe's quadrature) blended with
+// the pixel's barycentrics, times facet_horizon_factor at the interpolated shading normal and the
+// triangle's normal (both facing ω_o), summed over k. An SG with broad_slots[k] ≥ 0 (the broad
+// lobes' quadrature, whose mask bits hold the horizon) is blended alone; empty broad_slots: none.
+dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
+                                  const std::array<std::span<const dvec3>, 3>& vertex_sgs, const dvec3& bary,
+                                  const dvec3& shading_normal, const dvec3& facet_normal);
 
 }  // namespace weft

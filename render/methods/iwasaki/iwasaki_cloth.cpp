@@ -43,10 +43,11 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 IwasakiShaders iwasaki_shaders() {
   IwasakiShaders s;
   s.pixel_vs = {"iwasaki.vert"};
-  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki.frag"};
-  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
+  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl", "iwasaki.frag"};
+  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
   s.vertex_vs = {"iwasaki_vertex.vert"};
-  s.vertex_fs = {"iwasaki_vertex.frag"};
+  s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "iwasaki_vertex.frag"};
+  s.facet_per_sg = true;
   return s;
 }
 
@@ -79,10 +80,12 @@ struct IwasakiCloth::Object {
 
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation, IwasakiShaders shaders)
     : data_(std::move(data)), evaluation_(evaluation), shaders_(std::move(shaders)), program_(make_program(evaluation, shaders_)) {
-  if (evaluation_ == Evaluation::per_vertex)
-    draw_program_ = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs), program_source(shaders_.vertex_fs));
-  else if (shaders_.broad_lobe_quadrature)
+  if (evaluation_ == Evaluation::per_vertex) {
+    if (!shaders_.facet_per_sg)  // else facet_draw(), built for the SGs drawn
+      draw_program_ = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs), program_source(shaders_.vertex_fs));
+  } else if (shaders_.broad_lobe_quadrature) {
     broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
+  }
   if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
@@ -160,6 +163,27 @@ void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVi
   o.sg_visibility->upload(values);
   if (o.broad_mask) o.broad_bits->upload(values.broad);
   o.computed_for = drawn;
+}
+
+const GlProgram& IwasakiCloth::facet_draw(int sgs) {
+  const int groups = std::max(1, (sgs + 3) / 4);
+  auto it = facet_draws_.find(groups);
+  if (it != facet_draws_.end()) return *it->second;
+  // Three vec4 per group, the position and the normal: what the vertex stage hands the fragment
+  // stage, each vec3 counted as a whole vec4 in case the GL does not pack them.
+  GLint out = 0, in = 0;
+  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
+  const int needed = 12 * groups + 8, limit = std::min(out, in);
+  if (needed > limit)
+    throw GpuError("per-vertex iwasaki: " + std::to_string(sgs) + " SGs need " + std::to_string(needed) +
+                   " varying components per vertex (each SG's radiance, cut per pixel by the facet's plane), more than "
+                   "this GL's " + std::to_string(limit) + " (GL_MAX_VERTEX_OUTPUT_COMPONENTS " + std::to_string(out) +
+                   ", GL_MAX_FRAGMENT_INPUT_COMPONENTS " + std::to_string(in) + "): fit fewer SGs");
+  const std::string defines = "#define SG_GROUPS " + std::to_string(groups) + "\n";
+  auto program = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs, defines),
+                                             program_source(shaders_.vertex_fs, defines));
+  return *facet_draws_.emplace(groups, std::move(program)).first->second;
 }
 
 bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->visibility != nullptr; }
@@ -251,10 +275,27 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     return;
   }
   glUniform1i(program_.uniform("u_pass_narrow"), 1);
-  o.pass->run(program_, 4);
-  draw_program_->use();
-  glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-  o.pass->bind_result(*draw_program_, 0);
+  if (!shaders_.facet_per_sg) {
+    o.pass->run(program_, 4);
+    draw_program_->use();
+    glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+    o.pass->bind_result(*draw_program_, 0);
+    o.mesh.draw();
+    return;
+  }
+  // One block of the pass per SG; the draw sums them, each cut by the facet's plane.
+  o.pass->run(program_, 4, count);
+  const GlProgram& d = facet_draw(count);
+  d.use();
+  glUniformMatrix4fv(d.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform3f(d.uniform("u_eye"), eye.x, eye.y, eye.z);
+  glUniform1i(d.uniform("u_sg_count"), count);
+  if (count > 0) {
+    glUniform3fv(d.uniform("u_sg_axis"), count, axes.data());
+    glUniform1fv(d.uniform("u_sg_sharpness"), count, sharpness.data());
+    glUniform1iv(d.uniform("u_sg_broad"), count, broad.data());
+  }
+  o.pass->bind_result(d, 0);
   o.mesh.draw();
 }
 

@@ -5,7 +5,8 @@
 // (and, per pixel, a de-indexed mesh), κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
 // cannot be shown (GpuError naming it). Evaluated per pixel (method `iwasaki`) or per vertex and
 // interpolated (`iwasaki_vertex`: same function, iwasaki.glsl, in a fragment pass with one texel
-// per vertex, vertex_pass.h). With broad-lobe quadrature (`iwasaki_quadrature`,
+// per vertex and SG, vertex_pass.h; the draw cuts each SG's interpolated radiance by the facet's
+// plane, as the per-pixel rungs do). With broad-lobe quadrature (`iwasaki_quadrature`,
 // `iwasaki_vertex_quadrature`) the broad SGs are shaded in that pass instead, by
 // broad_lobe_quadrature.glsl, and added per vertex or blended into the per-pixel iwasaki.
 #include <functional>
@@ -50,6 +51,10 @@ struct IwasakiShaders {
   // computes the broad part (plus, per vertex, iwasaki's); per pixel, pixel_fs adds the pass's
   // results blended over the triangle's vertices.
   bool broad_lobe_quadrature = false;
+  // Per vertex: the pass writes each SG's radiance in its own block of rows, and the draw
+  // (vertex_vs, vertex_fs, built with SG_GROUPS = ⌈SGs/4⌉) cuts each by the facet's plane
+  // (iwasaki_vertex.vert and .frag); false: one value per vertex, the draw interpolates it.
+  bool facet_per_sg = false;
 };
 IwasakiShaders iwasaki_shaders();
 IwasakiShaders iwasaki_quadrature_shaders();
@@ -81,6 +86,8 @@ private:
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
   std::unique_ptr<GlProgram> broad_pass_;    // per pixel with broad-lobe quadrature: the vertex pass
   std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
+  std::map<int, std::unique_ptr<GlProgram>> facet_draws_;  // IwasakiShaders::facet_per_sg: the draw per SG_GROUPS
+  const GlProgram& facet_draw(int sgs);
   std::unique_ptr<KappaTexture> kappa_;
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;

@@ -9,7 +9,7 @@
 namespace weft::methods {
 
 namespace {
-const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "iwasaki.glsl"};
+const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl"};
 
 enum class Masks { none, open_share, broad_lobe_quadrature };
 

@@ -36,14 +36,25 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
   upload(position_, mesh.positions, width_, height_);
   upload(normal_, mesh.normals, width_, height_);
   upload(warp_, mesh.warps, width_, height_);
-  target_ = std::make_unique<OffscreenTarget>(width_, height_, /*full_float=*/true);
   check_gl("uploading the per-vertex pass inputs");
 }
 
-void VertexPass::run(const GlProgram& program, int first_unit) const {
+void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
+  // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_VIEWPORT, viewport);
+  blocks = std::max(blocks, 1);
+  if (blocks > target_blocks_) {  // the target grows to the most blocks asked for
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (long(height_) * blocks > max_size)
+      throw GpuError("per-vertex pass: " + std::to_string(blocks) + " values per vertex for " + std::to_string(count_) +
+                     " vertices need " + std::to_string(long(height_) * blocks) + " rows, more than the GL's " +
+                     std::to_string(max_size));
+    target_ = std::make_unique<OffscreenTarget>(width_, height_ * blocks, /*full_float=*/true);
+    target_blocks_ = blocks;
+  }
   const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
   const GlTexture* inputs[3] = {&position_, &normal_, &warp_};
   const char* names[3] = {"u_vertex_position", "u_vertex_normal", "u_vertex_warp"};
@@ -53,8 +64,10 @@ void VertexPass::run(const GlProgram& program, int first_unit) const {
     glUniform1i(program.uniform(names[i]), first_unit + i);
   }
   glUniform1i(program.uniform("u_vertex_width"), width_);
+  glUniform1i(program.uniform("u_vertex_rows"), height_);
   glUniform1i(program.uniform("u_vertex_count"), count_);
   target_->bind();
+  glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -69,6 +82,7 @@ void VertexPass::bind_result(const GlProgram& program, int unit) const {
   glBindTexture(GL_TEXTURE_2D, target_->colour_texture());
   glUniform1i(program.uniform("u_vertex_radiance"), unit);
   glUniform1i(program.uniform("u_vertex_width"), width_);
+  glUniform1i(program.uniform("u_vertex_rows"), height_);
 }
 
 }  // namespace weft::gpu

@@ -11,7 +11,7 @@ namespace weft::methods {
 
 namespace {
 const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl",
-                                             "iwasaki.glsl", "thin.glsl", "sheer.glsl"};
+                                             "facet_horizon.glsl", "iwasaki.glsl", "thin.glsl", "sheer.glsl"};
 
 std::vector<std::string_view> with(std::string_view main) {
   std::vector<std::string_view> parts = kGlsl;
