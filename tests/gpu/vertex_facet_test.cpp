@@ -28,6 +28,7 @@
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
+#include "support/facet_share.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
 
@@ -41,22 +42,6 @@ constexpr double kLean = 8.0;  // degrees between the vertex normals and the qua
 dvec3 towards_minus_y(double elevation) {
   const double e = glm::radians(elevation);
   return dvec3(0.0, -std::cos(e), std::sin(e));
-}
-
-// Σ over cells above both planes / Σ above the shading plane (cells of equal G-mass).
-double share_by_quadrature(const SphericalGaussian& g, const dvec3& ns, const dvec3& ng) {
-  const SgWarpedGrid grid(g.axis, g.sharpness, 512);
-  long both = 0, shading = 0;
-  for (int i = 0; i < grid.polar(); ++i) {
-    const double c = grid.polar_cosine(i);
-    for (int j = 0; j < grid.azimuthal(); ++j) {
-      const dvec3 w = grid.direction(c, j);
-      if (glm::dot(w, ns) <= 0.0) continue;
-      ++shading;
-      if (glm::dot(w, ng) > 0.0) ++both;
-    }
-  }
-  return shading ? double(both) / double(shading) : 1.0;
 }
 
 Scene leaning_quad(const std::string& fabric) {
@@ -111,9 +96,9 @@ TEST(VertexFacet, PerVertexSgsAreCutByTheFacetsPlane) {
   const ClothBsdf bsdf(fabric, tables.tangent_samples);
   const TriangleMesh& mesh = scene.objects[0].mesh;
   const dvec3 facet(0, 0, 1), ns = mesh.normals[0];
-  const double share = share_by_quadrature(low, ns, facet);
+  const double share = test::facet_share_by_quadrature(low, ns, facet);
   ASSERT_LT(share, 0.5) << "the facet should block most of the low SG";
-  ASSERT_GT(share_by_quadrature(low, ns, ns), 0.99) << "the shading plane should let the low SG through";
+  ASSERT_GT(test::facet_share_by_quadrature(low, ns, ns), 0.99) << "the shading plane should let the low SG through";
 
   const RayScene rays(scene);
   int compared = 0;

@@ -10,6 +10,7 @@
 
 #include "core/spherical_gaussian.h"
 #include "methods/iwasaki/iwasaki.h"
+#include "support/facet_share.h"
 #include "support/sky_direction.h"
 
 using namespace weft;
@@ -21,22 +22,6 @@ namespace {
 // shading horizon: min() keeps the part the facet cuts off on one side, 1–4 %); where one plane
 // cuts the lobe, within 0.001.
 constexpr double kFacetBound = 0.06;
-
-// Σ over cells above both planes / Σ above the shading plane (cells of equal G-mass).
-double share_by_quadrature(const SphericalGaussian& g, const dvec3& ns, const dvec3& ng) {
-  const SgWarpedGrid grid(g.axis, g.sharpness, 512);
-  long both = 0, shading = 0;
-  for (int i = 0; i < grid.polar(); ++i) {
-    const double c = grid.polar_cosine(i);
-    for (int j = 0; j < grid.azimuthal(); ++j) {
-      const dvec3 w = grid.direction(c, j);
-      if (glm::dot(w, ns) <= 0.0) continue;
-      ++shading;
-      if (glm::dot(w, ng) > 0.0) ++both;
-    }
-  }
-  return shading ? double(both) / double(shading) : 1.0;
-}
 
 }  // namespace
 
@@ -51,7 +36,7 @@ TEST(FacetHorizon, ShareAboveBothPlanesMatchesQuadrature) {
       for (double azimuth : {-90.0, 0.0, 90.0, 150.0})
         for (double elevation : {-1.0, 0.0, 1.0, 3.0, 6.0, 12.0, 30.0}) {
           const SphericalGaussian g{at_elevation(azimuth, elevation), lambda, dvec3(1.0)};
-          const double exact = share_by_quadrature(g, ns, ng);
+          const double exact = test::facet_share_by_quadrature(g, ns, ng);
           const double got = facet_horizon_factor(g, ns, ng);
           EXPECT_LE(got, 1.0);
           if (exact < 0.99) ++cut;

@@ -33,6 +33,7 @@
 #include "reference/scene_render.h"
 #include "scene/scene.h"
 #include "support/ray_pixels.h"
+#include "support/scene_case.h"
 
 using namespace weft;
 
@@ -78,12 +79,7 @@ TEST(Study, GrazingSharpLobeOnScene) {
   const std::string out_dir = env_or("WEFT_STUDY_OUT", "");
 
   Scene scene = load_scene_named(scene_name, WEFT_SOURCE_ASSETS, fabric_name);
-  std::map<std::string, Fabric> fabrics;
-  for (auto& o : scene.objects)
-    if (o.material == Material::cloth) {
-      o.fabric = fabric_name;
-      fabrics.try_emplace(fabric_name, load_fabric_preset(fabric_name, WEFT_SOURCE_ASSETS "/fabrics"));
-    }
+  const std::map<std::string, Fabric> fabrics = test::dress_cloth(scene, fabric_name);
   const Fabric& fabric = fabrics.at(fabric_name);
   SgFitOptions fit;
   fit.count = 10;

@@ -45,6 +45,7 @@
 #include "reference/sg_quadrature.h"
 #include "scene/scene.h"
 #include "support/ray_pixels.h"
+#include "support/scene_case.h"
 
 using namespace weft;
 
@@ -142,12 +143,7 @@ struct Study {
 
   void run(const std::string& scene_name, const std::string& fabric_name, const std::string& env) {
     Scene scene = load_scene_named(scene_name, WEFT_SOURCE_ASSETS, fabric_name);
-    std::map<std::string, Fabric> fabrics;
-    for (auto& o : scene.objects)
-      if (o.material == Material::cloth) {
-        o.fabric = fabric_name;
-        fabrics.try_emplace(fabric_name, load_fabric_preset(fabric_name, WEFT_SOURCE_ASSETS "/fabrics"));
-      }
+    std::map<std::string, Fabric> fabrics = test::dress_cloth(scene, fabric_name);
     const IwasakiBundleData data = bundle_for(scene, fabrics, tables_by_fabric);
     SgFitOptions fit;
     fit.count = 10;

@@ -19,6 +19,17 @@ struct SceneCase {
   SgLighting sgs;
 };
 
+// Every cloth object of `scene` in the preset `fabric`; the preset by name, as the bake reads it.
+inline std::map<std::string, Fabric> dress_cloth(Scene& scene, const std::string& fabric) {
+  std::map<std::string, Fabric> fabrics;
+  for (auto& o : scene.objects)
+    if (o.material == Material::cloth) {
+      o.fabric = fabric;
+      fabrics.try_emplace(fabric, load_fabric_preset(fabric, WEFT_SOURCE_ASSETS "/fabrics"));
+    }
+  return fabrics;
+}
+
 inline SceneCase scene_in_fabric(const std::string& scene_name, const std::string& fabric) {
   SceneCase c;
   c.scene = load_scene_named(scene_name, WEFT_SOURCE_ASSETS, fabric);
