@@ -7,17 +7,10 @@
 
 namespace weft::gpu {
 
-namespace {
-std::string shader_source(const std::vector<std::string_view>& parts, const std::string& defines) {
+std::string program_source(const std::vector<std::string_view>& parts, const std::string& defines) {
   std::string s = shader_preamble() + defines;
   for (auto p : parts) s += shaders::source(p);
   return s;
-}
-}  // namespace
-
-std::string program_source(const std::vector<std::string_view>& parts) { return shader_source(parts, ""); }
-std::string program_source(const std::vector<std::string_view>& parts, const std::string& defines) {
-  return shader_source(parts, defines);
 }
 
 std::vector<std::string_view> with_main(std::vector<std::string_view> parts, std::string_view main) {
@@ -26,7 +19,7 @@ std::vector<std::string_view> with_main(std::vector<std::string_view> parts, std
 }
 
 ProgramCloth::ProgramCloth(const std::vector<std::string_view>& fragment, const std::string& defines)
-    : program_(program_source({"scene.vert"}), shader_source(fragment, defines)) {}
+    : program_(program_source({"scene.vert"}), program_source(fragment, defines)) {}
 
 size_t ProgramCloth::add_mesh(const TriangleMesh& mesh) {
   meshes_.emplace_back(mesh);

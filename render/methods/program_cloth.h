@@ -30,10 +30,8 @@ private:
   std::vector<GpuMesh> meshes_;
 };
 
-// The shader preamble, then each embedded part in order.
-std::string program_source(const std::vector<std::string_view>& parts);
-// The same with `defines` (#define lines) between the preamble and the parts.
-std::string program_source(const std::vector<std::string_view>& parts, const std::string& defines);
+// The shader preamble, `defines` (#define lines), then each embedded part in order.
+std::string program_source(const std::vector<std::string_view>& parts, const std::string& defines = "");
 // `parts` followed by the method's main (a .frag).
 std::vector<std::string_view> with_main(std::vector<std::string_view> parts, std::string_view main);
 
