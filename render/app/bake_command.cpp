@@ -25,7 +25,7 @@ namespace {
 struct BakeArgs {
   std::string scene, fabric, sgs_file, out;
   int fit_sgs = 0;
-  bool only_scene_fabrics = false, no_tables = false, masks = false;
+  bool only_scene_fabrics = false, no_tables = false, no_masks = false;
   int sdf_resolution = 128;  // the paper's
   // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
@@ -81,7 +81,7 @@ int run_bake(const BakeArgs& a) {
   if (!a.no_tables) {
     progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
-    opt.progress = open_progress_bar, opt.mask_resolution = a.masks ? kMaskResolution : 0;
+    opt.progress = open_progress_bar, opt.mask_resolution = a.no_masks ? 0 : kMaskResolution;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.select.grid, opt.lambda_levels = a.lambda_levels;
     if (!a.samples.empty()) {
@@ -134,7 +134,7 @@ CommandAction add_bake_command(CLI::App& app) {
   auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
-  sub->add_flag("--masks", a->masks, "Per-vertex visibility masks for iwasaki_mask / iwasaki_vertex_mask / iwasaki_quadrature / iwasaki_vertex_quadrature (512 B per occluded cloth vertex)")->excludes(no_tables)->excludes(target);
+  sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, iwasaki_quadrature, iwasaki_vertex_quadrature), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();

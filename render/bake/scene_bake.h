@@ -32,7 +32,7 @@ struct IwasakiBakeOptions {
   SceneVisibilityOptions visibility;
   // > 0: occluded cloth objects also get a per-vertex visibility mask of this many cells per side
   // (runtime/visibility_mask.h; kMaskResolution: cells of ≈ 2.2°, 512 B per vertex), which only the
-  // mask methods read (iwasaki_mask, iwasaki_vertex_mask); 0: none, the bundle stays small.
+  // mask and quadrature methods read; 0: none, the bundle stays small.
   int mask_resolution = 0;
   bool quiet = false;         // no progress or summary
   StageProgress progress;     // none: no progress shown

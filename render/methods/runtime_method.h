@@ -46,7 +46,7 @@ struct RuntimeMethod {
   // The cloth shows what lies behind it: drawn last, blended dst·α + src, over the SG environment.
   bool see_through = false;
   Seed000Tables seed000 = Seed000Tables::unused;
-  // Reads the bundle's per-vertex visibility masks (baked only on request: `weft bake --masks`).
+  // Reads the bundle's per-vertex visibility masks (`weft bake` writes them unless `--no-masks`).
   bool visibility_masks = false;
   BenchReference reference = BenchReference::opaque;
   std::set<std::string> bench_scenes;  // the scenes the bench runs it on; empty: every scene

@@ -1,7 +1,8 @@
 #!/bin/bash
-# `weft bake` with seed 000's tables (small grids), then `weft run` picks iwasaki_vertex from the
-# bundle (auto) or iwasaki (asked) and shows a first frame, and `weft render --method iwasaki
-# --bundle` writes an image.
+# `weft bake` with seed 000's tables (small grids), then `weft run` picks iwasaki_vertex_quadrature
+# from the bundle (auto: the bake's default masks cover the occluded pillow), iwasaki_vertex from a
+# bundle baked --no-masks, or iwasaki (asked) and shows a first frame, and `weft render --method
+# iwasaki --bundle` writes an image.
 set -eu
 weft=$1
 dir=$(mktemp -d)
@@ -11,8 +12,15 @@ grep -q "PCA" "$dir/bake.log" || { cat "$dir/bake.log"; echo "no visibility bake
 grep -q "bundle .* MB" "$dir/bake.log" || { cat "$dir/bake.log"; exit 1; }
 "$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
   --size 48 36 --screenshot "$dir/shot.png" 2> "$dir/run.log"
-grep -q "first frame after .* iwasaki_vertex)" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki_vertex"; exit 1; }
+grep -q "first frame after .* iwasaki_vertex_quadrature)" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki_vertex_quadrature"; exit 1; }
 test -s "$dir/shot.png"
+grep -q "visibility mask" "$dir/bake.log" || { cat "$dir/bake.log"; echo "the default bake wrote no visibility mask"; exit 1; }
+"$weft" bake --scene pillow --fabric linen_plain --grid 8 --samples 1 1 --sdf-resolution 8 --no-masks --out "$dir/n.weft" 2> "$dir/bake_n.log"
+! grep -q "visibility mask" "$dir/bake_n.log" || { cat "$dir/bake_n.log"; echo "--no-masks baked a mask"; exit 1; }
+[ "$(stat -c %s "$dir/n.weft")" -lt "$(stat -c %s "$dir/p.weft")" ] || { echo "--no-masks: the bundle is not smaller"; exit 1; }
+"$weft" run --bundle "$dir/n.weft" --state-dir "$dir/state_n" --display headless --panel none --frames 2 --turntable 0 \
+  --size 48 36 2> "$dir/run_n.log"
+grep -q "first frame after .* iwasaki_vertex)" "$dir/run_n.log" || { cat "$dir/run_n.log"; echo "weft run on a --no-masks bundle did not use iwasaki_vertex"; exit 1; }
 "$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
   --size 48 36 --method iwasaki 2> "$dir/run_pixel.log"
 grep -q "first frame after .* iwasaki)" "$dir/run_pixel.log" || { cat "$dir/run_pixel.log"; echo "weft run --method iwasaki did not use it"; exit 1; }

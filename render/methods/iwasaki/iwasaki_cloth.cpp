@@ -128,7 +128,7 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
       if (m == data_->masks.end() || m->second.vertex_count() != mesh.positions.size())
         throw GpuError(std::string("method ") + (per_vertex ? "iwasaki_vertex_mask" : "iwasaki_mask") +
                        ": the bundle has no visibility mask for object " +
-                       std::to_string(scene_index) + " (bake it again with `weft bake --masks`)");
+                       std::to_string(scene_index) + " (bake it again without `weft bake --no-masks`)");
       o->mask = &m->second;
     }
     o->source = &mesh;
