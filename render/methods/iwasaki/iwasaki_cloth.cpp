@@ -40,11 +40,19 @@ bool same_lighting(const SgLighting& a, const SgLighting& b) {
 }
 }  // namespace
 
+const std::vector<std::string_view>& iwasaki_glsl() {
+  static const std::vector<std::string_view> parts = {"microcylinder.glsl", "erf.glsl",          "sg_lighting.glsl",
+                                                      "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl"};
+  return parts;
+}
+
 IwasakiShaders iwasaki_shaders() {
   IwasakiShaders s;
   s.pixel_vs = {"iwasaki.vert"};
-  s.pixel_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl", "iwasaki.frag"};
-  s.pass_fs = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl", "iwasaki_vertex_pass.frag"};
+  s.pixel_fs = iwasaki_glsl();
+  s.pixel_fs.push_back("iwasaki.frag");
+  s.pass_fs = iwasaki_glsl();
+  s.pass_fs.push_back("iwasaki_vertex_pass.frag");
   s.vertex_vs = {"iwasaki_vertex.vert"};
   s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "iwasaki_vertex.frag"};
   s.facet_per_sg = true;

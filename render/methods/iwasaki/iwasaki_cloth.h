@@ -56,6 +56,9 @@ struct IwasakiShaders {
   // (iwasaki_vertex.vert and .frag); false: one value per vertex, the draw interpolates it.
   bool facet_per_sg = false;
 };
+// Seed 000's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):
+// what every program on its data links before its own parts, and what the parity tests compile.
+const std::vector<std::string_view>& iwasaki_glsl();
 IwasakiShaders iwasaki_shaders();
 IwasakiShaders iwasaki_quadrature_shaders();
 

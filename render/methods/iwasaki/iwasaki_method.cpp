@@ -9,14 +9,12 @@
 namespace weft::methods {
 
 namespace {
-const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl"};
-
 enum class Masks { none, open_share, broad_lobe_quadrature };
 
 RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Masks masks = Masks::none) {
   RuntimeMethod m;
   m.seed000 = Seed000Tables::required;
-  m.glsl = kGlsl;
+  m.glsl = gpu::iwasaki_glsl();
   m.make_gpu = [evaluation, masks](const gpu::ClothMethodSetup& s) {
     gpu::IwasakiShaders shaders =
         masks == Masks::broad_lobe_quadrature ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();

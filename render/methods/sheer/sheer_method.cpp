@@ -10,11 +10,15 @@
 namespace weft::methods {
 
 namespace {
-const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "erf.glsl", "sg_lighting.glsl", "hemisphere_grid.glsl",
-                                             "facet_horizon.glsl", "iwasaki.glsl", "thin.glsl", "sheer.glsl"};
+// Seed 000's parts, then the layer's.
+std::vector<std::string_view> sheer_glsl() {
+  std::vector<std::string_view> parts = gpu::iwasaki_glsl();
+  parts.insert(parts.end(), {"thin.glsl", "sheer.glsl"});
+  return parts;
+}
 
 std::vector<std::string_view> with(std::string_view main) {
-  std::vector<std::string_view> parts = kGlsl;
+  std::vector<std::string_view> parts = sheer_glsl();
   parts.push_back(main);
   return parts;
 }
@@ -43,7 +47,7 @@ RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
   m.seed000 = Seed000Tables::required;
   m.reference = BenchReference::thin_layer;
   m.bench_scenes = {"curtain"};
-  m.glsl = kGlsl;
+  m.glsl = sheer_glsl();
   m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) {
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, sheer_shaders());
   };
