@@ -74,8 +74,12 @@ struct Raster {
   }
 };
 
-const unsigned char kPalette[][3] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189},
-                                     {255, 127, 14}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
+// One colour per method for up to 16 methods (the ladder has 13), distinct side by side in the legend.
+const unsigned char kPalette[][3] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},   {148, 103, 189},
+                                     {255, 127, 14},  {140, 86, 75},  {227, 119, 194}, {23, 190, 207},
+                                     {188, 189, 34},  {0, 0, 128},    {128, 128, 128}, {174, 199, 232},
+                                     {152, 223, 138}, {255, 152, 150}, {128, 0, 0},    {255, 187, 120}};
+constexpr int kPaletteSize = int(sizeof kPalette / sizeof kPalette[0]);
 const unsigned char kBlack[3] = {0, 0, 0}, kGrid[3] = {220, 220, 220}, kFront[3] = {90, 90, 90};
 
 std::string decade_label(int e) {
@@ -139,7 +143,7 @@ void write_rgb8_png(const std::filesystem::path& file, int width, int height, co
 
 void write_chart_png(const std::filesystem::path& file, const std::vector<ChartPoint>& points,
                      const std::string& title) {
-  const int W = 900, H = 600, left = 90, right = 230, top = 50, bottom = 70;
+  const int W = 960, H = 600, left = 90, right = 290, top = 50, bottom = 70;
   Raster r(W, H);
   const auto markers = chart_markers(points);
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
@@ -171,7 +175,7 @@ void write_chart_png(const std::filesystem::path& file, const std::vector<ChartP
   r.text(8, top - 22, "REL. RMSE (LOG)", kBlack);
 
   std::map<std::string, int> colour;
-  for (const auto& m : markers) colour.emplace(m.method, int(colour.size()) % 8);
+  for (const auto& m : markers) colour.emplace(m.method, int(colour.size()) % kPaletteSize);
   for (const auto& p : points)
     if (p.ms > 0 && p.relative_rmse > 0 && colour.count(p.method)) r.disc(X(p.ms), Y(p.relative_rmse), 2.5, kPalette[colour[p.method]]);
   std::vector<ChartMarker> front;
