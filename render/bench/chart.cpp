@@ -74,7 +74,7 @@ struct Raster {
   }
 };
 
-// One colour per method for up to 16 methods (the ladder has 13), distinct side by side in the legend.
+// One colour per method for up to 16 methods, distinct side by side in the legend.
 const unsigned char kPalette[][3] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},   {148, 103, 189},
                                      {255, 127, 14},  {140, 86, 75},  {227, 119, 194}, {23, 190, 207},
                                      {188, 189, 34},  {0, 0, 128},    {128, 128, 128}, {174, 199, 232},

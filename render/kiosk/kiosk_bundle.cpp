@@ -46,7 +46,8 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
   const bool searched = bundle.baked_for == "iwasaki" || bundle.baked_for == "iwasaki_vertex";
   std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
   // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
-  // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded, take the quadrature rung.
+  // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
+  // take the quadrature rung.
   if (bundle.iwasaki) {
     bool masks_cover = true;
     for (const auto& [i, v] : bundle.iwasaki->visibility)
