@@ -364,10 +364,14 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
       mesh.warps = std::move(tangents);
       for (size_t v = 0; v < nv; ++v) {
         const glm::dvec3& n = mesh.normals[v];
-        glm::dvec3 w = mesh.warps[v] - glm::dot(mesh.warps[v], n) * n;
-        if (!(glm::length(w) > 1e-12))  // tangent along the normal: any tangent keeps the frame valid
+        const glm::dvec3 t = mesh.warps[v];
+        glm::dvec3 w = t - glm::dot(t, n) * n;
+        // A tangent (nearly) along the normal leaves too few digits after the projection for a
+        // frame: any tangent keeps it valid. Relative, so a long tangent is judged as a short one.
+        if (!(glm::length(w) > 1e-6 * glm::length(t)))
           w = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
-        mesh.warps[v] = glm::normalize(w);
+        w = glm::normalize(w);
+        mesh.warps[v] = glm::normalize(w - glm::dot(w, n) * n);  // again: the first pass's rounding
       }
     }
   } catch (const MeshError& e) {
