@@ -31,7 +31,7 @@ bool reads_seed000_tables(Method method);
 // The same by name; false for names that are no GPU method.
 bool uses_seed000_tables(const std::string& method_name);
 bool reads_seed000_tables(const std::string& method_name);
-// The bundle's per-vertex visibility masks (iwasaki_mask, iwasaki_vertex_mask); false for other names.
+// The bundle's per-vertex visibility masks (the *_mask and *_quadrature rungs); false for other names.
 bool reads_visibility_masks(const std::string& method_name);
 
 // What is drawn behind the scene. `measure`: nothing (black) except behind see-through cloth,

@@ -14,20 +14,13 @@
 namespace weft::methods {
 
 const std::vector<RuntimeMethod>& registry() {
-  static const std::vector<RuntimeMethod> methods = {
-      sgpoint_method(),
-      sheen_method(),
-      mdfrot_method(),
-      thin_method(),
-      mizutani_method(),
-      iwasaki_method(),
-      iwasaki_mask_method(),
-      iwasaki_quadrature_method(),
-      iwasaki_vertex_method(),
-      iwasaki_vertex_mask_method(),
-      iwasaki_vertex_quadrature_method(),
-      sheer_method(), sheer_vertex_method(),
-  };
+  static const std::vector<RuntimeMethod> methods = [] {
+    std::vector<RuntimeMethod> m = {sgpoint_method(), sheen_method(), mdfrot_method(), thin_method(), mizutani_method()};
+    for (auto& rung : iwasaki_methods()) m.push_back(std::move(rung));
+    m.push_back(sheer_method());
+    m.push_back(sheer_vertex_method());
+    return m;
+  }();
   return methods;
 }
 

@@ -11,7 +11,8 @@
 // iwasaki_mask per pixel, the three vertices' V_k blended with the barycentrics.
 // iwasaki_vertex_quadrature and iwasaki_quadrature: the broad SGs (λ < λ_b) by the quadrature of
 // broad_lobe_quadrature.cpp at the triangle's vertices, with each cell's bit from the vertex's
-// mask, blended with the barycentrics; iwasaki (SDF) over the others, per vertex or per pixel.
+// mask, blended with the barycentrics; iwasaki (SDF) over the others, per vertex or per pixel;
+// iwasaki_mask_quadrature and iwasaki_vertex_mask_quadrature the same with the masks' V_k over the others.
 // Each SG is also cut by the triangle's own plane (facet_horizon_factor: the GPU takes the facet
 // normal from the position's screen derivatives, the C++ side from the triangle): per pixel inside
 // iwasaki, per vertex after blending each SG's radiance at the three vertices
@@ -75,7 +76,7 @@ class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, gpu::Method method) {
   const bool per_vertex = method.name.starts_with("iwasaki_vertex");
-  const bool masks = method.name == "iwasaki_mask" || method.name == "iwasaki_vertex_mask";
+  const bool masks = method.name.find("_mask") != std::string::npos;
   const bool quadrature = method.name.ends_with("quadrature");
   Scene scene = load_scene_preset(c.scene, WEFT_SOURCE_ASSETS "/scenes");
   const Fabric fabric = load_fabric_preset(c.fabric, WEFT_SOURCE_ASSETS "/fabrics");
@@ -264,6 +265,12 @@ TEST_P(IwasakiParity, PerVertexQuadratureGlslMatchesCpp) {
   check_parity(GetParam(), methods::method("iwasaki_vertex_quadrature"));
 }
 TEST_P(IwasakiParity, PerPixelQuadratureGlslMatchesCpp) { check_parity(GetParam(), methods::method("iwasaki_quadrature")); }
+TEST_P(IwasakiParity, PerVertexMaskQuadratureGlslMatchesCpp) {
+  check_parity(GetParam(), methods::method("iwasaki_vertex_mask_quadrature"));
+}
+TEST_P(IwasakiParity, PerPixelMaskQuadratureGlslMatchesCpp) {
+  check_parity(GetParam(), methods::method("iwasaki_mask_quadrature"));
+}
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,
                          ::testing::Values(Case{"swatch", "silk_shot", false}, Case{"pillow", "linen_plain", true},

@@ -134,8 +134,8 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
     if (shaders_.open_share_masks) {
       const auto m = data_->masks.find(scene_index);
       if (m == data_->masks.end() || m->second.vertex_count() != mesh.positions.size())
-        throw GpuError(std::string("method ") + (per_vertex ? "iwasaki_vertex_mask" : "iwasaki_mask") +
-                       ": the bundle has no visibility mask for object " +
+        throw GpuError("a method with the masks' visibility (iwasaki_mask, iwasaki_vertex_mask, *_mask_quadrature): "
+                       "the bundle has no visibility mask for object " +
                        std::to_string(scene_index) + " (bake it again without `weft bake --no-masks`)");
       o->mask = &m->second;
     }
@@ -154,8 +154,8 @@ std::optional<SgVisibility> IwasakiCloth::prepare_lighting(size_t handle, const 
 }
 
 SgVisibility IwasakiCloth::values_for(const Object& o, const SgLighting& drawn) const {
-  if (o.mask) return SgVisibility::from_mask(*o.mask, *o.source, drawn);
-  SgVisibility out = SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon);
+  SgVisibility out = o.mask ? SgVisibility::from_mask(*o.mask, *o.source, drawn)
+                            : SgVisibility::compute(*o.visibility, *o.source, drawn, shaders_.sdf_above_horizon);
   if (o.broad_mask) out.broad = BroadLobeBits::compute(*o.broad_mask, *o.source, drawn);
   return out;
 }

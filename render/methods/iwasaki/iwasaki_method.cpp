@@ -9,69 +9,43 @@
 namespace weft::methods {
 
 namespace {
-enum class Masks { none, open_share, broad_lobe_quadrature };
+// What a rung reads from the bundle's visibility masks (iwasaki_method.h).
+struct MaskUse {
+  const char* suffix;
+  bool open_share, quadrature;
+};
+constexpr MaskUse kMaskUses[] = {
+    {"", false, false}, {"_mask", true, false}, {"_quadrature", false, true}, {"_mask_quadrature", true, true}};
 
-RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Masks masks = Masks::none) {
+RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, MaskUse masks) {
+  const bool per_vertex = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex;
   RuntimeMethod m;
+  m.name = std::string(per_vertex ? "iwasaki_vertex" : "iwasaki") + masks.suffix;
+  m.ladder_position = per_vertex ? 1 : 0;
   m.seed000 = Seed000Tables::required;
   m.glsl = gpu::iwasaki_glsl();
   m.make_gpu = [evaluation, masks](const gpu::ClothMethodSetup& s) {
-    gpu::IwasakiShaders shaders =
-        masks == Masks::broad_lobe_quadrature ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();
-    shaders.open_share_masks = masks == Masks::open_share;
+    gpu::IwasakiShaders shaders = masks.quadrature ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();
+    shaders.open_share_masks = masks.open_share;
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, shaders);
   };
-  m.visibility_masks = masks != Masks::none;
+  m.visibility_masks = masks.open_share || masks.quadrature;
   return m;
 }
 }  // namespace
 
-RuntimeMethod iwasaki_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel);
-  m.name = "iwasaki";
-  m.ladder_position = 0;
-  m.stability_position = 0;
-  m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
-              const TableSource& tables) {
+std::vector<RuntimeMethod> iwasaki_methods() {
+  std::vector<RuntimeMethod> out;
+  for (const auto evaluation : {gpu::IwasakiCloth::Evaluation::per_pixel, gpu::IwasakiCloth::Evaluation::per_vertex})
+    for (const MaskUse& masks : kMaskUses) out.push_back(seed000_method(evaluation, masks));
+  // iwasaki's C++ evaluation (without visibility) stands for the family in the stability table.
+  out.front().stability_position = 0;
+  out.front().cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                       const TableSource& tables) {
     const TableBsdf t = stress_table_bsdf(b.fabric(), tables);
     return CpuShade{iwasaki_radiance(t.bsdf, *t.tables, facing(f, wo), wo, sgs).radiance, 0.0};
   };
-  return m;
-}
-
-RuntimeMethod iwasaki_mask_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, Masks::open_share);
-  m.name = "iwasaki_mask";
-  m.ladder_position = 0;
-  return m;
-}
-
-RuntimeMethod iwasaki_vertex_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex);
-  m.name = "iwasaki_vertex";
-  m.ladder_position = 1;
-  return m;
-}
-
-RuntimeMethod iwasaki_vertex_mask_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, Masks::open_share);
-  m.name = "iwasaki_vertex_mask";
-  m.ladder_position = 1;
-  return m;
-}
-
-RuntimeMethod iwasaki_quadrature_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_pixel, Masks::broad_lobe_quadrature);
-  m.name = "iwasaki_quadrature";
-  m.ladder_position = 0;
-  return m;
-}
-
-RuntimeMethod iwasaki_vertex_quadrature_method() {
-  RuntimeMethod m = seed000_method(gpu::IwasakiCloth::Evaluation::per_vertex, Masks::broad_lobe_quadrature);
-  m.name = "iwasaki_vertex_quadrature";
-  m.ladder_position = 1;
-  return m;
+  return out;
 }
 
 }  // namespace weft::methods

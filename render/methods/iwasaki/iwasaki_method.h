@@ -1,23 +1,23 @@
 #pragma once
-// Registry entries of seed 000's method: `iwasaki` (per pixel) and `iwasaki_vertex` (per vertex,
-// radiance interpolated: same tables, a fraction of the cost). Both draw from a bundle's seed
-// 000 tables (iwasaki_cloth.h) and share one C++ twin (iwasaki.h); the bench's C++ evaluation
-// is iwasaki's, without visibility, on small tables baked in memory.
+// Registry entries of seed 000's method, drawn from a bundle's seed 000 tables (iwasaki_cloth.h)
+// and sharing one C++ twin (iwasaki.h); the bench's C++ evaluation is iwasaki's, without
+// visibility, on small tables baked in memory. Eight rungs: evaluated per pixel (`iwasaki`) or
+// per vertex and interpolated (`iwasaki_vertex`: same tables, a fraction of the cost), each with
+// what it reads from the bundle's visibility masks:
+//  - nothing: the SDF's linearised H per SG (the paper's visibility);
+//  - `_mask`: each SG's exact visible share V_k per vertex (SgVisibility::from_mask), blended
+//    over the triangle's vertices per pixel, in place of the SDF;
+//  - `_quadrature`: the broad SGs (λ < kBroadLobeSharpness) by quadrature of the model per vertex,
+//    each cell's visibility from the masks (broad_lobe_quadrature.h); the SDF for the others;
+//  - `_mask_quadrature`: both, the broad SGs by quadrature and V_k for the others: exact
+//    visibility where the SDF's one linear boundary fails (thin occluders, crevices), but V_k is
+//    one number per vertex and SG, so a sharp lobe's shadow edge is interpolated across triangles
+//    where the SDF places it per pixel.
+#include <vector>
+
 #include "methods/runtime_method.h"
 
 namespace weft::methods {
-RuntimeMethod iwasaki_method();
-RuntimeMethod iwasaki_vertex_method();
-// iwasaki with each SG's exact visible share (V_k from the bundle's visibility masks, blended over
-// the triangle's vertices by barycentrics) in place of the SDF's linearised H.
-RuntimeMethod iwasaki_mask_method();
-// iwasaki_vertex with each SG's exact visible share per vertex (V_k from the bundle's visibility
-// masks, SgVisibility::from_mask) in place of the SDF's linearised H.
-RuntimeMethod iwasaki_vertex_mask_method();
-// iwasaki with the broad SGs (λ < kBroadLobeSharpness) shaded by quadrature of the model per vertex,
-// each cell's visibility from the bundle's masks (broad_lobe_quadrature.h), interpolated by
-// barycentrics; iwasaki per pixel (SDF visibility) over the others.
-RuntimeMethod iwasaki_quadrature_method();
-// The same per vertex: iwasaki_vertex over the sharper SGs plus the broad lobes' quadrature.
-RuntimeMethod iwasaki_vertex_quadrature_method();
+// In ladder order: the per-pixel rungs, then the per-vertex ones; `iwasaki` first.
+std::vector<RuntimeMethod> iwasaki_methods();
 }  // namespace weft::methods
