@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/progress_bar.h"
 #include "bake/bundle_fabrics.h"
+#include "bake/rung_choice.h"
 #include "bake/scene_bake.h"
 #include "bake/scene_bundle_writer.h"
 #include "bake/selection_bundle.h"
@@ -25,7 +26,7 @@ namespace {
 struct BakeArgs {
   std::string scene, fabric, sgs_file, out;
   int fit_sgs = 0;
-  bool only_scene_fabrics = false, no_tables = false, no_masks = false;
+  bool only_scene_fabrics = false, no_tables = false, no_masks = false, choose_rung = false;
   int sdf_resolution = 128;  // the paper's
   // The default bake's economies, measured harmless (render/bake/README.md, "The default bake"):
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
@@ -35,6 +36,27 @@ struct BakeArgs {
 };
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
+
+// --choose-rung: the per-vertex rung with the SDF's or the masks' visibility for the sharper SGs,
+// whichever is closer to the scene's views' reference (bake/rung_choice.h), recorded for
+// `weft run --method auto`. Returns the summary line's part.
+std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
+                            const SceneSelectionOptions& select) {
+  if (baked.masks.empty()) return "no occluded cloth: no rung to choose (the SDF and the masks agree on open cloth)";
+  const auto cache = select.cache.empty() ? default_reference_cache() : select.cache;
+  auto log = [](const std::string& line) { std::fprintf(stderr, "  choose rung: %s\n", line.c_str()); };
+  const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const IwasakiBundleData>(std::move(baked)),
+                                   kVertexRungCandidates, select.views, cache, log);
+  writer.add_json(kSelectionSection, rung_choice_json(c));
+  std::string line = "rung " + c.method + " (";
+  char buf[64];
+  for (const auto& m : c.measured) {
+    std::snprintf(buf, sizeof buf, "%.2f %%", 100.0 * m.error);
+    line += (line.back() == '(' ? "" : ", ") + m.method + " " + buf;
+  }
+  std::snprintf(buf, sizeof buf, " on %d views, %.1f s)", c.views, c.seconds);
+  return line + buf;
+}
 
 int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -93,11 +115,14 @@ int run_bake(const BakeArgs& a) {
     const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
     SceneSelectionOptions select = a.select;
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
+    IwasakiBundleData baked;
     try {
-      tables_line = search ? add_selected_bundle(writer, in, select, sg_map) : add_baked_sections(writer, in.scene, in.fabrics, opt);
+      tables_line = search ? add_selected_bundle(writer, in, select, sg_map)
+                           : add_baked_sections(writer, in.scene, in.fabrics, opt, a.choose_rung ? &baked : nullptr);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
+    if (a.choose_rung) tables_line += "; " + add_rung_choice(writer, in, std::move(baked), a.select);
   }
   progress(5, kSteps, "writing " + a.out);
   const auto bytes = writer.to_bytes();
@@ -134,7 +159,8 @@ CommandAction add_bake_command(CLI::App& app) {
   auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
-  sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, iwasaki_quadrature, iwasaki_vertex_quadrature), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
+  auto* no_masks = sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, the *_quadrature rungs), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
+  sub->add_flag("--choose-rung", a->choose_rung, "Measure the kiosk's per-vertex rung with the SDF's visibility and with the masks' (iwasaki_vertex_quadrature, iwasaki_vertex_mask_quadrature) on the scene's views against a reference (rendered once, cached: minutes) and record the closer for --method auto")->excludes(no_tables)->excludes(target)->excludes(no_masks);
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();

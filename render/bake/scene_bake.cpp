@@ -120,17 +120,19 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 }
 
 std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
-                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& opt) {
+                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& opt,
+                               IwasakiBundleData* baked) {
   std::map<std::string, Fabric> fabrics;
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth && !fabrics.count(o.fabric))
       fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
   IwasakiBakeReport report;
-  const IwasakiBundleData data = bake_iwasaki(scene, fabrics, opt, &report);
+  IwasakiBundleData data = bake_iwasaki(scene, fabrics, opt, &report);
   add_iwasaki_sections(writer, data);
   char buf[256];
   std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
                 data.tables.size(), report.tables_s, data.visibility.size(), report.visibility_s, report.kappa_s);
+  if (baked) *baked = std::move(data);
   return buf;
 }
 

@@ -49,7 +49,9 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 // `weft bake`'s seed 000 sections: bakes for the scene's cloth fabrics (parsed from the fabric
 // texts the bundle stores, preset → JSON) and adds the sections to `writer`. Returns the
 // summary line: "tables for N fabric(s) T s, visibility for M object(s) V s, kappa K s".
+// `baked`: also gets the data written (for measuring what the bundle will draw).
 std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
-                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& options);
+                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& options,
+                               IwasakiBundleData* baked = nullptr);
 
 }  // namespace weft

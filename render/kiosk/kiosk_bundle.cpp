@@ -7,6 +7,7 @@
 #include "core/input_hash.h"
 #include "gpu/scene_renderer.h"
 #include "kiosk/kiosk_config_error.h"
+#include "methods/registry.h"
 #include "scene/scene.h"
 
 namespace weft {
@@ -47,13 +48,19 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
   std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
   // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
   // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
-  // take the quadrature rung.
+  // take the quadrature rung, or the rung that reads the masks which `weft bake --choose-rung`
+  // measured closer to the scene's reference.
   if (bundle.iwasaki) {
     bool masks_cover = true;
     for (const auto& [i, v] : bundle.iwasaki->visibility)
       if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].material == Material::cloth)
         masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
-    if (masks_cover) opaque = opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
+    const methods::RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
+    if (masks_cover && chosen && chosen->visibility_masks && chosen->seed000 == methods::Seed000Tables::required &&
+        !chosen->see_through)
+      opaque = chosen->name;
+    else if (masks_cover)
+      opaque = opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
   }
   const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
                                                       : bundle.iwasaki ? (sheer ? "sheer_vertex" : opaque)

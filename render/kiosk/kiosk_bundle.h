@@ -20,7 +20,8 @@ struct KioskBundle {
   SceneBundle scene;
   std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or sgpoint asked for)
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
-  std::string baked_for;  // the method `weft bake --target-error` measured (bake/selection); empty: none
+  // The method `weft bake --target-error` or `--choose-rung` measured (bake/selection); empty: none.
+  std::string baked_for;
 };
 
 // The "method" a bake/selection section records; empty when the text has none or is not JSON
@@ -32,8 +33,10 @@ std::string selected_method(std::string_view selection_json);
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
 // The method for a bundle: --method, or for auto (when the bundle has seed 000 tables)
-// sheer_vertex if a cloth object is a sheer, else the per-pixel or per-vertex method the bake's
-// search chose (baked_for), else iwasaki_vertex; sgpoint without tables. Throws
+// sheer_vertex if a cloth object is a sheer, else the rung `weft bake --choose-rung` chose (baked_for)
+// when the bundle's masks cover the occluded cloth, else the quadrature rung of the per-pixel or
+// per-vertex method the bake's search chose (or iwasaki_vertex), or that method itself where masks
+// are missing; sgpoint without tables. Throws
 // KioskConfigError when the method needs tables the bundle lacks.
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file);

@@ -1,5 +1,5 @@
-// Which method `weft run --method auto` shows for a bundle: the bake's searched choice, a sheer,
-// or the per-vertex default; and the bake/selection text it reads that choice from.
+// Which method `weft run --method auto` shows for a bundle: the bake's searched or measured choice,
+// a sheer, or the per-vertex default; and the bake/selection text it reads that choice from.
 #include <gtest/gtest.h>
 
 #include "core/fabric.h"
@@ -54,6 +54,24 @@ TEST(KioskMethod, AutoTakesTheMethodTheBakeSearchChose) {
   EXPECT_EQ(kiosk_method("auto", b, "x.weft").name, "iwasaki_vertex");
   b.baked_for = "iwasaki";
   EXPECT_EQ(kiosk_method("sgpoint", b, "x.weft").name, "sgpoint");  // --method wins
+}
+
+TEST(KioskMethod, AutoTakesTheRungTheBakeChoseWhereMasksCoverTheOccludedCloth) {
+  KioskBundle masked = occluded_without_masks("linen_plain");
+  auto data = std::make_shared<IwasakiBundleData>(*masked.iwasaki);
+  data->masks.emplace(0, VisibilityMask{});
+  masked.iwasaki = data;
+  masked.baked_for = "iwasaki_vertex_mask_quadrature";  // weft bake --choose-rung
+  EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_vertex_mask_quadrature");
+  masked.baked_for = "iwasaki_mask_quadrature";
+  EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_mask_quadrature");
+  masked.baked_for = "sheer_vertex";  // reads no masks, see-through: not a rung choice
+  EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_vertex_quadrature");
+  // Without a mask for the occluded cloth the masks' rung cannot draw: the default without masks.
+  KioskBundle bare = occluded_without_masks("linen_plain");
+  bare.baked_for = "iwasaki_vertex_mask_quadrature";
+  EXPECT_EQ(kiosk_method("auto", bare, "x.weft").name, "iwasaki_vertex");
+  EXPECT_EQ(kiosk_method("iwasaki_vertex", masked, "x.weft").name, "iwasaki_vertex");  // --method wins
 }
 
 TEST(KioskMethod, ASheerOrNoTablesDecideBeforeTheSearchedChoice) {
