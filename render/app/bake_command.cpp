@@ -161,6 +161,11 @@ CommandAction add_bake_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 0.5));
   auto* no_masks = sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, the *_quadrature rungs), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
   sub->add_flag("--choose-rung", a->choose_rung, "Measure the kiosk's per-vertex rung with the SDF's visibility and with the masks' (iwasaki_vertex_quadrature, iwasaki_vertex_mask_quadrature) on the scene's views against a reference (rendered once, cached: minutes) and record the closer for --method auto")->excludes(no_tables)->excludes(target)->excludes(no_masks);
+  sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) {
+        if (wh.size() != 2 || wh[0] < 8 || wh[1] < 8 || wh[0] > 1024 || wh[1] > 1024)
+          throw CLI::ValidationError("--choose-size", "give a width and a height in [8, 1024]");
+        a->select.views.width = wh[0], a->select.views.height = wh[1];
+      }, "Size of --choose-rung's (and --target-error's) views, W H (default 160 120: their references cost minutes)")->expected(2);
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();

@@ -1,8 +1,8 @@
 #!/bin/bash
 # `weft bake` with seed 000's tables (small grids), then `weft run` picks iwasaki_vertex_quadrature
 # from the bundle (auto: the bake's default masks cover the occluded pillow), iwasaki_vertex from a
-# bundle baked --no-masks, or iwasaki (asked) and shows a first frame, and `weft render --method
-# iwasaki --bundle` writes an image.
+# bundle baked --no-masks, the rung `weft bake --choose-rung` measured closer, or iwasaki (asked) and
+# shows a first frame, and `weft render --method iwasaki --bundle` writes an image.
 set -eu
 weft=$1
 dir=$(mktemp -d)
@@ -27,6 +27,24 @@ grep -q "first frame after .* iwasaki)" "$dir/run_pixel.log" || { cat "$dir/run_
 "$weft" render --method iwasaki --bundle "$dir/p.weft" --width 48 --height 36 --frames 1 --out "$dir/f.exr" > "$dir/render.json"
 grep -q '"method":"iwasaki"' "$dir/render.json"
 test -s "$dir/f.exr"
+# --choose-rung measures the SDF's and the masks' per-vertex rung on the pillow's views (tiny here) and
+# weft run --method auto draws the one it recorded; on the unoccluded swatch there is nothing to choose.
+"$weft" bake --scene pillow --fabric linen_plain --grid 8 --samples 1 1 --sdf-resolution 8 --choose-rung --choose-size 24 18 \
+  --reference-cache "$dir/refs" --out "$dir/c.weft" 2> "$dir/bake_c.log"
+chosen=$(sed -n 's/.*; rung \(iwasaki_vertex[a-z_]*_quadrature\) (.*/\1/p' "$dir/bake_c.log")
+[ -n "$chosen" ] || { cat "$dir/bake_c.log"; echo "--choose-rung chose no rung"; exit 1; }
+grep -q "iwasaki_vertex_mask_quadrature: error 0\." "$dir/bake_c.log" || { cat "$dir/bake_c.log"; echo "--choose-rung did not measure the masks' rung"; exit 1; }
+"$weft" run --bundle "$dir/c.weft" --state-dir "$dir/state_c" --display headless --panel none --frames 2 --turntable 0 \
+  --size 48 36 2> "$dir/run_c.log"
+grep -q "first frame after .* $chosen)" "$dir/run_c.log" || { cat "$dir/run_c.log"; echo "weft run did not draw the chosen $chosen"; exit 1; }
+"$weft" bake --scene swatch --grid 8 --samples 1 1 --choose-rung --choose-size 24 18 --reference-cache "$dir/refs" \
+  --out "$dir/sw.weft" 2> "$dir/bake_sw.log"
+grep -q "no occluded cloth: no rung to choose" "$dir/bake_sw.log" || { cat "$dir/bake_sw.log"; exit 1; }
+set +e
+"$weft" bake --scene pillow --choose-rung --no-masks --out "$dir/x.weft" 2> /dev/null
+rc=$?
+set -e
+[ $rc -eq 2 ] || { echo "--choose-rung --no-masks: expected exit 2, got $rc"; exit 1; }
 # A bundle without tables runs sgpoint; asking it for iwasaki is bad input (exit 2).
 "$weft" bake --scene swatch --no-tables --out "$dir/s.weft" 2> /dev/null
 set +e
