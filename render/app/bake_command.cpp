@@ -45,8 +45,10 @@ std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput
   if (baked.masks.empty()) return "no occluded cloth: no rung to choose (the SDF and the masks agree on open cloth)";
   const auto cache = select.cache.empty() ? default_reference_cache() : select.cache;
   auto log = [](const std::string& line) { std::fprintf(stderr, "  choose rung: %s\n", line.c_str()); };
+  SelectionViewOptions views = select.views;
+  views.progress = open_progress_bar;
   const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const IwasakiBundleData>(std::move(baked)),
-                                   kVertexRungCandidates, select.views, cache, log);
+                                   kVertexRungCandidates, views, cache, log);
   writer.add_json(kSelectionSection, rung_choice_json(c));
   std::string line = "rung " + c.method + " (";
   char buf[64];
@@ -115,6 +117,7 @@ int run_bake(const BakeArgs& a) {
     const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
     SceneSelectionOptions select = a.select;
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
+    select.views.progress = open_progress_bar;
     IwasakiBundleData baked;
     try {
       tables_line = search ? add_selected_bundle(writer, in, select, sg_map)

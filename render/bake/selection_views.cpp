@@ -88,6 +88,7 @@ ViewReferences view_references(const Scene& scene, const std::map<std::string, F
     ReferenceRenderOptions ro;
     ro.width = o.width, ro.height = o.height, ro.sg_grid = o.sg_grid, ro.tangent_samples = o.tangent_samples;
     ro.check_convergence = false;
+    if (o.progress) ro.progress = o.progress("reference view " + std::to_string(i));
     const ReferenceRenderResult r = ReferenceRenderer(view, fabrics, lighting, ro).render(0);
     bench::CachedReference ref{r.image, r.kinds};
     bench::store_reference(file, ref);

@@ -22,6 +22,8 @@ struct SelectionViewOptions {
   double spread_deg = 20.0;    // turn between views about the camera target, around camera.up
   int width = 160, height = 120;
   int sg_grid = 8, tangent_samples = 16;  // the reference's quadrature, fixed (the bench's converges from 32)
+  // A progress callback per reference rendered (given its label; none: silent), e.g. a bar.
+  std::function<std::function<void(double)>(const std::string& label)> progress;
 };
 
 // $XDG_CACHE_HOME/weft/bake-references, else ~/.cache/weft/bake-references, else under /tmp.
