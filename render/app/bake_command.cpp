@@ -9,7 +9,6 @@
 #include "app/commands.h"
 #include "app/progress_bar.h"
 #include "bake/bundle_fabrics.h"
-#include "bake/rung_choice.h"
 #include "bake/scene_bake.h"
 #include "bake/scene_bundle_writer.h"
 #include "bake/selection_bundle.h"
@@ -37,29 +36,6 @@ struct BakeArgs {
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
 
-// --choose-rung: the per-vertex rung with the SDF's or the masks' visibility for the sharper SGs,
-// whichever is closer to the scene's views' reference (bake/rung_choice.h), recorded for
-// `weft run --method auto`. Returns the summary line's part.
-std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
-                            const SceneSelectionOptions& select) {
-  if (baked.masks.empty()) return "no occluded cloth: no rung to choose (the SDF and the masks agree on open cloth)";
-  const auto cache = select.cache.empty() ? default_reference_cache() : select.cache;
-  auto log = [](const std::string& line) { std::fprintf(stderr, "  choose rung: %s\n", line.c_str()); };
-  SelectionViewOptions views = select.views;
-  views.progress = open_progress_bar;
-  const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const IwasakiBundleData>(std::move(baked)),
-                                   kVertexRungCandidates, views, cache, log);
-  writer.add_json(kSelectionSection, rung_choice_json(c));
-  std::string line = "rung " + c.method + " (";
-  char buf[64];
-  for (const auto& m : c.measured) {
-    std::snprintf(buf, sizeof buf, "%.2f %%", 100.0 * m.error);
-    line += (line.back() == '(' ? "" : ", ") + m.method + " " + buf;
-  }
-  std::snprintf(buf, sizeof buf, " on %d views, %.1f s)", c.views, c.seconds);
-  return line + buf;
-}
-
 int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   constexpr int kSteps = 5;
@@ -67,11 +43,7 @@ int run_bake(const BakeArgs& a) {
   if (a.lambertian_sdf_resolution % 2) throw UsageError("--floor-sdf-resolution: must be even");
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
-  try {
-    in.scene = load_scene_named(a.scene, assets_dir(), a.fabric);
-  } catch (const std::exception& e) {
-    throw UsageError(std::string("--scene: ") + e.what());
-  }
+  in.scene = as_usage("--scene", [&] { return load_scene_named(a.scene, assets_dir(), a.fabric); });
   for (auto& o : in.scene.objects)
     if (!a.fabric.empty() && o.material == Material::cloth) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
@@ -85,11 +57,7 @@ int run_bake(const BakeArgs& a) {
   std::string lighting, tables_line = "no seed 000 tables (--no-tables)";
   if (!a.sgs_file.empty()) {
     progress(3, kSteps, "SGs from " + a.sgs_file);
-    try {
-      in.sgs = load_sg_set(a.sgs_file);
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--sgs: ") + e.what());
-    }
+    in.sgs = as_usage("--sgs", [&] { return load_sg_set(a.sgs_file); });
     lighting = a.sgs_file;
   } else {
     const auto map_file = env_map_file(in.scene.environment, assets_dir() / "envmaps");
@@ -108,13 +76,10 @@ int run_bake(const BakeArgs& a) {
     opt.progress = open_progress_bar, opt.mask_resolution = a.no_masks ? 0 : kMaskResolution;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.select.grid, opt.lambda_levels = a.lambda_levels;
-    if (!a.samples.empty()) {
-      if (a.samples.size() != 2 || a.samples[0] < 1 || a.samples[1] < 1 || a.samples[0] > 64 || a.samples[1] > 64)
-        throw UsageError("--samples: give two tangent-sample counts N1 N2 in [1, 64]");
-      opt.tangent_samples = {a.samples[0], a.samples[1]};
-    }
-    const bool fitted = a.sgs_file.empty() && a.fit_sgs == 0;  // the search chooses their count too
-    const auto sg_map = fitted ? env_map_file(in.scene.environment, assets_dir() / "envmaps") : std::filesystem::path();
+    if (!a.samples.empty()) opt.tangent_samples = {a.samples[0], a.samples[1]};  // two, in [1, 64]: CLI's checks
+    // Fitted by default: the search chooses their count too.
+    const auto sg_map = a.sgs_file.empty() && a.fit_sgs == 0 ? env_map_file(in.scene.environment, assets_dir() / "envmaps")
+                                                             : std::filesystem::path();
     SceneSelectionOptions select = a.select;
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     select.views.progress = open_progress_bar;
@@ -125,7 +90,7 @@ int run_bake(const BakeArgs& a) {
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
-    if (a.choose_rung) tables_line += "; " + add_rung_choice(writer, in, std::move(baked), a.select);
+    if (a.choose_rung) tables_line += "; " + add_rung_choice(writer, in, std::move(baked), select.views, select.cache);
   }
   progress(5, kSteps, "writing " + a.out);
   const auto bytes = writer.to_bytes();
@@ -164,11 +129,8 @@ CommandAction add_bake_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 0.5));
   auto* no_masks = sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, the *_quadrature rungs), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
   sub->add_flag("--choose-rung", a->choose_rung, "Measure the kiosk's per-vertex rung with the SDF's visibility and with the masks' (iwasaki_vertex_quadrature, iwasaki_vertex_mask_quadrature) on the scene's views against a reference (rendered once, cached: minutes) and record the closer for --method auto")->excludes(no_tables)->excludes(target)->excludes(no_masks);
-  sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) {
-        if (wh.size() != 2 || wh[0] < 8 || wh[1] < 8 || wh[0] > 1024 || wh[1] > 1024)
-          throw CLI::ValidationError("--choose-size", "give a width and a height in [8, 1024]");
-        a->select.views.width = wh[0], a->select.views.height = wh[1];
-      }, "Size of --choose-rung's (and --target-error's) views, W H (default 160 120: their references cost minutes)")->expected(2);
+  sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) { a->select.views.width = wh[0], a->select.views.height = wh[1]; },
+                  "Size of --choose-rung's (and --target-error's) views, W H (default 160 120: their references cost minutes)")->expected(2)->check(CLI::Range(8, 1024));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();
@@ -176,7 +138,7 @@ CommandAction add_bake_command(CLI::App& app) {
       ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
-  sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2);
+  sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2)->check(CLI::Range(1, 64));
   sub->add_option_function<int>("--subdivide", [a](const int& n) { a->subdivide = n, a->select.knobs.subdivisions = {n}; }, "Midpoint subdivision levels of the cloth meshes (each x4 triangles: finer per-vertex shading, more vertices to shade and store; default 0, or with --target-error the search's choice)")->check(CLI::Range(0, kMaxSubdivision));
   return [a] { return run_bake(*a); };
 }

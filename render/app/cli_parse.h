@@ -23,4 +23,17 @@ SphericalGaussian parse_sg(const std::string& text, const std::string& arg);
 // The whole of a file a command-line argument names; UsageError "<arg>: cannot open '<path>'".
 std::string read_argument_file(const std::string& path, const std::string& arg);
 
+// f(), with any other exception it throws turned into UsageError "<arg>: <what>": a file or name
+// the command line gives that cannot be used is bad input (exit 2).
+template <class F>
+auto as_usage(const std::string& arg, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw UsageError(arg + ": " + e.what());
+  }
+}
+
 }  // namespace weft

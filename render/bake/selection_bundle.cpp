@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/iwasaki_bundle_writer.h"
+#include "bake/rung_choice.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
 #include "scene/mesh_subdivision.h"
@@ -116,6 +117,24 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
   std::snprintf(buf, sizeof buf, "selected for target %g: %s, error %.4f%s", s.target, s.description.c_str(),
                 s.chosen.error, s.reached ? "" : " (unreachable: closest)");
   return buf;
+}
+
+std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
+                            const SelectionViewOptions& views, const std::filesystem::path& cache,
+                            const std::function<void(const std::string&)>& log) {
+  if (baked.masks.empty()) return "no occluded cloth: no rung to choose (the SDF and the masks agree on open cloth)";
+  auto say = [&log](const std::string& line) { log ? log(line) : void(std::fprintf(stderr, "  choose rung: %s\n", line.c_str())); };
+  const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const IwasakiBundleData>(std::move(baked)),
+                                   kVertexRungCandidates, views, cache.empty() ? default_reference_cache() : cache, say);
+  writer.add_json(kSelectionSection, rung_choice_json(c));
+  std::string line = "rung " + c.method + " (";
+  char buf[64];
+  for (const auto& m : c.measured) {
+    std::snprintf(buf, sizeof buf, "%.2f %%", 100.0 * m.error);
+    line += (line.back() == '(' ? "" : ", ") + m.method + " " + buf;
+  }
+  std::snprintf(buf, sizeof buf, " on %d views, %.1f s)", c.views, c.seconds);
+  return line + buf;
 }
 
 }  // namespace weft

@@ -1,9 +1,10 @@
 #pragma once
-// A scene-level selection in the bundle: the chosen setting's seed 000 sections (exactly the
+// A scene-level selection in the bundle (and `weft bake --choose-rung`'s record, the same section): the chosen setting's seed 000 sections (exactly the
 // tables and visibility that were measured) and its record, the `bake/selection` JSON section
 // (BUNDLE_FORMAT.md): target, whether it was reached, the measured error per view, frame time,
 // bytes, the runtime method and every knob's value.
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -42,6 +43,15 @@ SceneSelection select_for_bundle(const Scene& scene, const std::map<std::string,
 // holding both), and the selection's sections. Returns a one-line summary.
 std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& in, const SceneSelectionOptions& o,
                                 const std::filesystem::path& sg_map = {});
+
+// `weft bake --choose-rung`: choose_rung (bake/rung_choice.h) between kVertexRungCandidates on `in`'s
+// scene and SGs with the bundle data just baked, and its record as the `bake/selection` section.
+// References to `cache`, else default_reference_cache(); progress lines to `log`, else stderr.
+// Returns the summary line's part (the rung and each candidate's error), or why nothing was chosen
+// (no occluded cloth).
+std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
+                            const SelectionViewOptions& views, const std::filesystem::path& cache,
+                            const std::function<void(const std::string&)>& log = {});
 
 
 }  // namespace weft
