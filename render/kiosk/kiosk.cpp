@@ -211,7 +211,9 @@ void Kiosk::load_bundle() {
   (shown_.is_last_good ? log_warning : log_info)("bundle " + shown_.file.string() +
            (shown_.is_last_good ? " (LAST GOOD COPY: " + shown_.primary_error + ")" : "") + ": scene '" +
            scene_->scene.name + "', " + std::to_string(scene_->scene.objects.size()) + " objects, " +
-           std::to_string(scene_->sgs.size()) + " SGs");
+           std::to_string(scene_->sgs.size()) + " SGs" +
+           (read->baked_for.empty() ? "" : "; the bake measured " + read->baked_for + " for it") + "; drawing " +
+           method_->name);
 }
 
 bool Kiosk::open_display() {

@@ -6,9 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -17,37 +15,22 @@
 #include "bench/image_metrics.h"
 #include "frame/frame_render.h"
 #include "gl/gl_error.h"
-#include "lighting/env_map.h"
-#include "lighting/sg_fit.h"
 #include "reference/scene_render.h"
+#include "support/scene_case.h"
 
 using namespace weft;
 
 namespace {
 
-struct Pillow {
-  Scene scene;
-  std::map<std::string, Fabric> fabrics;
-  std::map<std::string, std::string> texts;
-  SgLighting sgs;
+// The pillow in linen under 10 SGs fitted to its map, baked small, with masks.
+struct Pillow : test::SceneCase {
   std::shared_ptr<const IwasakiBundleData> data;
 };
 
 const Pillow& pillow() {
   static const Pillow p = [] {
     Pillow w;
-    w.scene = load_scene_named("pillow", WEFT_SOURCE_ASSETS);
-    for (const auto& o : w.scene.objects)
-      if (o.material == Material::cloth && !w.fabrics.count(o.fabric)) {
-        std::ifstream in(fabric_file(o.fabric, WEFT_SOURCE_ASSETS "/fabrics"));
-        std::ostringstream text;
-        text << in.rdbuf();
-        w.texts[o.fabric] = text.str();
-        w.fabrics.emplace(o.fabric, parse_fabric(text.str(), o.fabric));
-      }
-    SgFitOptions fit;
-    fit.count = 6;
-    w.sgs = fit_sgs(load_env_map(env_map_file(w.scene.environment, WEFT_SOURCE_ASSETS "/envmaps"), NonFinitePolicy::clamp), fit);
+    static_cast<test::SceneCase&>(w) = test::scene_in_fabric("pillow", "linen_plain");
     IwasakiBakeOptions bake;
     bake.grid = 12, bake.lambda_levels = 5, bake.tangent_samples = {2, 3};
     bake.visibility.resolution = 16, bake.visibility.lambertian_resolution = 16;
