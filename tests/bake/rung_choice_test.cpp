@@ -17,6 +17,7 @@
 #include "gl/gl_error.h"
 #include "reference/scene_render.h"
 #include "support/scene_case.h"
+#include "support/sg_reference.h"
 
 using namespace weft;
 
@@ -68,12 +69,7 @@ TEST(RungChoice, ChoosesTheRungAnIndependentRenderFindsCloser) {
   EXPECT_EQ(c.views, 2);
   EXPECT_EQ(c.references_rendered, 2);
   // The scene camera's view, rendered here, against a reference rendered here.
-  ReferenceLighting lighting;
-  lighting.sgs = w.sgs;
-  lighting.background = [&](const glm::dvec3& d) { return evaluate(w.sgs, d); };
-  ReferenceRenderOptions ro;
-  ro.width = 64, ro.height = 48, ro.sg_grid = 6, ro.tangent_samples = 8, ro.check_convergence = false;
-  const ReferenceRenderResult ref = ReferenceRenderer(w.scene, w.fabrics, lighting, ro).render(0);
+  const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, w.sgs, 64, 48, 6, 8);
   std::vector<double> independent;
   for (const auto& m : c.measured) {
     ASSERT_EQ(m.view_errors.size(), 2u);

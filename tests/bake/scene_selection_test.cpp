@@ -26,6 +26,7 @@
 #include "bake/scene_bundle_writer.h"
 #include "reference/scene_render.h"
 #include "scene/mesh_subdivision.h"
+#include "support/sg_reference.h"
 
 using namespace weft;
 
@@ -86,12 +87,7 @@ std::filesystem::path fresh_cache(const std::string& name) {
 // The scene camera's view of a selection's bundle under its own SGs, rendered here, against a
 // reference rendered here under `lighting_sgs`.
 double independent_error(const Swatch& w, const SceneSelection& s, const SgLighting& lighting_sgs) {
-  ReferenceLighting lighting;
-  lighting.sgs = lighting_sgs;
-  lighting.background = [&](const glm::dvec3& d) { return evaluate(lighting_sgs, d); };
-  ReferenceRenderOptions ro;
-  ro.width = 64, ro.height = 48, ro.sg_grid = 6, ro.tangent_samples = 16, ro.check_convergence = false;
-  const ReferenceRenderResult ref = ReferenceRenderer(w.scene, w.fabrics, lighting, ro).render(0);
+  const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, lighting_sgs, 64, 48, 6, 16);
   const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, s.sgs, s.method, 64,
                                       48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   return bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
@@ -120,12 +116,7 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
   EXPECT_EQ(s.chosen.view_errors.size(), 3u);
   EXPECT_TRUE(s.data.visibility.empty());  // the swatch is unoccluded: no visibility to pay for
   // The scene camera's view, rendered here, against a reference rendered here.
-  ReferenceLighting lighting;
-  lighting.sgs = w.sgs;
-  lighting.background = [&](const glm::dvec3& d) { return evaluate(w.sgs, d); };
-  ReferenceRenderOptions ro;
-  ro.width = 64, ro.height = 48, ro.sg_grid = 6, ro.tangent_samples = 16, ro.check_convergence = false;
-  const ReferenceRenderResult ref = ReferenceRenderer(w.scene, w.fabrics, lighting, ro).render(0);
+  const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, w.sgs, 64, 48, 6, 16);
   const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, w.sgs, s.method, 64,
                                       48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   const double e = bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
