@@ -52,6 +52,7 @@ IwasakiShaders iwasaki_shaders() {
   s.pixel_fs = iwasaki_glsl();
   s.pixel_fs.push_back("iwasaki.frag");
   s.pass_fs = iwasaki_glsl();
+  s.pass_fs.push_back("vertex_pass.glsl");
   s.pass_fs.push_back("iwasaki_vertex_pass.frag");
   s.vertex_vs = {"iwasaki_vertex.vert"};
   s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "iwasaki_vertex.frag"};

@@ -5,25 +5,17 @@
 // iwasaki for SG k with the vertex's own SDF values (iwasaki_vertex.frag cuts those by the facet's
 // plane). Without (iwasaki_quadrature, which shades the other SGs per pixel), one block: every broad
 // SG's quadrature summed.
-uniform highp sampler2D u_vertex_position;
-uniform highp sampler2D u_vertex_normal;
-uniform highp sampler2D u_vertex_warp;
-uniform int u_vertex_width;
-uniform int u_vertex_rows;
-uniform int u_vertex_count;
 uniform bool u_pass_narrow;
 out vec4 o_radiance;
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  int k = p.y / u_vertex_rows;
-  p.y -= k * u_vertex_rows;
-  int i = p.y * u_vertex_width + p.x;
+  PassTexel t = pass_texel();
+  int i = t.i, k = t.k;
   if (i >= u_vertex_count || (u_pass_narrow && k >= u_sg_count)) {
     o_radiance = vec4(0.0);
     return;
   }
-  vec3 position = texelFetch(u_vertex_position, p, 0).xyz, normal = texelFetch(u_vertex_normal, p, 0).xyz,
-       warp = texelFetch(u_vertex_warp, p, 0).xyz;
+  vec3 position = texelFetch(u_vertex_position, t.p, 0).xyz, normal = texelFetch(u_vertex_normal, t.p, 0).xyz,
+       warp = texelFetch(u_vertex_warp, t.p, 0).xyz;
   vec3 radiance;
   if (!u_pass_narrow)
     radiance = broad_lobe_radiance(i, position, normal, warp, 0, u_sg_count);

@@ -27,7 +27,8 @@ gpu::IwasakiShaders sheer_shaders() {
   gpu::IwasakiShaders s;
   s.pixel_vs = {"iwasaki.vert"};
   s.pixel_fs = with("sheer.frag");
-  s.pass_fs = with("sheer_vertex_pass.frag");
+  s.pass_fs = with("vertex_pass.glsl");
+  s.pass_fs.push_back("sheer_vertex_pass.frag");
   s.vertex_vs = {"sheer_vertex.vert"};
   s.vertex_fs = {"sheer_vertex.frag"};
   s.sdf_above_horizon = false;  // sheer_sdf_share reads d at the SG axes

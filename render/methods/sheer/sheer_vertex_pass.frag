@@ -1,15 +1,11 @@
 // Method `sheer_vertex`, step 1 (methods/iwasaki/vertex_pass.h): the sheer layer (sheer.glsl) at
 // every mesh vertex, one fragment per vertex i at texel (i mod W, i div W), with the vertex's own
 // SDF values: premultiplied source and alpha. sheer_vertex.vert reads them by gl_VertexID.
-uniform highp sampler2D u_vertex_position;
-uniform highp sampler2D u_vertex_normal;
-uniform highp sampler2D u_vertex_warp;
-uniform int u_vertex_width;
-uniform int u_vertex_count;
 out vec4 o_radiance;
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  int i = p.y * u_vertex_width + p.x;
+  PassTexel t = pass_texel();  // one block
+  ivec2 p = t.p;
+  int i = t.i;
   if (i >= u_vertex_count) {
     o_radiance = vec4(0.0);
     return;
