@@ -362,17 +362,8 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
       compute_warp_directions(mesh);
     } else {
       mesh.warps = std::move(tangents);
-      for (size_t v = 0; v < nv; ++v) {
-        const glm::dvec3& n = mesh.normals[v];
-        const glm::dvec3 t = mesh.warps[v];
-        glm::dvec3 w = t - glm::dot(t, n) * n;
-        // A tangent (nearly) along the normal leaves too few digits after the projection for a
-        // frame: any tangent keeps it valid. Relative, so a long tangent is judged as a short one.
-        if (!(glm::length(w) > 1e-6 * glm::length(t)))
-          w = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
-        w = glm::normalize(w);
-        mesh.warps[v] = glm::normalize(w - glm::dot(w, n) * n);  // again: the first pass's rounding
-      }
+      // A TANGENT along the normal (or NaN) gets a fixed warp: any keeps the frame valid.
+      for (size_t v = 0; v < nv; ++v) mesh.warps[v] = unit_tangent(mesh.warps[v], mesh.normals[v]);
     }
   } catch (const MeshError& e) {
     fail(e.what());

@@ -105,18 +105,17 @@ void compute_warp_directions(TriangleMesh& mesh) {
     if (!(l > 0.0) || !std::isfinite(l)) continue;
     for (uint32_t i : t) dpdu[i] += t_u / l * area;
   }
+  // Where there is no usable dP/du, any tangent keeps the frame valid (the visibility bake and its
+  // runtime lookup both read the frame from these warps).
   mesh.warps.resize(mesh.positions.size());
-  for (size_t i = 0; i < dpdu.size(); ++i) {
-    const glm::dvec3& n = mesh.normals[i];
-    glm::dvec3 w = dpdu[i] - glm::dot(dpdu[i], n) * n;
-    double l = glm::length(w);
-    if (!(l > 1e-12)) {  // no usable dP/du here: any tangent keeps the frame valid (the visibility
-                         // bake and its runtime lookup both read the frame from these warps)
-      w = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
-      l = glm::length(w);
-    }
-    mesh.warps[i] = w / l;
-  }
+  for (size_t i = 0; i < dpdu.size(); ++i) mesh.warps[i] = unit_tangent(dpdu[i], mesh.normals[i]);
+}
+
+glm::dvec3 unit_tangent(const glm::dvec3& w, const glm::dvec3& n) {
+  glm::dvec3 t = w - glm::dot(w, n) * n;
+  if (!(glm::length(t) > 1e-6 * glm::length(w))) t = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
+  t = glm::normalize(t);
+  return glm::normalize(t - glm::dot(t, n) * n);
 }
 
 MeshRepairReport finish_mesh(TriangleMesh& mesh, bool is_cloth, const std::string& name) {

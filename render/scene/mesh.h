@@ -40,6 +40,10 @@ MeshRepairReport repair_mesh(TriangleMesh& mesh, bool needs_uvs, const std::stri
 
 // Area-weighted vertex normals (consistently oriented input assumed).
 void compute_vertex_normals(TriangleMesh& mesh);
+// A unit tangent ⟂ unit normal n from direction w: w's part across n, normalised, projected once
+// more (the first pass's rounding). Where w lies along n (within 1e−6 of its length, too few digits
+// left for a frame) or is zero, a fixed one: (1,0,0) × n, or (0,1,0) × n near ±x.
+glm::dvec3 unit_tangent(const glm::dvec3& w, const glm::dvec3& n);
 // Warp field: per triangle dP/du from its UVs, accumulated per vertex by area, then
 // orthogonalised against the vertex normal (Gram–Schmidt) and normalised. Requires normals; a
 // mesh without UVs (occluders, floors) gets a fixed tangent, (1,0,0) × n (or (0,1,0) × n near ±x):

@@ -6,21 +6,6 @@
 
 namespace weft {
 
-namespace {
-
-// A unit tangent ⟂ n from `w` (any direction), or a fixed one where w lies along n.
-glm::dvec3 tangent_from(const glm::dvec3& w, const glm::dvec3& n) {
-  glm::dvec3 t = w - glm::dot(w, n) * n;
-  double l = glm::length(t);
-  if (!(l > 1e-12)) {
-    t = glm::cross(std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), n);
-    l = glm::length(t);
-  }
-  return t / l;
-}
-
-}  // namespace
-
 TriangleMesh subdivide_midpoint(const TriangleMesh& m) {
   const size_t nv = m.positions.size();
   const bool normals = !m.normals.empty(), uvs = !m.uvs.empty(), warps = !m.warps.empty();
@@ -47,7 +32,7 @@ TriangleMesh subdivide_midpoint(const TriangleMesh& m) {
     if (uvs) out.uvs.push_back(0.5 * (m.uvs[a] + m.uvs[b]));
     if (warps) {
       const glm::dvec3 w = 0.5 * (m.warps[a] + m.warps[b]);
-      out.warps.push_back(normals ? tangent_from(w, n) : w / std::max(glm::length(w), 1e-300));
+      out.warps.push_back(normals ? unit_tangent(w, n) : w / std::max(glm::length(w), 1e-300));
     }
     return it->second;
   };
