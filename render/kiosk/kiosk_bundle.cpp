@@ -55,12 +55,12 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
     for (const auto& [i, v] : bundle.iwasaki->visibility)
       if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].material == Material::cloth)
         masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
-    const methods::RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
-    if (masks_cover && chosen && chosen->visibility_masks && chosen->seed000 == methods::Seed000Tables::required &&
-        !chosen->see_through)
-      opaque = chosen->name;
-    else if (masks_cover)
-      opaque = opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
+    if (masks_cover) {
+      const methods::RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
+      const bool measured = chosen && chosen->visibility_masks && chosen->seed000 == methods::Seed000Tables::required &&
+                            !chosen->see_through;
+      opaque = measured ? chosen->name : opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
+    }
   }
   const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
                                                       : bundle.iwasaki ? (sheer ? "sheer_vertex" : opaque)
