@@ -38,4 +38,12 @@ std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const
   return texts;
 }
 
+std::map<std::string, Fabric> cloth_fabrics(const Scene& scene, const std::map<std::string, std::string>& fabric_texts) {
+  std::map<std::string, Fabric> fabrics;
+  for (const auto& o : scene.objects)
+    if (o.material == Material::cloth && !fabrics.count(o.fabric))
+      fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
+  return fabrics;
+}
+
 }  // namespace weft

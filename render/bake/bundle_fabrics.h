@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/fabric.h"
 #include "scene/scene.h"
 
 namespace weft {
@@ -20,5 +21,8 @@ public:
 
 std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const std::filesystem::path& dir,
                                                        bool only_scene);
+
+// The cloth objects' fabrics parsed from such texts (preset → fabric), as the bakers take them.
+std::map<std::string, Fabric> cloth_fabrics(const Scene& scene, const std::map<std::string, std::string>& fabric_texts);
 
 }  // namespace weft

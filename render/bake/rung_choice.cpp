@@ -1,13 +1,13 @@
 #include "bake/rung_choice.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "bench/image_metrics.h"
-#include "core/fabric.h"
+#include "bake/bundle_fabrics.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "gpu/scene_renderer.h"
@@ -19,13 +19,10 @@ RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::stri
                        const SelectionViewOptions& views, const std::filesystem::path& cache,
                        const std::function<void(const std::string&)>& log) {
   if (candidates.empty()) throw std::invalid_argument("choose_rung: no candidate method");
-  std::map<std::string, Fabric> fabrics;
-  std::vector<Fabric> cloth;
+  const std::map<std::string, Fabric> fabrics = cloth_fabrics(scene, fabric_texts);
+  std::vector<Fabric> cloth;  // per cloth object, as the renderer takes them
   for (const auto& o : scene.objects)
-    if (o.material == Material::cloth) {
-      if (!fabrics.count(o.fabric)) fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
-      cloth.push_back(fabrics.at(o.fabric));
-    }
+    if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
   if (cloth.empty()) throw std::invalid_argument("choose_rung: the scene has no cloth");
   const auto t0 = std::chrono::steady_clock::now();
   RungChoice out;
@@ -41,13 +38,8 @@ RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::stri
     target.bind();
     RungMeasure m;
     m.method = name;
-    for (size_t v = 0; v < refs.cameras.size(); ++v) {
-      renderer.draw(refs.cameras[v], views.width, views.height);
-      const Image img = gpu::read_linear_image(views.width, views.height);
-      const double e = bench::cloth_error(img, refs.images[v].image, refs.images[v].kinds).relative_rmse;
-      m.view_errors.push_back(e);
-      m.error = std::max(m.error, e);
-    }
+    m.view_errors = view_errors(renderer, refs, views.width, views.height);
+    m.error = *std::max_element(m.view_errors.begin(), m.view_errors.end());
     if (log) {
       char buf[160];
       std::snprintf(buf, sizeof buf, "%s: error %.4f (worst of %d views)", name.c_str(), m.error, out.views);

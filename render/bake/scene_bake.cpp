@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "bake/bake_selection.h"
+#include "bake/bundle_fabrics.h"
 #include "bake/iwasaki_bundle_writer.h"
 #include "bake/sigmoid_gain.h"
 #include "bake/visibility_mask_bake.h"
@@ -122,12 +123,8 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
                                const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& opt,
                                IwasakiBundleData* baked) {
-  std::map<std::string, Fabric> fabrics;
-  for (const auto& o : scene.objects)
-    if (o.material == Material::cloth && !fabrics.count(o.fabric))
-      fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
   IwasakiBakeReport report;
-  IwasakiBundleData data = bake_iwasaki(scene, fabrics, opt, &report);
+  IwasakiBundleData data = bake_iwasaki(scene, cloth_fabrics(scene, fabric_texts), opt, &report);
   add_iwasaki_sections(writer, data);
   char buf[256];
   std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/bundle_fabrics.h"
 #include "bake/iwasaki_bundle_writer.h"
 #include "bake/rung_choice.h"
 #include "lighting/env_map.h"
@@ -83,10 +84,7 @@ namespace weft {
 SceneSelection select_for_bundle(const Scene& scene, const std::map<std::string, std::string>& fabric_texts,
                                  const SgLighting& sgs, const SceneSelectionOptions& o,
                                  const std::filesystem::path& sg_map) {
-  std::map<std::string, Fabric> fabrics;
-  for (const auto& obj : scene.objects)
-    if (obj.material == Material::cloth && !fabrics.count(obj.fabric))
-      fabrics.emplace(obj.fabric, parse_fabric(fabric_texts.at(obj.fabric), obj.fabric));
+  const std::map<std::string, Fabric> fabrics = cloth_fabrics(scene, fabric_texts);
   SceneSelectionOptions with = o;
   if (with.cache.empty()) with.cache = default_reference_cache();
   if (!with.log) with.log = [](const std::string& line) { std::fprintf(stderr, "  select: %s\n", line.c_str()); };

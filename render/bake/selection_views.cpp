@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "bench/image_metrics.h"
 #include "reference/scene_render.h"
 
 namespace weft {
@@ -99,6 +100,16 @@ ViewReferences view_references(const Scene& scene, const std::map<std::string, F
     out.images.push_back(std::move(ref));
   }
   return out;
+}
+
+std::vector<double> view_errors(gpu::SceneRenderer& renderer, const ViewReferences& refs, int width, int height) {
+  std::vector<double> errors;
+  for (size_t v = 0; v < refs.cameras.size(); ++v) {
+    renderer.draw(refs.cameras[v], width, height);
+    const Image img = gpu::read_linear_image(width, height);
+    errors.push_back(bench::cloth_error(img, refs.images[v].image, refs.images[v].kinds).relative_rmse);
+  }
+  return errors;
 }
 
 }  // namespace weft

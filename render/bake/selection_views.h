@@ -13,6 +13,7 @@
 #include "bench/reference_cache.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
+#include "gpu/scene_renderer.h"
 #include "scene/scene.h"
 
 namespace weft {
@@ -44,5 +45,9 @@ ViewReferences view_references(const Scene& scene, const std::map<std::string, F
                                const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
                                const SelectionViewOptions& options, const std::filesystem::path& cache,
                                const std::function<void(const std::string&)>& log = {});
+
+// Each view's error: relative RMSE over the cloth pixels (bench/image_metrics.h) of `renderer`'s frame
+// against the view's reference. Draws into the bound framebuffer, `refs`' size (a current GLES context).
+std::vector<double> view_errors(gpu::SceneRenderer& renderer, const ViewReferences& refs, int width, int height);
 
 }  // namespace weft
