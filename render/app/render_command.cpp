@@ -15,6 +15,7 @@
 #include "frame/frame_render.h"
 #include "gpu/scene_renderer.h"
 #include "runtime/visibility_mask.h"
+#include "scene/weave_scale.h"
 
 namespace weft {
 
@@ -40,6 +41,9 @@ struct RenderArgs {
   std::string backdrop = "showroom";
   int timed_frames = 20;
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
+  bool weave = false;
+  int supersample = 0;  // 0: 4 with --weave, else 1
+  std::string camera = "scene";
 };
 
 int run_render(const RenderArgs& a) {
@@ -63,6 +67,8 @@ int run_render(const RenderArgs& a) {
   if (!(a.exposure >= 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be ≥ 0 (0: automatic)");
   if (!std::isfinite(a.exposure_bias) || std::abs(a.exposure_bias) > 20) throw UsageError("--exposure-bias: must be within -20..20 EV");
   if (a.backdrop != "showroom" && a.backdrop != "measure") throw UsageError("--backdrop: must be 'showroom' or 'measure'");
+  if (a.camera != "scene" && a.camera != "closeup") throw UsageError("--camera: must be 'scene' or 'closeup'");
+  if (a.supersample < 0 || a.supersample > 16) throw UsageError("--supersample: must be within 1..16");
   if (std::filesystem::path(a.out).extension() != ".exr")
     throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
 
@@ -74,6 +80,7 @@ int run_render(const RenderArgs& a) {
   } catch (const FrameInputError& e) {
     throw UsageError(e.what());
   }
+  if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
   if (gpu::uses_seed000_tables(a.method) && !in.iwasaki) {
     std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;
@@ -86,7 +93,7 @@ int run_render(const RenderArgs& a) {
     GpuFrame f;
     try {
       f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki,
-                           a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure);
+                           a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure, a.weave);
     } catch (const gpu::GpuError& e) {
       std::cerr << "weft render: " << e.what() << "\n";
       return 1;
@@ -96,7 +103,8 @@ int run_render(const RenderArgs& a) {
   }
   ProgressBar bar("weft render " + in.scene.name);
   render_reference_frame(in, lighting, files,
-                         {a.lighting, a.sg_grid, a.map_width, a.tangent_samples, a.check_stride, !a.no_check},
+                         {a.lighting, a.sg_grid, a.map_width, a.tangent_samples, a.check_stride, !a.no_check, a.weave,
+                          a.supersample > 0 ? a.supersample : (a.weave ? 4 : 1)},
                          [&bar](double f) { bar(f); });
   return 0;
 }
@@ -136,6 +144,9 @@ CommandAction add_render_command(CLI::App& app) {
   sub->add_option("--exposure", a->exposure, "PNG: fixed exposure before the filmic curve and sRGB (0: metered on the cloth)")
       ->capture_default_str();
   sub->add_option("--exposure-bias", a->exposure_bias, "PNG: EV added to the metered exposure (+1: twice as bright)")->capture_default_str();
+  sub->add_flag("--weave", a->weave, "The resolved weave: up close each point shows the thread that lies there (GPU methods: the weave layer over the method; reference: the resolved model, supersampled)");
+  sub->add_option("--supersample", a->supersample, "Reference: rays per pixel along each axis (default 4 with --weave, else 1)");
+  sub->add_option("--camera", a->camera, "scene: the scene's camera; closeup: its close-up camera (or the camera moved in until a weave repeat spans 24 pixels)")->capture_default_str();
   sub->add_option("--backdrop", a->backdrop, "GPU methods: showroom (the environment, softened, behind the scene) or measure (black; the sharp environment behind see-through cloth, as the bench draws)")->capture_default_str();
   return [a] { return run_render(*a); };
 }

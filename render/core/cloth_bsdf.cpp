@@ -75,4 +75,22 @@ dvec3 ClothBsdf::Point::integrand(const dvec3& wi, const dvec3& wo) {
   return total;
 }
 
+dvec3 ClothBsdf::Point::resolved_integrand(int thread, double tilt, const dvec3& wi, const dvec3& wo) {
+  if (glm::dot(frame_.n, wi) <= 0.0 || glm::dot(frame_.n, wo) <= 0.0) return dvec3(0.0);
+  const double q = prepare(wi, wo);
+  if (q <= kQFloor) return dvec3(0.0);
+  return resolved_scattering(thread, tilt, wi, wo) / q;
+}
+
+dvec3 ClothBsdf::Point::resolved_scattering(int thread, double tilt, const dvec3& wi, const dvec3& wo) const {
+  if (glm::dot(frame_.n, wi) <= 0.0 || glm::dot(frame_.n, wo) <= 0.0) return dvec3(0.0);
+  const ThreadFrame f = thread_frame(frame_, thread, tilt);
+  const FiberAngles in = fiber_angles(f, wi), out = fiber_angles(f, wo);
+  const double p = projection(in, out);
+  if (p <= 0.0) return dvec3(0.0);
+  const double w = masking(in, out) * p;
+  if (w <= 0.0) return dvec3(0.0);
+  return scattering(bsdf_->fabric_.threads[thread], in, out) * (w * std::cos(in.theta));
+}
+
 }  // namespace weft

@@ -33,6 +33,12 @@ public:
     // Σ_j ⟨f_s · W · cos θ_i⟩_j: what L_o integrates against L·V over n·ω_i > 0.
     // Zero when ω_i or ω_o is below the surface.
     dvec3 integrand(const dvec3& wi, const dvec3& wo);
+    // The resolved weave at one point of the repeat (core/weave_layout.h): the one tangent sample
+    // that lies there, thread j at tilt α, as f_s · M · P · cos θ_i / Q with the fabric-level Q.
+    // Its average over the repeat, thread j covering a_j, is integrand(). Zero below the surface.
+    dvec3 resolved_integrand(int thread, double tilt, const dvec3& wi, const dvec3& wo);
+    // Its numerator f_s · M · P · cos θ_i (no Q), for methods that take Q from elsewhere.
+    dvec3 resolved_scattering(int thread, double tilt, const dvec3& wi, const dvec3& wo) const;
     const SurfaceFrame& frame() const { return frame_; }
 
   private:

@@ -80,6 +80,28 @@ ThreadParams parse_thread(const json& t, const std::string& origin, const std::s
   return p;
 }
 
+WeaveSpec parse_weave(const json& w, const std::string& origin) {
+  if (!w.is_object()) fail(origin, "weave", "value " + show(w).substr(0, 40) + " is not an object");
+  WeaveSpec spec;
+  for (const auto& [key, value] : w.items())
+    if (key != "rows" && key != "shift" && key != "ends_per_cm" && key != "picks_per_cm")
+      fail(origin, "weave." + key, "unknown (known: rows, shift, ends_per_cm, picks_per_cm)");
+  auto whole = [&](const char* key, int lo, int hi) {
+    const double x = number(w, key, origin, "weave.", lo, hi);
+    if (x != std::floor(x)) fail(origin, std::string("weave.") + key, "value " + show(w.at(key)) + " is not a whole number");
+    return int(x);
+  };
+  if (w.contains("rows")) {
+    spec.rows = whole("rows", 1, WeaveSpec::kMaxRows);
+    spec.shift = w.contains("shift") ? whole("shift", 0, spec.rows - 1) : (spec.rows == 5 ? 2 : 1) % spec.rows;
+  } else if (w.contains("shift")) {
+    fail(origin, "weave.shift", "needs weave.rows beside it");
+  }
+  if (w.contains("ends_per_cm")) spec.ends_per_cm = number(w, "ends_per_cm", origin, "weave.", 0.0, WeaveSpec::kMaxThreadsPerCm, true);
+  if (w.contains("picks_per_cm")) spec.picks_per_cm = number(w, "picks_per_cm", origin, "weave.", 0.0, WeaveSpec::kMaxThreadsPerCm, true);
+  return spec;
+}
+
 }  // namespace
 
 Fabric parse_fabric(const std::string& text, const std::string& origin) {
@@ -105,6 +127,7 @@ Fabric parse_fabric(const std::string& text, const std::string& origin) {
   }
   if (doc.contains("optical_thickness"))
     f.optical_thickness = number(doc, "optical_thickness", origin, "", 0.0, kMaxOpticalThickness, true);
+  if (doc.contains("weave")) f.weave = parse_weave(doc.at("weave"), origin);
   return f;
 }
 

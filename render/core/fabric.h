@@ -11,6 +11,17 @@
 
 namespace weft {
 
+// The weave's structure and physical size (core/weave_layout.h draws it). Counts are the yarns
+// per centimetre: ends (warp yarns, counted along t) and picks (weft yarns, counted along s).
+struct WeaveSpec {
+  int rows = 0;   // warp yarns in one repeat; 0: chosen from the threads' coverages
+  int shift = 0;  // rows a float's start moves by from one row to the next (with rows)
+  double ends_per_cm = kDefaultThreadsPerCm, picks_per_cm = kDefaultThreadsPerCm;
+  static constexpr double kDefaultThreadsPerCm = 30.0;
+  static constexpr int kMaxRows = 64;
+  static constexpr double kMaxThreadsPerCm = 1000.0;
+};
+
 struct Fabric {
   std::string name;
   std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
@@ -18,6 +29,7 @@ struct Fabric {
   // > 0 marks a sheer (voile, net) that shows what lies behind it; 0 (the Table II presets) is a
   // fabric with no thickness of its own, which see-through methods draw at their default τ.
   double optical_thickness = 0.0;
+  WeaveSpec weave;
 };
 
 // Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.

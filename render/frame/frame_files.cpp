@@ -46,13 +46,18 @@ void render_reference_frame(const FrameInputs& in, const ReferenceLighting& ligh
   opt.tangent_samples = rf.tangent_samples;
   opt.check_stride = rf.check_stride;
   opt.check_convergence = rf.check_convergence;
+  opt.resolved_weave = rf.resolved_weave;
+  opt.supersample = rf.supersample;
   opt.progress = std::move(progress);
 
   std::cerr << "weft render: scene " << in.scene.name << ", " << a.width << "x" << a.height << ", lighting "
             << lighting.description
             << (rf.lighting == "sg" ? ", SG grid " + std::to_string(rf.sg_grid) + "x" + std::to_string(2 * rf.sg_grid) + " per SG, "
                                     : std::string(", "))
-            << rf.tangent_samples << " tangent samples per thread\n";
+            << rf.tangent_samples << " tangent samples per thread"
+            << (rf.resolved_weave ? ", resolved weave" : "")
+            << (rf.supersample > 1 ? ", " + std::to_string(rf.supersample * rf.supersample) + " rays per pixel" : std::string())
+            << "\n";
   const ReferenceRenderer renderer(in.scene, in.fabrics, lighting, opt);
   const ReferenceRenderResult r = renderer.render(0);
   write_exr(r.image, out);

@@ -25,6 +25,8 @@ struct ReferenceFrameOptions {
   std::string lighting = "sg";  // as FrameLightingOptions::mode, for the summary
   int sg_grid = 8, map_width = 128, tangent_samples = 32, check_stride = 6;
   bool check_convergence = true;
+  bool resolved_weave = false;  // ReferenceRenderOptions::resolved_weave
+  int supersample = 1;
 };
 
 // Renders `reference` (logging the setup and the convergence check on stderr, progress through

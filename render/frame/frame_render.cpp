@@ -12,7 +12,7 @@ namespace weft {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
-                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop) {
+                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
   for (const auto& o : scene.objects)
@@ -20,6 +20,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
   gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);
+  renderer.set_weave(weave);
   gpu::OffscreenTarget target(width, height);
   target.bind();
   renderer.draw(scene.camera, width, height);  // warm-up: shader compilation, first upload

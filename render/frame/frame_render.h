@@ -27,6 +27,6 @@ struct GpuFrame {
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
                           std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr,
-                          gpu::Backdrop backdrop = gpu::Backdrop::measure);
+                          gpu::Backdrop backdrop = gpu::Backdrop::measure, bool weave = false);
 
 }  // namespace weft

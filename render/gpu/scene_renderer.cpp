@@ -11,6 +11,8 @@
 #include "methods/lambert_visibility.h"
 #include "methods/program_cloth.h"
 #include "methods/sg_lighting_uniforms.h"
+#include "methods/weave/weave_layer.h"
+#include "scene/weave_scale.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -51,6 +53,8 @@ struct SceneRenderer::Object {
   std::unique_ptr<GpuMesh> mesh;  // Lambertian objects; the method's GPU side holds the cloth's
   bool cloth = false;
   size_t handle = 0;  // the cloth's handle in cloth_
+  Fabric fabric;      // the cloth's, as drawn (knob edits included)
+  size_t weave_handle = 0;
   const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
 };
 
@@ -64,10 +68,13 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    auto obj = std::make_unique<Object>(Object{&o, nullptr, o.material == Material::cloth, 0, nullptr});
+    auto obj = std::make_unique<Object>();
+    obj->source = &o;
+    obj->cloth = o.material == Material::cloth;
     if (obj->cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
-      obj->handle = cloth_->add_object(i, o.mesh, object_fabric(o, fabrics[cloth]));
+      obj->fabric = object_fabric(o, fabrics[cloth]);
+      obj->handle = cloth_->add_object(i, o.mesh, obj->fabric);
       ++cloth;
     } else {
       obj->mesh = std::make_unique<GpuMesh>(o.mesh);
@@ -83,7 +90,10 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
   size_t cloth = 0;
   for (auto& o : objects_)
     if (o->cloth && cloth++ == cloth_index) {
-      cloth_->set_fabric(o->handle, object_fabric(*o->source, fabric));  // throws (and changes nothing) for a fabric the method cannot show
+      const Fabric drawn = object_fabric(*o->source, fabric);
+      cloth_->set_fabric(o->handle, drawn);  // throws (and changes nothing) for a fabric the method cannot show
+      o->fabric = drawn;
+      if (weave_) weave_->set_fabric(o->weave_handle, drawn);
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
@@ -131,12 +141,24 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
 
 void SceneRenderer::set_lighting(const SgLighting& sgs) { set_lighting(prepare_lighting(sgs)); }
 
+void SceneRenderer::set_weave(bool on) {
+  if (on && !weave_) {
+    auto layer = std::make_unique<WeaveLayer>();
+    for (auto& o : objects_)
+      if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
+    weave_ = std::move(layer);
+  }
+  weave_on_ = on;
+}
+
 size_t SceneRenderer::shadowed_lambertian_objects() const {
   return size_t(std::count_if(objects_.begin(), objects_.end(), [](const auto& o) { return o->lambert_visibility != nullptr; }));
 }
 
 void SceneRenderer::draw(const Camera& camera, int width, int height) {
-  const glm::mat4 proj = glm::perspective(float(glm::radians(camera.fov_deg)), float(width) / height, 0.05f, 100.0f);
+  // A close-up (a camera nearer its target than 0.2 m) moves the near plane in with it.
+  const float near = std::min(0.05f, 0.25f * float(glm::length(camera.target - camera.position)));
+  const glm::mat4 proj = glm::perspective(float(glm::radians(camera.fov_deg)), float(width) / height, near, 100.0f);
   const glm::mat4 view = glm::lookAt(glm::vec3(camera.position), glm::vec3(camera.target), glm::vec3(camera.up));
   const glm::mat4 vp = proj * view;
   const bool see_through = method_->see_through;
@@ -182,6 +204,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
         glDepthMask(GL_TRUE);
       }
     }
+    if (pass == 0 && weave_on_ && !see_through)
+      for (auto& o : objects_)
+        if (o->cloth && weave_->resolves(o->weave_handle, camera, height))
+          weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), sgs_);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

@@ -19,6 +19,8 @@
 
 namespace weft::gpu {
 
+class WeaveLayer;
+
 // A runtime method: an entry of the registry (methods/registry.h), which lists them all.
 using Method = const methods::RuntimeMethod&;
 Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
@@ -79,6 +81,11 @@ public:
   // Knob edits: new thread albedo / gloss for a cloth object, no re-bake.
   void set_fabric(size_t cloth_index, const Fabric& fabric);
   void set_backdrop(Backdrop backdrop) { backdrop_ = backdrop; }  // default: measure
+  // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
+  // than about a repeat, each point shows the thread that lies there. Off by default; a
+  // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
+  void set_weave(bool on);
+  bool weave() const { return weave_on_; }
   // Renders into the currently bound framebuffer of size width × height: the backdrop first,
   // then opaque surfaces, then see-through cloth blended over them.
   void draw(const Camera& camera, int width, int height);
@@ -91,6 +98,8 @@ private:
   std::unique_ptr<ClothMethod> cloth_;  // the method's GPU side: draws every cloth object
   std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
   SgLighting sgs_, backdrop_sgs_;
+  std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
+  bool weave_on_ = false;
   Backdrop backdrop_ = Backdrop::measure;
 };
 

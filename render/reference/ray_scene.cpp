@@ -90,6 +90,7 @@ SurfacePoint RayScene::surface(const RayHit& hit) const {
   s.normal = glm::normalize(b0 * m.normals[t[0]] + hit.b1 * m.normals[t[1]] + hit.b2 * m.normals[t[2]]);
   if (!m.warps.empty()) s.warp = b0 * m.warps[t[0]] + hit.b1 * m.warps[t[1]] + hit.b2 * m.warps[t[2]];
   else s.warp = glm::dvec3(0.0);
+  if (!m.uvs.empty()) s.uv = b0 * m.uvs[t[0]] + hit.b1 * m.uvs[t[1]] + hit.b2 * m.uvs[t[2]];
   return s;
 }
 

@@ -20,6 +20,7 @@ struct RayHit {
 // Interpolated shading data at a hit.
 struct SurfacePoint {
   glm::dvec3 position, geometric_normal, normal, warp;  // warp: zero for meshes without UVs
+  glm::dvec2 uv{0.0};                                   // zero for meshes without UVs
 };
 
 class RayScene {

@@ -12,6 +12,7 @@
 #include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
+#include "scene/weave_scale.h"
 
 namespace weft {
 
@@ -30,12 +31,20 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
   if (options_.sg_grid < 1) throw std::invalid_argument("sg_grid must be ≥ 1");
   if (lighting_.sgs.empty() && !lighting_.samples) throw std::invalid_argument("reference: no lighting given");
   if (options_.tangent_samples < 1) throw std::invalid_argument("tangent_samples must be ≥ 1");
+  if (options_.supersample < 1 || options_.supersample > 16) throw std::invalid_argument("supersample must be within 1..16");
+  if (options_.resolved_weave && options_.thin_cloth)
+    throw std::invalid_argument("reference: the resolved weave is for opaque cloth, not the thin layer");
   for (const auto& obj : scene.objects) {
     const Fabric* fabric = nullptr;
     if (obj.material == Material::cloth) {
       auto it = fabrics.find(obj.fabric);
       if (it == fabrics.end()) throw std::invalid_argument("reference: no fabric '" + obj.fabric + "' loaded");
       fabric = &it->second;
+    }
+    weaves_.emplace_back();
+    if (fabric && options_.resolved_weave) {
+      const Fabric f = object_fabric(obj, *fabric);
+      weaves_.back() = Weave{WeaveLayout(f), weave_tiles_per_uv(obj, f)};
     }
     for (int level = 0; level < kLevels; ++level)
       bsdfs_[level].push_back(fabric ? std::make_unique<ClothBsdf>(object_fabric(obj, *fabric), options_.tangent_samples << level)
@@ -68,12 +77,24 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   const ClothBsdf* bsdf = bsdfs_[level][hit.object].get();
   SurfaceFrame frame;
   if (bsdf) frame = SurfaceFrame::from_normal_warp(s.normal, s.warp);
+  // The resolved weave: the thread sample at this point of the repeat; a gap reflects nothing.
+  int thread = -1;
+  double tilt = 0.0;
+  const auto& weave = weaves_[hit.object];
+  if (bsdf && weave) {
+    const WeaveSample w = weave->layout.at(s.uv.x * weave->tiles_per_uv.x, s.uv.y * weave->tiles_per_uv.y);
+    if (w.thread < 0) return dvec3(0.0);
+    thread = w.thread;
+    const TangentCurve& curve = bsdf->fabric().threads[thread].curve;
+    tilt = curve.tilt_at(w.arc * curve.total_length());
+  }
 
   if (!lighting_.sgs.empty()) {
     SgQuadratureOptions opt;
     opt.fixed_polar = options_.sg_grid << level;
     opt.parallel = false;
     opt.visible = visible;
+    if (bsdf && thread >= 0) return integrate_sg_resolved(*bsdf, frame, thread, tilt, wo, lighting_.sgs, opt).radiance;
     if (bsdf) return integrate_sg_lighting(*bsdf, frame, wo, lighting_.sgs, opt).radiance;
     return integrate_sg_lambertian(s.normal, obj.albedo, lighting_.sgs, opt).radiance;
   }
@@ -85,7 +106,7 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
     ClothBsdf::Point point = bsdf->at(frame);
     for (const auto& d : samples)
       if (glm::dot(d.direction, frame.n) > 0.0 && visible(d.direction))
-        sum += d.power * point.integrand(d.direction, wo);
+        sum += d.power * (thread >= 0 ? point.resolved_integrand(thread, tilt, d.direction, wo) : point.integrand(d.direction, wo));
   } else {
     const dvec3 brdf = obj.albedo / std::numbers::pi;
     for (const auto& d : samples) {
@@ -97,7 +118,11 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
 }
 
 std::optional<RayHit> ReferenceRenderer::primary_hit(int x, int y, dvec3& dir) const {
-  dir = camera_ray(scene_.camera, options_.width, options_.height, x + 0.5, y + 0.5);
+  return primary_hit_at(x + 0.5, y + 0.5, dir);
+}
+
+std::optional<RayHit> ReferenceRenderer::primary_hit_at(double px, double py, dvec3& dir) const {
+  dir = camera_ray(scene_.camera, options_.width, options_.height, px, py);
   return rays_.intersect(scene_.camera.position, dir);
 }
 
@@ -112,8 +137,18 @@ PixelKind ReferenceRenderer::kind(int x, int y) const {
 }
 
 dvec3 ReferenceRenderer::pixel(int x, int y, int level, PixelKind* kind) const {
+  const int n = options_.supersample;
+  if (n == 1) return trace(x + 0.5, y + 0.5, level, kind);
+  if (kind) *kind = this->kind(x, y);
+  dvec3 sum(0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) sum += trace(x + (i + 0.5) / n, y + (j + 0.5) / n, level, nullptr);
+  return sum / double(n * n);
+}
+
+dvec3 ReferenceRenderer::trace(double px, double py, int level, PixelKind* kind) const {
   dvec3 dir;
-  const auto hit = primary_hit(x, y, dir);
+  const auto hit = primary_hit_at(px, py, dir);
   const PixelKind k = kind_of(hit);
   if (kind) *kind = k;
   if (!hit) return lighting_.background ? lighting_.background(dir) : dvec3(0.0);

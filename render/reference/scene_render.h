@@ -19,6 +19,7 @@
 
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
+#include "core/weave_layout.h"
 #include "image/image.h"
 #include "reference/ray_scene.h"
 #include "scene/scene.h"
@@ -59,6 +60,13 @@ struct ReferenceRenderOptions {
   // Shadow rays against the scene; false: only the surface's own horizon (its geometric normal)
   // cuts the light, for studies that split an error into shading and visibility.
   bool occlusion = true;
+  // The resolved weave (docs/design.md §2): each cloth point shows the one thread sample that
+  // lies there in the weave's repeat (core/weave_layout.h, sized by scene/weave_scale.h), gaps
+  // black, instead of the fabric-level average. Opaque cloth only.
+  bool resolved_weave = false;
+  // Rays per pixel along each axis (supersample² in all, on a regular grid, averaged): what a
+  // resolved close-up needs to be ground truth for a pixel that covers part of a repeat.
+  int supersample = 1;
   // Called with the fraction done, from one thread, at most a few hundred times.
   std::function<void(double)> progress;
 };
@@ -115,10 +123,18 @@ private:
   std::array<std::vector<std::unique_ptr<ClothBsdf>>, kLevels> bsdfs_;
   ReferenceLighting lighting_;
   ReferenceRenderOptions options_;
+  struct Weave {
+    WeaveLayout layout;
+    glm::dvec2 tiles_per_uv;
+  };
+  std::vector<std::optional<Weave>> weaves_;  // per object; set for cloth when resolved_weave
   mutable std::map<int, std::vector<DirectionalSample>> samples_;  // filled before parallel use
   const std::vector<DirectionalSample>& samples_at(int level) const;
   // The primary ray through pixel (x, y)'s centre (`dir`) and what it hits; its kind.
   std::optional<RayHit> primary_hit(int x, int y, glm::dvec3& dir) const;
+  std::optional<RayHit> primary_hit_at(double px, double py, glm::dvec3& dir) const;
+  // Radiance along the primary ray through image point (px, py).
+  glm::dvec3 trace(double px, double py, int level, PixelKind* kind) const;
   PixelKind kind_of(const std::optional<RayHit>& hit) const;
 };
 

@@ -96,6 +96,22 @@ SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFra
   return integrate(make_f, frame.n, sgs, opt);
 }
 
+SgQuadratureResult integrate_sg_resolved(const ClothBsdf& bsdf, const SurfaceFrame& frame, int thread, double tilt,
+                                         const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                                         const SgQuadratureOptions& opt) {
+  if (glm::dot(wo, frame.n) <= 0.0 || sgs.empty()) {
+    SgQuadratureResult res;
+    res.converged = true;
+    return res;
+  }
+  auto make_f = [&] {
+    return [point = bsdf.at(frame), &wo, thread, tilt](const dvec3& wi) mutable {
+      return point.resolved_integrand(thread, tilt, wi, wo);
+    };
+  };
+  return integrate(make_f, frame.n, sgs, opt);
+}
+
 SgQuadratureResult integrate_sg_lambertian(const dvec3& n, const dvec3& albedo, std::span<const SphericalGaussian> sgs,
                                            const SgQuadratureOptions& opt) {
   if (sgs.empty()) {

@@ -41,6 +41,12 @@ SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFra
                                          std::span<const SphericalGaussian> sgs,
                                          const SgQuadratureOptions& options = {});
 
+// The resolved weave at one point of the repeat: thread `thread`'s sample at tilt `tilt`
+// (ClothBsdf::Point::resolved_integrand) in place of the fabric-level integrand.
+SgQuadratureResult integrate_sg_resolved(const ClothBsdf& bsdf, const SurfaceFrame& frame, int thread, double tilt,
+                                         const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                                         const SgQuadratureOptions& options = {});
+
 // A Lambertian surface (albedo/π · n·ω_i) with normal n: the floors and occluders of scenes.
 SgQuadratureResult integrate_sg_lambertian(const dvec3& n, const dvec3& albedo,
                                            std::span<const SphericalGaussian> sgs,

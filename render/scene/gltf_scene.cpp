@@ -116,6 +116,7 @@ private:
   // Per material (index + 1; 0 is glTF's default material): its fabric ("" = Lambertian).
   std::vector<std::string> fabrics_;
   std::vector<double> thickness_;  // per material (index + 1): extras.weft.optical_thickness, 0 when absent
+  std::vector<glm::dvec2> repeats_;  // per material (index + 1): extras.weft.weave_repeats_per_uv, 0 when absent
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -172,6 +173,7 @@ bool is_preset(const std::filesystem::path& dir, const std::string& name) {
 void Importer::resolve_materials() {
   fabrics_.assign(m_.materials.size() + 1, "");
   thickness_.assign(m_.materials.size() + 1, 0.0);
+  repeats_.assign(m_.materials.size() + 1, glm::dvec2(0.0));
   bool any_cloth = false;
   for (size_t i = 0; i < m_.materials.size(); ++i) {
     const tinygltf::Material& mat = m_.materials[i];
@@ -183,6 +185,15 @@ void Importer::resolve_materials() {
       if (!(tau > 0.0 && tau <= kMaxOpticalThickness))
         fail(where + ": expected a number in (0, " + std::to_string(int(kMaxOpticalThickness)) + "]");
       thickness_[i + 1] = tau;
+    }
+    if (mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has("weave_repeats_per_uv")) {
+      const tinygltf::Value& r = mat.extras.Get("weft").Get("weave_repeats_per_uv");
+      const std::string where = "materials[" + std::to_string(i) + "] ('" + mat.name + "').extras.weft.weave_repeats_per_uv";
+      const auto value = [&](int k) { return r.IsArray() && r.ArrayLen() == 2 && r.Get(k).IsNumber() ? r.Get(k).GetNumberAsDouble() : -1.0; };
+      const glm::dvec2 repeats{value(0), value(1)};
+      if (!(repeats.x > 0.0 && repeats.y > 0.0 && repeats.x <= kMaxWeaveRepeatsPerUv && repeats.y <= kMaxWeaveRepeatsPerUv))
+        fail(where + ": expected [along u, along v], two numbers in (0, " + std::to_string(int(kMaxWeaveRepeatsPerUv)) + "]");
+      repeats_[i + 1] = repeats;
     }
     if (auto it = options_.fabric_overrides.find(mat.name); it != options_.fabric_overrides.end()) {
       fabric = it->second;
@@ -461,6 +472,7 @@ Scene Importer::run() {
       o.material = Material::cloth;
       o.fabric = fabrics_[i];
       o.optical_thickness = thickness_[i];
+      o.weave_repeats_per_uv = repeats_[i];
     } else {
       o.material = Material::lambertian;
       if (i > 0) {

@@ -54,6 +54,14 @@ glm::dvec3 vec3(const json& v, const std::string& where) {
   return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
 }
 
+glm::dvec2 repeats_per_uv(const json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != 2) throw SceneError(where + ": expected [along u, along v], got " + v.dump());
+  const glm::dvec2 r{number(v[0], where + "[0]"), number(v[1], where + "[1]")};
+  if (!(r.x > 0.0 && r.y > 0.0 && r.x <= kMaxWeaveRepeatsPerUv && r.y <= kMaxWeaveRepeatsPerUv))
+    throw SceneError(where + ": repeats per UV unit must be in (0, " + std::to_string(int(kMaxWeaveRepeatsPerUv)) + "]");
+  return r;
+}
+
 std::string text(const json& v, const std::string& where) {
   if (!v.is_string()) throw SceneError(where + ": expected a string, got " + v.dump());
   return v.get<std::string>();
@@ -174,6 +182,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     if (j.contains("name")) s.name = text(j["name"], origin + ": name");
     if (j.contains("description")) s.description = text(j["description"], origin + ": description");
     if (j.contains("camera")) s.camera = parse_camera(j["camera"], origin + ": camera");
+    if (j.contains("closeup_camera")) s.closeup = parse_camera(j["closeup_camera"], origin + ": closeup_camera");
     if (j.contains("environment")) s.environment = text(j["environment"], origin + ": environment");
     if (j.contains("objects")) {
       json rest = j;
@@ -184,6 +193,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
                             {"up", {s.camera.up.x, s.camera.up.y, s.camera.up.z}},
                             {"fov_deg", s.camera.fov_deg}};
       rest["environment"] = s.environment;
+      rest.erase("closeup_camera");
       Scene extra = parse_scene(rest.dump(), origin, base_dir, options);
       for (auto& o : extra.objects) s.objects.push_back(std::move(o));
     }
@@ -196,6 +206,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
   const std::string cw = origin + ": camera";
   const json& cam = field(j, "camera", origin);
   s.camera = parse_camera(cam, cw);
+  if (j.contains("closeup_camera")) s.closeup = parse_camera(j["closeup_camera"], origin + ": closeup_camera");
 
   s.environment = text(field(j, "environment", origin), origin + ": environment");
 
@@ -213,6 +224,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
       obj.optical_thickness = number_or(o, "optical_thickness", 0.0, where, 0.0, kMaxOpticalThickness);
       if (o.contains("optical_thickness") && obj.optical_thickness <= 0.0)
         throw SceneError(where + ".optical_thickness: must be > 0 (leave it out for the fabric's own)");
+      if (o.contains("weave_repeats_per_uv")) obj.weave_repeats_per_uv = repeats_per_uv(o["weave_repeats_per_uv"], where + ".weave_repeats_per_uv");
     } else if (material == "lambertian") {
       obj.material = Material::lambertian;
       obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");

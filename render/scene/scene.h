@@ -3,6 +3,7 @@
 // occluders with an albedo) whose meshes are generated from the parameters in the scene file.
 // Format: assets/scenes/README.md.
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,10 +37,14 @@ struct SceneObject {
   Material material = Material::lambertian;
   std::string fabric;        // cloth: preset name
   double optical_thickness = 0.0;  // cloth: > 0 overrides the fabric's τ (object_fabric)
+  glm::dvec2 weave_repeats_per_uv{0.0};  // cloth: > 0 sets the weave's repeats per UV unit (scene/weave_scale.h)
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
 };
+
+// The most weave repeats per UV unit a scene or glTF may give.
+inline constexpr double kMaxWeaveRepeatsPerUv = 1e6;
 
 // The fabric cloth object `o` is drawn with: `fabric` (its preset's, or a knob's edit of it) with
 // the object's own overrides (its optical thickness, when it gives one).
@@ -49,6 +54,7 @@ struct Scene {
   std::string name;
   std::string description;
   Camera camera;
+  std::optional<Camera> closeup;  // the close-up the kiosk's zoom moves to (a scene's "closeup_camera")
   std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
                              // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;

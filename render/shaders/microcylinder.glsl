@@ -1,5 +1,5 @@
 // The microcylinder model of DESIGN.md §2 in GLSL ES 3.0, for runtime methods that evaluate it
-// directly (sgpoint). Mirrors render/core/microcylinder.cpp + cloth_bsdf.cpp term by term;
+// directly (sgpoint, the weave layer). Mirrors render/core/microcylinder.cpp + cloth_bsdf.cpp term by term;
 // tests/gpu/microcylinder_parity_test.cpp pins the two together.
 // Needs: #define MAX_TANGENT_SAMPLES before inclusion.
 
@@ -85,11 +85,9 @@ float projection_term(FiberAngles i, FiberAngles o) {
   return masking_mix(masking_gaussian(wrap_angle(i.psi - o.psi)), max(cos(i.psi), 0.0), max(cos(o.psi), 0.0));
 }
 
-// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.
-vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
-  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+// Q(ω_i, ω_o) = Σ_j a_j ⟨P⟩_j + (1 − a_1 − a_2) · max(n·ω_o, 0): ClothBsdf::Point::q.
+float cloth_q(vec3 n, vec3 u, vec3 wi, vec3 wo) {
   vec3 v = cross(n, u);
-  // Q needs ⟨P⟩ of both threads before any W.
   float q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
   for (int j = 0; j < 2; ++j) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
@@ -100,6 +98,15 @@ vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
     }
     q += u_threads[j].coverage * sum / float(u_threads[j].samples);
   }
+  return q;
+}
+
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.
+vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
+  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+  vec3 v = cross(n, u);
+  // Q needs ⟨P⟩ of both threads before any W.
+  float q = cloth_q(n, u, wi, wo);
   if (q <= Q_FLOOR) return vec3(0.0);
   vec3 total = vec3(0.0);
   for (int j = 0; j < 2; ++j) {

@@ -1,0 +1,158 @@
+#include "methods/weave/weave_layer.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gl/gl_error.h"
+#include "methods/fabric_uniforms.h"
+#include "methods/program_cloth.h"
+#include "methods/sg_lighting_uniforms.h"
+#include "methods/sg_lights.h"
+#include "methods/weave/weave_ratio.h"
+#include "scene/weave_scale.h"
+
+namespace weft::gpu {
+
+namespace {
+constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
+constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
+
+void upload_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
+  glUniform1i(p.uniform("u_weave_rows"), layout.rows());
+  glUniform1i(p.uniform("u_weave_shift"), layout.shift());
+  glUniform1f(p.uniform("u_weave_warp_share"), float(layout.warp_share()));
+  glUniform1f(p.uniform("u_weave_width"), float(layout.yarn_width()));
+  std::vector<float> tilts(2 * kMaxCurvePoints, 0.0f), arcs(2 * kMaxCurvePoints, 0.0f);
+  GLint points[2];
+  for (int j = 0; j < 2; ++j) {
+    const TangentCurve& c = fabric.threads[j].curve;
+    points[j] = GLint(c.offsets_deg().size());
+    double arc = 0.0;
+    for (int i = 0; i < points[j]; ++i) {
+      tilts[j * kMaxCurvePoints + i] = float(glm::radians(c.offsets_deg()[i]));
+      arcs[j * kMaxCurvePoints + i] = float(arc / c.total_length());
+      if (i < int(c.lengths().size())) arc += c.lengths()[i];
+    }
+  }
+  glUniform1iv(p.uniform("u_curve_points"), 2, points);
+  glUniform1fv(p.uniform("u_curve_tilts"), 2 * kMaxCurvePoints, tilts.data());
+  glUniform1fv(p.uniform("u_curve_arcs"), 2 * kMaxCurvePoints, arcs.data());
+  glUniform2f(p.uniform("u_tiles_per_uv"), float(tiles_per_uv.x), float(tiles_per_uv.y));
+}
+}  // namespace
+
+size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
+  if (mesh.uvs.size() != mesh.positions.size()) throw GpuError("weave layer: a cloth mesh without UVs");
+  if (!(tiles_per_uv.x > 0.0 && tiles_per_uv.y > 0.0 && std::isfinite(tiles_per_uv.x) && std::isfinite(tiles_per_uv.y)))
+    throw GpuError("weave layer: the weave's repeats per UV unit must be positive and finite");
+  auto o = std::make_unique<Object>();
+  o->mesh = std::make_unique<GpuMesh>(mesh);
+  std::vector<glm::vec3> uv(mesh.uvs.size());
+  for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(mesh.uvs[i], 0.0);
+  o->mesh->add_attribute(kUvAttribute, uv);
+  o->pass = std::make_unique<VertexPass>(mesh);
+  o->tiles_per_uv = tiles_per_uv;
+  o->box_min = o->box_max = mesh.positions.at(0);
+  for (const auto& p : mesh.positions) {
+    o->box_min = glm::min(o->box_min, p);
+    o->box_max = glm::max(o->box_max, p);
+  }
+  const glm::dvec2 repeat = uv_length(mesh) / tiles_per_uv;
+  o->smallest_repeat = std::min(repeat.x, repeat.y);
+  objects_.push_back(std::move(o));
+  set_fabric(objects_.size() - 1, fabric);
+  return objects_.size() - 1;
+}
+
+void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
+  for (const auto& t : fabric.threads)
+    if (t.curve.offsets_deg().size() > size_t(kMaxCurvePoints))
+      throw GpuError("weave layer: fabric '" + fabric.name + "' has a tangent curve of more than " +
+                     std::to_string(kMaxCurvePoints) + " points");
+  Object& o = *objects_.at(handle);
+  o.bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
+  o.layout = std::make_unique<WeaveLayout>(fabric);
+}
+
+bool WeaveLayer::resolves(size_t handle, const Camera& camera, int height) const {
+  const Object& o = *objects_.at(handle);
+  const glm::dvec3 nearest = glm::clamp(camera.position, o.box_min, o.box_max);
+  const double distance = std::max(glm::length(camera.position - nearest), 1e-6);
+  // Pixels per metre at that distance on the image's vertical axis.
+  const double pixels_per_metre = height / (2.0 * distance * std::tan(glm::radians(camera.fov_deg) / 2.0));
+  return o.smallest_repeat * pixels_per_metre > 1.0 / kWeaveCoarseFootprint;
+}
+
+WeaveLayer::Programs& WeaveLayer::programs(int q_groups) {
+  auto it = programs_.find(q_groups);
+  if (it != programs_.end()) return it->second;
+  GLint out = 0, in = 0;
+  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
+  const int needed = 4 * q_groups + 20, limit = std::min(out, in);
+  if (needed > limit)
+    throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " SGs need " + std::to_string(needed) +
+                   " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
+  const std::string defines = "#define Q_GROUPS " + std::to_string(q_groups) + "\n#define MAX_SGS " +
+                              std::to_string(kMaxSgs) + "\n#define RATIO_FLOOR " + std::to_string(kWeaveRatioFloor) +
+                              "\n#define RATIO_CAP " + std::to_string(kWeaveRatioCap) + "\n";
+  Programs p;
+  p.pass = std::make_unique<GlProgram>(
+      fullscreen_triangle_vs(),
+      program_source({"microcylinder.glsl", "vertex_pass.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"}, defines));
+  p.draw = std::make_unique<GlProgram>(
+      program_source({"weave_layer.vert"}, defines),
+      program_source({"microcylinder.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
+  return programs_.emplace(q_groups, std::move(p)).first->second;
+}
+
+void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
+  Object& o = *objects_.at(handle);
+  if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
+  const int groups = std::max(1, int((sgs.size() + 3) / 4));
+  Programs& p = programs(groups);
+  std::vector<float> axes, powers;
+  for (const auto& g : sgs) {
+    const glm::dvec3 power = sg_power(g);
+    axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
+    powers.insert(powers.end(), {float(power.r), float(power.g), float(power.b)});
+  }
+  auto set_up = [&](const GlProgram& program) {
+    program.use();
+    glUniform3f(program.uniform("u_eye"), eye.x, eye.y, eye.z);
+    upload_fabric(program, *o.bsdf);
+    upload_layout(program, *o.layout, o.bsdf->fabric(), o.tiles_per_uv);
+    glUniform1i(program.uniform("u_sg_count"), GLint(sgs.size()));
+    if (!sgs.empty()) {
+      glUniform3fv(program.uniform("u_sg_axis"), GLsizei(sgs.size()), axes.data());
+      glUniform3fv(program.uniform("u_sg_power"), GLsizei(sgs.size()), powers.data());
+    }
+  };
+  set_up(*p.pass);
+  o.pass->run(*p.pass, 0, groups + 1);
+  set_up(*p.draw);
+  glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform2f(p.draw->uniform("u_lod"), float(kWeaveFineFootprint), float(kWeaveCoarseFootprint));
+  o.pass->bind_result(*p.draw, 3);
+  GLint depth_func = GL_LESS;
+  glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
+  const GLboolean blend = glIsEnabled(GL_BLEND);
+  GLboolean depth_mask = GL_TRUE, colour_mask[4];
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_DST_COLOR, GL_ZERO);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  o.mesh->draw();
+  glDepthFunc(GLenum(depth_func));
+  glDepthMask(depth_mask);
+  glColorMask(colour_mask[0], colour_mask[1], colour_mask[2], colour_mask[3]);
+  if (!blend) glDisable(GL_BLEND);
+  check_gl("drawing the weave layer");
+}
+
+}  // namespace weft::gpu

@@ -1,0 +1,30 @@
+// The weave layer, step 3: the factor weave_ratio() gives at the pixel's point of the repeat,
+// eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
+// repeats, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
+// with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl.
+uniform vec3 u_eye;
+uniform highp vec2 u_tiles_per_uv;
+uniform vec2 u_lod;
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_warp;
+in highp vec2 v_uv;
+in vec3 v_fabric;
+in vec4 v_q[Q_GROUPS];
+out vec4 o_factor;
+void main() {
+  highp vec2 st = v_uv * u_tiles_per_uv;
+  float footprint = max(length(dFdx(st)), length(dFdy(st)));
+  float coarse = smoothstep(u_lod.x, u_lod.y, footprint);
+  if (coarse >= 1.0) {
+    o_factor = vec4(1.0);
+    return;
+  }
+  vec3 n = normalize(v_normal);
+  vec3 wo = normalize(u_eye - v_position);
+  if (dot(n, wo) < 0.0) n = -n;
+  vec3 u = normalize(v_warp - dot(v_warp, n) * n);
+  vec4 q[Q_GROUPS];
+  for (int g = 0; g < Q_GROUPS; ++g) q[g] = v_q[g];
+  o_factor = vec4(mix(weave_ratio(n, u, wo, st, v_fabric, q), vec3(1.0), coarse), 1.0);
+}

@@ -1,0 +1,54 @@
+#pragma once
+// The weave layer's GPU side (methods/weave/weave_ratio.h): after a fabric-level method has drawn
+// a cloth object, multiplies the colour where the object lies by the layer's factor (blending
+// dst·src), so close-ups show each thread and distant cloth keeps the method's shading. Three
+// steps per draw: the vertex pass (fabric-level response and Q per vertex), the mesh with UVs,
+// and the factor per pixel. Skipped outright where no point of the object can come closer than
+// the coarse footprint (the object's nearest point against its smallest repeat).
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+#include "core/weave_layout.h"
+#include "gl/gl_program.h"
+#include "gl/gpu_mesh.h"
+#include "methods/iwasaki/vertex_pass.h"
+#include "scene/scene.h"
+
+namespace weft::gpu {
+
+class WeaveLayer {
+public:
+  // One cloth object: its mesh (kept by the caller), fabric and repeats per UV unit
+  // (scene/weave_scale.h). Returns its handle. Needs a current GLES 3 context.
+  size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv);
+  // A knob edit: the factor follows the new colours and gloss.
+  void set_fabric(size_t handle, const Fabric& fabric);
+  // Whether object `handle` can show its weave from `camera` on an image `height` pixels high.
+  bool resolves(size_t handle, const Camera& camera, int height) const;
+  // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
+  // depth or alpha writes); restores blending and depth state after.
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs);
+
+private:
+  struct Object {
+    std::unique_ptr<GpuMesh> mesh;
+    std::unique_ptr<VertexPass> pass;
+    std::unique_ptr<ClothBsdf> bsdf;
+    std::unique_ptr<WeaveLayout> layout;
+    glm::dvec2 tiles_per_uv{1.0};
+    glm::dvec3 box_min{0.0}, box_max{0.0};
+    double smallest_repeat = 0.0;  // metres
+  };
+  struct Programs {
+    std::unique_ptr<GlProgram> pass, draw;
+  };
+  Programs& programs(int q_groups);
+  std::vector<std::unique_ptr<Object>> objects_;
+  std::map<int, Programs> programs_;  // by Q_GROUPS
+  int tangent_samples_ = 16;
+};
+
+}  // namespace weft::gpu

@@ -1,0 +1,26 @@
+// The weave layer, step 2: the mesh with its UVs, and each vertex's fabric-level response and
+// per-SG Q from the vertex pass (weave_vertex_pass.frag), read by gl_VertexID and interpolated.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_warp;
+layout(location = 4) in vec3 a_uv;  // (u, v, 0)
+uniform mat4 u_view_projection;
+uniform highp sampler2D u_vertex_radiance;
+uniform int u_vertex_width;
+uniform int u_vertex_rows;
+out vec3 v_position;
+out vec3 v_normal;
+out vec3 v_warp;
+out highp vec2 v_uv;
+out vec3 v_fabric;
+out vec4 v_q[Q_GROUPS];
+void main() {
+  ivec2 texel = ivec2(gl_VertexID % u_vertex_width, gl_VertexID / u_vertex_width);
+  v_fabric = texelFetch(u_vertex_radiance, texel, 0).rgb;
+  for (int g = 0; g < Q_GROUPS; ++g) v_q[g] = texelFetch(u_vertex_radiance, texel + ivec2(0, (g + 1) * u_vertex_rows), 0);
+  v_position = a_position;
+  v_normal = a_normal;
+  v_warp = a_warp;
+  v_uv = a_uv.xy;
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+}

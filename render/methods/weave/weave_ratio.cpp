@@ -1,0 +1,48 @@
+#include "methods/weave/weave_ratio.h"
+
+#include <algorithm>
+
+#include "methods/sg_lights.h"
+
+namespace weft {
+
+WeaveVertexTerms weave_vertex_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                    std::span<const SphericalGaussian> sgs) {
+  WeaveVertexTerms t;
+  auto point = bsdf.at(frame);
+  for (const auto& g : sgs) {
+    t.fabric += sg_power(g) * point.integrand(g.axis, wo);
+    t.q.push_back(point.q(g.axis, wo));
+  }
+  return t;
+}
+
+dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
+                  glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs) {
+  const WeaveSample w = layout.at(st.x, st.y);
+  if (w.thread < 0) return dvec3(0.0);
+  const TangentCurve& curve = bsdf.fabric().threads[w.thread].curve;
+  const double alpha = curve.tilt_at(w.arc * curve.total_length());
+  const auto point = bsdf.at(frame);
+  dvec3 resolved(0.0);
+  for (size_t k = 0; k < sgs.size(); ++k)
+    if (terms.q.at(k) > kQFloor) resolved += sg_power(sgs[k]) * point.resolved_scattering(w.thread, alpha, sgs[k].axis, wo) / terms.q[k];
+  dvec3 ratio;
+  for (int c = 0; c < 3; ++c) ratio[c] = terms.fabric[c] > kWeaveRatioFloor ? std::min(resolved[c] / terms.fabric[c], kWeaveRatioCap) : 1.0;
+  return ratio;
+}
+
+double weave_detail(double footprint) {
+  const double x = std::clamp((footprint - kWeaveFineFootprint) / (kWeaveCoarseFootprint - kWeaveFineFootprint), 0.0, 1.0);
+  return 1.0 - x * x * (3.0 - 2.0 * x);
+}
+
+dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
+                   glm::dvec2 st, double footprint, std::span<const SphericalGaussian> sgs) {
+  const double detail = weave_detail(footprint);
+  if (detail <= 0.0) return dvec3(1.0);
+  const dvec3 r = weave_ratio(bsdf, layout, frame, wo, st, weave_vertex_terms(bsdf, frame, wo, sgs), sgs);
+  return glm::mix(dvec3(1.0), r, detail);
+}
+
+}  // namespace weft

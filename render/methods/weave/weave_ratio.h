@@ -1,0 +1,43 @@
+#pragma once
+// The weave layer (docs/design.md §2, "Resolved weave") on the CPU: the C++ twin of
+// weave_ratio.glsl and weave_vertex_pass.frag. A close-up shows each thread where it lies; the
+// layer gets there by modulating what a fabric-level method drew with
+//   R(x) = Σ_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k)
+//        / Σ_k P_k · integrand(ξ_k, ω_o)     (the fabric-level response to the same lights),
+// whose average over the repeat is 1: the layer adds the weave's detail and keeps every
+// method's fabric-level accuracy and shadows. Eased to 1 by the pixel's footprint (weave_detail).
+#include <span>
+#include <vector>
+
+#include "core/cloth_bsdf.h"
+#include "core/spherical_gaussian.h"
+#include "core/weave_layout.h"
+
+namespace weft {
+
+// Footprints (repeats per pixel) where the layer is whole (≤ first) and where it is gone (≥ second):
+// a repeat over 8 pixels shows its threads, one under 2 pixels is the fabric-level average.
+inline constexpr double kWeaveFineFootprint = 1.0 / 8.0, kWeaveCoarseFootprint = 0.5;
+// Below this fabric-level response the factor is 1; above the cap it is clamped.
+inline constexpr double kWeaveRatioFloor = 1e-7, kWeaveRatioCap = 64.0;
+
+// Per vertex (the vertex pass): the fabric-level response and each SG's Q.
+struct WeaveVertexTerms {
+  dvec3 fabric{0.0};
+  std::vector<double> q;
+};
+WeaveVertexTerms weave_vertex_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                    std::span<const SphericalGaussian> sgs);
+
+// R at tile point st from (interpolated) vertex terms; 0 in a gap.
+dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
+                  glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs);
+
+// How much of R a pixel shows, 1 − smoothstep(fine, coarse, footprint): the rest is 1.
+double weave_detail(double footprint);
+
+// The layer's factor as a pixel applies it: mix(R, 1, 1 − weave_detail(footprint)).
+dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
+                   glm::dvec2 st, double footprint, std::span<const SphericalGaussian> sgs);
+
+}  // namespace weft

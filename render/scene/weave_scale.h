@@ -1,0 +1,28 @@
+#pragma once
+// How big the weave is on a cloth object: tile coordinates (core/weave_layout.h) per UV unit.
+// Scene units are metres; the fabric gives its repeat in centimetres (weave_repeat_cm).
+#include <map>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/fabric.h"
+#include "scene/scene.h"
+
+namespace weft {
+
+// The mesh's length per UV unit along u and along v: each triangle's |∂P/∂u| and |∂P/∂v|,
+// averaged with the triangle's UV area as weight. (1, 1) for a mesh without usable UVs.
+glm::dvec2 uv_length(const TriangleMesh& mesh);
+
+// Repeats per UV unit: the object's own weave_repeats_per_uv where it gives one, else the mesh's
+// UV length against the fabric's repeat.
+glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric);
+
+// The scene's close-up camera, or, where it names none, its camera moved along the view toward the
+// target until the smallest weave repeat of its cloth spans `repeat_pixels` on an image
+// `height` pixels high (never farther than the camera already is).
+Camera closeup_camera(const Scene& scene, const std::map<std::string, Fabric>& fabrics, int height,
+                      double repeat_pixels = 24.0);
+
+}  // namespace weft
