@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "gl/gl_error.h"
@@ -19,7 +20,9 @@ namespace {
 constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
 constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
 
-void upload_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
+}  // namespace
+
+void upload_weave_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
   glUniform1i(p.uniform("u_weave_rows"), layout.rows());
   glUniform1i(p.uniform("u_weave_shift"), layout.shift());
   glUniform1f(p.uniform("u_weave_warp_share"), float(layout.warp_share()));
@@ -41,7 +44,12 @@ void upload_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& 
   glUniform1fv(p.uniform("u_curve_arcs"), 2 * kMaxCurvePoints, arcs.data());
   glUniform2f(p.uniform("u_tiles_per_uv"), float(tiles_per_uv.x), float(tiles_per_uv.y));
 }
-}  // namespace
+
+std::string weave_defines(int q_groups) {
+  char floats[96];
+  std::snprintf(floats, sizeof floats, "#define RATIO_FLOOR %.9e\n#define RATIO_CAP %.9e\n", kWeaveRatioFloor, kWeaveRatioCap);
+  return "#define Q_GROUPS " + std::to_string(q_groups) + "\n#define MAX_SGS " + std::to_string(kMaxSgs) + "\n" + floats;
+}
 
 size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
   if (mesh.uvs.size() != mesh.positions.size()) throw GpuError("weave layer: a cloth mesh without UVs");
@@ -95,9 +103,7 @@ WeaveLayer::Programs& WeaveLayer::programs(int q_groups) {
   if (needed > limit)
     throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " SGs need " + std::to_string(needed) +
                    " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
-  const std::string defines = "#define Q_GROUPS " + std::to_string(q_groups) + "\n#define MAX_SGS " +
-                              std::to_string(kMaxSgs) + "\n#define RATIO_FLOOR " + std::to_string(kWeaveRatioFloor) +
-                              "\n#define RATIO_CAP " + std::to_string(kWeaveRatioCap) + "\n";
+  const std::string defines = weave_defines(q_groups);
   Programs p;
   p.pass = std::make_unique<GlProgram>(
       fullscreen_triangle_vs(),
@@ -123,7 +129,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     program.use();
     glUniform3f(program.uniform("u_eye"), eye.x, eye.y, eye.z);
     upload_fabric(program, *o.bsdf);
-    upload_layout(program, *o.layout, o.bsdf->fabric(), o.tiles_per_uv);
+    upload_weave_layout(program, *o.layout, o.bsdf->fabric(), o.tiles_per_uv);
     glUniform1i(program.uniform("u_sg_count"), GLint(sgs.size()));
     if (!sgs.empty()) {
       glUniform3fv(program.uniform("u_sg_axis"), GLsizei(sgs.size()), axes.data());

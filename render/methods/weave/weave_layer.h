@@ -14,10 +14,16 @@
 #include "core/weave_layout.h"
 #include "gl/gl_program.h"
 #include "gl/gpu_mesh.h"
+#include "methods/fabric_uniforms.h"
 #include "methods/iwasaki/vertex_pass.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
+
+// The layout's and curves' uniforms of weave_layout.glsl, and u_tiles_per_uv (the program is in use).
+void upload_weave_layout(const GlProgram& program, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv);
+// The #defines the weave GLSL needs for `q_groups` groups of four SGs.
+std::string weave_defines(int q_groups);
 
 class WeaveLayer {
 public:
@@ -48,7 +54,9 @@ private:
   Programs& programs(int q_groups);
   std::vector<std::unique_ptr<Object>> objects_;
   std::map<int, Programs> programs_;  // by Q_GROUPS
-  int tangent_samples_ = 16;
+  // The vertex pass averages each float continuously enough for the sharpest Table II lobe (satin's
+  // γ_s = 2.5°): its fabric-level term must be the repeat's average of what the pixels show.
+  int tangent_samples_ = kMaxTangentSamples;
 };
 
 }  // namespace weft::gpu
