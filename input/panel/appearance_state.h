@@ -20,6 +20,7 @@ struct AppearanceState {
   uint32_t preset_index = 0;       // into the preset list the mapper was given
   ThreadAppearance thread[2];      // [0] warp (thread 1), [1] weft (thread 2)
   float env_rotation_deg = 0.0f;   // [0, 360)
+  float zoom = 0.0f;               // 0: the scene's camera … 1: its close-up
   ThreadSelection selection = ThreadSelection::both;  // which thread the dials edit (on-screen hint)
 };
 static_assert(std::is_trivially_copyable_v<AppearanceState>);

@@ -22,6 +22,12 @@ std::vector<KnobEvent> keyboard_events(char key, uint32_t time_ms) {
       return {e};
     }
   }
+  if (lower == 't' || lower == 'g') {  // zoom: closer / back
+    KnobEvent e;
+    e.zoom = lower == 't' ? detents : -detents;
+    e.time_ms = time_ms;
+    return {e};
+  }
   int button = -1;
   if (key >= '1' && key <= '4') button = key - '1';
   if (key == '0' || key == ' ') button = 4;

@@ -1,6 +1,7 @@
 #pragma once
 // Knobs from the keyboard, for development without a panel. Keys (terminal, no Enter needed):
 //   q/a  dial 0 ±1      w/s  dial 1 ±1      e/d  dial 2 ±1      r/f  dial 3 ±1
+//   t/g  zoom closer / back ±1
 //   1..4 click the push of dial 0..3        0 or space  click the reset button (4)
 // Upper-case turns by 5 detents. Reads from a file descriptor (stdin by default) so tests can
 // feed a pipe; a terminal is put in non-canonical mode while the source runs.

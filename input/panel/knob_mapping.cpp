@@ -43,9 +43,11 @@ int KnobMapper::accelerated(int dial, int detents, uint32_t time_ms) {
 
 void KnobMapper::select_preset(uint32_t index) {
   const ThreadSelection keep = positions_.selection;
+  const int zoom = positions_.zoom_steps;
   positions_ = KnobPositions{};
   positions_.preset = index;
   positions_.selection = keep;
+  positions_.zoom_steps = zoom;
 }
 
 void KnobMapper::clamp() {
@@ -60,14 +62,20 @@ void KnobMapper::clamp() {
     p.gloss_steps[t] = std::clamp(p.gloss_steps[t], -config_.gloss_limit_steps, config_.gloss_limit_steps);
   }
   p.env_steps = wrap(p.env_steps, env_period);
+  p.zoom_steps = std::clamp(p.zoom_steps, 0, std::max(config_.zoom_steps, 0));
 }
 
 bool KnobMapper::apply(const KnobEvent& event) {
   const KnobPositions before = positions_;
   auto& p = positions_;
+  p.zoom_steps += event.zoom;
   for (int d = 0; d < kDialCount; ++d) {
     if (event.dial[d] == 0) continue;
     const int steps = accelerated(d, event.dial[d], event.time_ms);
+    if (d == config_.zoom_dial) {
+      p.zoom_steps += steps;
+      continue;
+    }
     for (int t = 0; t < 2; ++t) {
       if (!edits(p.selection, t)) continue;
       if (d == 0) p.hue_steps[t] += steps;
@@ -99,6 +107,7 @@ AppearanceState KnobMapper::appearance() const {
   s.preset_index = p.preset;
   s.selection = p.selection;
   s.env_rotation_deg = static_cast<float>(p.env_steps * config_.env_deg_per_step);
+  s.zoom = config_.zoom_steps > 0 ? static_cast<float>(p.zoom_steps) / static_cast<float>(config_.zoom_steps) : 0.0f;
   for (int t = 0; t < 2; ++t) {
     const auto& a = presets_[p.preset].albedo[t];
     Hsv c = hsv_from_rgb(a[0], a[1], a[2]);

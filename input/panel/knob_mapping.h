@@ -5,6 +5,8 @@
 //   dial 2  gloss of the selection                 γ_s and γ_v together, ×2 per 8 steps, ±2 octaves
 //                                                  (clockwise = glossier = narrower lobes)
 //   dial 3  environment rotation                   5° per step, wraps
+//   zoom    camera from the scene's view to its close-up, 8 steps (keyboard t/g, or the dial
+//           MappingConfig::zoom_dial names)
 //   button 0 (push dial 0)  selection: both threads → warp → weft → both
 //   button 1 (push dial 1)  previous fabric preset   button 2 (push dial 2)  next fabric preset
 //   button 3 (push dial 3)  environment back to 0°   button 4 (reset)  undo all edits of this fabric
@@ -34,6 +36,7 @@ struct KnobPositions {
   std::array<int, 2> brightness_steps{};
   std::array<int, 2> gloss_steps{};
   int env_steps = 0;
+  int zoom_steps = 0;  // 0: the scene's camera … MappingConfig::zoom_steps: its close-up (not persisted)
   bool operator==(const KnobPositions&) const = default;
 };
 
@@ -44,6 +47,8 @@ struct MappingConfig {
   int gloss_steps_per_octave = 8;
   int gloss_limit_steps = 16;      // ±2 octaves of γ
   double env_deg_per_step = 5.0;
+  int zoom_steps = 8;   // from the scene's camera to its close-up
+  int zoom_dial = -1;   // a dial (0–3) that zooms instead of its own job; −1: none
   uint32_t accel_x2_ms = 50;
   uint32_t accel_x4_ms = 20;
 };

@@ -19,6 +19,7 @@ struct KnobEvent {
   std::array<int, kDialCount> dial{};  // detents since the previous event, + = clockwise
   uint8_t buttons = 0;                 // buttons held now (bit i = button i)
   uint32_t time_ms = 0;                // the source's clock; used for turn acceleration
+  int zoom = 0;                        // detents of the zoom control (keyboard t/g), + = closer
 };
 
 using KnobSink = std::function<void(const KnobEvent&)>;

@@ -36,6 +36,7 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--frames", a->frames, "Stop after this many ticks (display refreshes); 0: until SIGTERM")
       ->capture_default_str();
   sub->add_option("--turntable", a->turntable, "Camera turn, degrees per second (0: still)")->capture_default_str();
+  sub->add_option("--zoom", a->zoom, "Start the camera this share of the way to the scene's close-up (0: its view, 1: the close-up; the zoom knob adds to it)")->capture_default_str();
   CLI::Option* panel =
       sub->add_option("--panel", a->panel,
                       "Knobs: hid, gpio, keyboard, sim:SCRIPT (simulated USB panel) or none; default: the panel "

@@ -17,7 +17,9 @@
 #include "kiosk/kiosk_light_probe.h"
 #include "kiosk/knob_appearance.h"
 #include "kiosk/knob_sources.h"
+#include "kiosk/camera_zoom.h"
 #include "kiosk/turntable.h"
+#include "scene/weave_scale.h"
 #include "journal/journal_log.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
@@ -28,6 +30,25 @@ namespace {
 // Every line goes to stderr, which systemd sends to the journal (with its priority).
 void log_info(const std::string& s) { log_line("weft run", LogPriority::info, s); }
 void log_warning(const std::string& s) { log_line("weft run", LogPriority::warning, s); }
+
+// The resolved weave for close-ups; a renderer that cannot draw it (a see-through method draws
+// none; a cloth mesh without UVs) shows the fabric level, as at a distance.
+void show_weave(gpu::SceneRenderer& r, const Scene& scene) {
+  try {
+    r.set_weave(true);
+  } catch (const std::exception& e) {
+    log_warning("scene '" + scene.name + "': no close-up weave (" + e.what() + "); the fabric level is shown up close");
+  }
+}
+
+// The scene's close-up for the zoom knob (its closeup_camera, or one where a repeat spans 24 pixels).
+Camera closeup_of(const Scene& scene, const std::vector<Fabric>& cloth, int height) {
+  std::map<std::string, Fabric> fabrics;
+  size_t c = 0;
+  for (const auto& o : scene.objects)
+    if (o.material == Material::cloth && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
+  return closeup_camera(scene, fabrics, height);
+}
 void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
 
 constexpr auto kTickPeriod = std::chrono::microseconds(16667);
@@ -143,6 +164,7 @@ void Kiosk::check_config() {
     throw KioskConfigError("--exposure: a multiplier > 0 on the metered exposure (1: none; --exposure-bias takes EV)");
   if (!std::isfinite(c.turntable) || std::abs(c.turntable) > 360)
     throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
+  if (!(c.zoom >= 0.0 && c.zoom <= 1.0)) throw KioskConfigError("--zoom: the way to the close-up, in [0, 1]");
   if (c.method != "auto") try {
       gpu::parse_method(c.method);
     } catch (const std::invalid_argument& e) {
@@ -280,8 +302,10 @@ void Kiosk::start_knobs() {
 void Kiosk::start_renderer() {
   const SceneBundle& sb = *scene_;
   cloth_fabrics_ = cloth_fabrics(sb);
+  closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   renderer_ = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth_fabrics_, *method_, 16, iwasaki_);
   renderer_->set_backdrop(gpu::Backdrop::showroom);
+  show_weave(*renderer_, sb.scene);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (kms_) tonemap_ = std::make_unique<gpu::ToneMapper>();
 }
@@ -353,12 +377,15 @@ void Kiosk::tick() {
   poll_light();
   const bool light_changed = take_prepared_lighting();
   const bool scene_changed = poll_bundle();
-  const bool view_changed = std::abs(turn - shown_turn_) > 1e-4;
+  zoom_shown_ = ease_zoom(zoom_shown_, zoom_target_, std::chrono::duration<double>(tick_start - zoom_step_).count());
+  zoom_step_ = tick_start;
+  const bool view_changed = std::abs(turn - shown_turn_) > 1e-4 || zoom_shown_ != zoom_drawn_;
   const bool adapting = std::abs(std::log(exposure_ / exposure_target_)) > 0.01;  // still easing in
   const bool redraw = knobs_changed || light_changed || scene_changed || view_changed || adapting;
   if (redraw) {
     draw_frame(turn);
     shown_turn_ = turn;
+    zoom_drawn_ = zoom_shown_;
     ++drawn_;
     if (scene_changed) log_swap_shown();
     if (knobs_changed && report_ns != 0)
@@ -468,6 +495,7 @@ void Kiosk::start_swap(LoadedBundle loaded) {
   try {
     p->renderer = std::make_unique<gpu::SceneRenderer>(p->bundle.scene.scene, p->cloth_fabrics, *p->method, 16, p->bundle.iwasaki);
     p->renderer->set_backdrop(gpu::Backdrop::showroom);
+    show_weave(*p->renderer, p->bundle.scene.scene);
   } catch (const std::exception& e) {
     log_error("content update refused: bundle " + config_.bundle + ": cannot draw it: " + e.what() + "; still showing '" +
               scene_->scene.name + "' from " + shown_.file.string());
@@ -513,6 +541,7 @@ bool Kiosk::finish_swap() {
   iwasaki_ = p->bundle.iwasaki;
   room_light_ = p->room_light;
   scene_ = std::move(p->bundle.scene);
+  closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
   shown_ = {config_.bundle, false, ""};
   shown_fingerprint_ = p->bundle.fingerprint;
   swapped_ = p->change;
@@ -581,6 +610,7 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
     log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
   }
+  zoom_target_ = std::clamp(config_.zoom + double(s.zoom), 0.0, 1.0);
   if (s.env_rotation_deg != light_rotation_) {
     // Before the first frame a turned light is set at once: meter the first frame under it
     // (afterwards the worker's hand-over asks for metering: take_prepared_lighting).
@@ -602,7 +632,7 @@ void Kiosk::relight(const SgLighting& sgs) {
 void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
   target_->bind();
-  renderer_->draw(turned_about_z(scene_->scene.camera, turn_deg), width_, height_);
+  renderer_->draw(turned_about_z(dolly(scene_->scene.camera, closeup_, zoom_shown_), turn_deg), width_, height_);
   if (meter_next_) meter_exposure(width_, height_);
   const auto now = Clock::now();
   exposure_ = adapt_exposure(exposure_, exposure_target_, std::chrono::duration<double>(now - exposure_step_).count(),

@@ -71,6 +71,7 @@ struct KioskConfig {
   std::string display = "auto";           // auto (KMS, else headless), kms or headless
   long frames = 0;                        // ticks to run; 0 = until stop
   double turntable = 6.0;                 // camera turn, degrees per second about the target's +Z
+  double zoom = 0.0;                      // the camera's way to the scene's close-up, 0 … 1, before the zoom knob's
   // Knob source: hid, gpio, keyboard, sim:SCRIPT or none (kiosk/knob_sources.h); empty: the
   // panel config's "sources" (default hid).
   std::string panel = "hid";
@@ -221,6 +222,10 @@ private:
   long hang_after_ = -1;
   Clock::time_point loop_start_, last_stats_;
   double shown_turn_ = 0;
+  // The zoom knob: the close-up of the scene shown, the knobs' zoom, the zoom shown (eased).
+  Camera closeup_;
+  double zoom_target_ = 0, zoom_shown_ = 0, zoom_drawn_ = 0;
+  Clock::time_point zoom_step_;
   long ticks_ = 0, drawn_ = 0;
   long rss_start_kib_ = 0;
   RecentSamples frame_ms_, since_stats_ms_, latency_ms_;

@@ -101,8 +101,17 @@ float cloth_q(vec3 n, vec3 u, vec3 wi, vec3 wo) {
   return q;
 }
 
-// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.
-vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
+// Thread p with both lobes widened by the variance `widen2` (radians²): γ² → γ² + widen2.
+Thread widened(Thread p, float widen2) {
+  if (widen2 <= 0.0) return p;
+  p.gamma_s = sqrt(p.gamma_s * p.gamma_s + widen2);
+  p.gamma_v = sqrt(p.gamma_v * p.gamma_v + widen2);
+  return p;
+}
+
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u), each lobe widened by `widen2`
+// (0: ClothBsdf::Point::integrand itself).
+vec3 cloth_integrand_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
   if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
   vec3 v = cross(n, u);
   // Q needs ⟨P⟩ of both threads before any W.
@@ -120,9 +129,12 @@ vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) {
       if (p <= 0.0) continue;
       float w = u_threads[j].coverage * masking_term(fi, fo) * p / q;
       if (w <= 0.0) continue;
-      sum += scattering(u_threads[j], fi, fo) * (w * cos(fi.theta));
+      sum += scattering(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
     }
     total += sum / float(u_threads[j].samples);
   }
   return total;
 }
+
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.
+vec3 cloth_integrand(vec3 n, vec3 u, vec3 wi, vec3 wo) { return cloth_integrand_widened(n, u, wi, wo, 0.0); }

@@ -66,15 +66,17 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   program.use();
   upload_fabric(program, bsdf);
   upload_weave_layout(program, layout, fabric, {1.0, 1.0});
-  std::vector<float> axes, powers;
+  std::vector<float> axes, powers, widen2;
   for (const auto& g : sgs) {
     const dvec3 p = sg_power(g);
+    widen2.push_back(float(weave_lobe_widening(g.sharpness)));
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     powers.insert(powers.end(), {float(p.r), float(p.g), float(p.b)});
   }
   glUniform1i(program.uniform("u_sg_count"), 4);
   glUniform3fv(program.uniform("u_sg_axis"), 4, axes.data());
   glUniform3fv(program.uniform("u_sg_power"), 4, powers.data());
+  glUniform1fv(program.uniform("u_sg_widen2"), 4, widen2.data());
 
   constexpr int kW = 32, kH = 16, kCases = kW * kH;
   std::mt19937 rng(11);

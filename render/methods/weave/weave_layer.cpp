@@ -119,9 +119,10 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
   if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
   const int groups = std::max(1, int((sgs.size() + 3) / 4));
   Programs& p = programs(groups);
-  std::vector<float> axes, powers;
+  std::vector<float> axes, powers, widen2;
   for (const auto& g : sgs) {
     const glm::dvec3 power = sg_power(g);
+    widen2.push_back(float(weave_lobe_widening(g.sharpness)));
     axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
     powers.insert(powers.end(), {float(power.r), float(power.g), float(power.b)});
   }
@@ -134,6 +135,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     if (!sgs.empty()) {
       glUniform3fv(program.uniform("u_sg_axis"), GLsizei(sgs.size()), axes.data());
       glUniform3fv(program.uniform("u_sg_power"), GLsizei(sgs.size()), powers.data());
+      glUniform1fv(program.uniform("u_sg_widen2"), GLsizei(sgs.size()), widen2.data());
     }
   };
   set_up(*p.pass);

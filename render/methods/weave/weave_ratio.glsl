@@ -1,13 +1,14 @@
 // The weave layer's factor (methods/weave/weave_ratio.h): the resolved sample's response to the SGs
-// taken as point lights, over the fabric-level response to the same lights, so that the factor
+// taken as point lights (each lobe widened by the SG's own spread), over the fabric-level response to the same lights, so that the factor
 // averages to 1 over the repeat and modulates what the fabric-level method drew. Needs
 // microcylinder.glsl and weave_layout.glsl before it, and MAX_SGS.
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
 uniform vec3 u_sg_power[MAX_SGS];
+uniform float u_sg_widen2[MAX_SGS];  // weave_lobe_widening(λ_k)
 
 // f_s · M · P · cos θ_i of thread j's sample at tilt α: ClothBsdf::Point::resolved_scattering.
-vec3 resolved_scattering(vec3 n, vec3 u, int j, float alpha, vec3 wi, vec3 wo) {
+vec3 resolved_scattering(vec3 n, vec3 u, int j, float alpha, vec3 wi, vec3 wo, float widen2) {
   if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
   vec3 v = cross(n, u);
   vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
@@ -17,7 +18,7 @@ vec3 resolved_scattering(vec3 n, vec3 u, int j, float alpha, vec3 wi, vec3 wo) {
   if (p <= 0.0) return vec3(0.0);
   float w = masking_term(fi, fo) * p;
   if (w <= 0.0) return vec3(0.0);
-  return scattering(u_threads[j], fi, fo) * (w * cos(fi.theta));
+  return scattering(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
 }
 
 // The factor at tile point st, given the fabric-level response `fabric` (Σ_k P_k·integrand) and
@@ -32,7 +33,7 @@ vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 q[Q_G
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
       if (q[g][c] <= Q_FLOOR) continue;
-      resolved += u_sg_power[k] * resolved_scattering(n, u, w.thread, alpha, u_sg_axis[k], wo) / q[g][c];
+      resolved += u_sg_power[k] * resolved_scattering(n, u, w.thread, alpha, u_sg_axis[k], wo, u_sg_widen2[k]) / q[g][c];
     }
   vec3 ratio;
   for (int c = 0; c < 3; ++c) ratio[c] = fabric[c] > RATIO_FLOOR ? min(resolved[c] / fabric[c], RATIO_CAP) : 1.0;

@@ -21,6 +21,12 @@ inline constexpr double kWeaveFineFootprint = 1.0 / 8.0, kWeaveCoarseFootprint =
 // Below this fabric-level response the factor is 1; above the cap it is clamped.
 inline constexpr double kWeaveRatioFloor = 1e-7, kWeaveRatioCap = 64.0;
 
+// An SG of sharpness λ as a point light spreads θ_i by about 1/√λ, so θ_h = (θ_i + θ_o)/2 by
+// 1/(2√λ): both sides of the factor see each lobe widened by that variance, γ² → γ² + 1/(4λ).
+double weave_lobe_widening(double sharpness);
+// The fabric with both lobes of both threads widened by `widen2` (radians²).
+Fabric widened_fabric(Fabric fabric, double widen2);
+
 // Per vertex (the vertex pass): the fabric-level response and each SG's Q.
 struct WeaveVertexTerms {
   dvec3 fabric{0.0};

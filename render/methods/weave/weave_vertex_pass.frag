@@ -18,7 +18,7 @@ void main() {
   vec3 u = normalize(warp - dot(warp, n) * n);
   if (t.k == 0) {
     vec3 fabric = vec3(0.0);
-    for (int k = 0; k < u_sg_count; ++k) fabric += u_sg_power[k] * cloth_integrand(n, u, u_sg_axis[k], wo);
+    for (int k = 0; k < u_sg_count; ++k) fabric += u_sg_power[k] * cloth_integrand_widened(n, u, u_sg_axis[k], wo, u_sg_widen2[k]);
     o_value = vec4(fabric, 1.0);
     return;
   }

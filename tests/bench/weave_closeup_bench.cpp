@@ -1,0 +1,138 @@
+// Benchmark (label bench, not run in CI): the weave layer up close, against the resolved
+// reference (the reference's resolved weave, supersampled pixels) under the same 10 SGs.
+//  - accuracy at the close-up (scene/weave_scale.h closeup_camera: the scene's close-up, or its
+//    camera moved in until a repeat spans 24 pixels of the accuracy image): relative RMSE over the
+//    cloth pixels of the fabric-level rung alone and with the weave layer;
+//  - speed at 640×480 of the same view, with and without the layer (median of timed frames);
+//  - at the scene's own camera the layer must leave the frame exactly as the rung draws it;
+//  - flicker: a camera dollying from 60 % to 100 % of the way to the close-up in 16 steps (the
+//    level-of-detail transition), mean frame-to-frame relative change with and without the layer.
+// WEFT_WEAVE_CASES picks cases ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "bake/scene_bake.h"
+#include "bench/image_metrics.h"
+#include "frame/frame_inputs.h"
+#include "frame/frame_render.h"
+#include "kiosk/camera_zoom.h"
+#include "reference/scene_render.h"
+#include "scene/weave_scale.h"
+
+using namespace weft;
+
+namespace {
+const std::filesystem::path kAssets = WEFT_SOURCE_ASSETS;
+
+struct Case {
+  std::string scene, fabric;  // fabric empty: the scene's own
+};
+
+std::vector<Case> cases() {
+  const char* env = std::getenv("WEFT_WEAVE_CASES");
+  std::string list = env ? env
+                         : "swatch:linen_plain,swatch:silk_crepe_de_chine,swatch:polyester_satin_charmeuse,"
+                           "swatch:polyester_satin_charmeuse_back,swatch:silk_shot,swatch:velvet,showroom:";
+  std::vector<Case> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto colon = item.find(':');
+    out.push_back({item.substr(0, colon), colon == std::string::npos ? "" : item.substr(colon + 1)});
+  }
+  return out;
+}
+
+double mean_change(const Image& a, const Image& b, const std::vector<bool>& cloth) {
+  double d2 = 0.0, sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    if (cloth[i]) {
+      const glm::dvec3 d = a.pixels[i] - b.pixels[i];
+      d2 += glm::dot(d, d) / 3.0;
+      sum += (b.pixels[i].r + b.pixels[i].g + b.pixels[i].b) / 3.0;
+      ++n;
+    }
+  return n && sum > 0.0 ? std::sqrt(d2 / n) / (sum / n) : 0.0;
+}
+}  // namespace
+
+TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
+  constexpr int kW = 160, kH = 120;
+  std::ostringstream table;
+  table << "| scene | fabric | repeat px | rung | error alone | error + weave | ms alone | ms + weave | ratio | "
+           "far view max change | flicker alone | flicker + weave |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Case& c : cases()) {
+    FrameInputs in = load_frame_inputs({kAssets, c.scene, c.fabric, "", ""});
+    const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
+    const Camera far = in.scene.camera;
+    const Camera close = closeup_camera(in.scene, in.fabrics, kH);
+    in.scene.camera = close;
+    // The repeat's size in pixels at the close-up's target, on the accuracy image.
+    double repeat_px = 0.0;
+    for (const auto& o : in.scene.objects)
+      if (o.material == Material::cloth) {
+        const glm::dvec2 r = uv_length(o.mesh) / weave_tiles_per_uv(o, object_fabric(o, in.fabrics.at(o.fabric)));
+        const double d = glm::length(close.target - close.position);
+        const double px = std::min(r.x, r.y) * kH / (2.0 * d * std::tan(glm::radians(close.fov_deg) / 2.0));
+        repeat_px = repeat_px == 0.0 ? px : std::min(repeat_px, px);
+      }
+    ReferenceRenderOptions ro;
+    ro.width = kW;
+    ro.height = kH;
+    ro.sg_grid = 6;
+    ro.tangent_samples = 16;
+    ro.check_convergence = false;
+    ro.resolved_weave = true;
+    ro.supersample = std::getenv("WEFT_WEAVE_SUPERSAMPLE") ? std::atoi(std::getenv("WEFT_WEAVE_SUPERSAMPLE")) : 3;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ReferenceRenderResult ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+    std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    IwasakiBakeOptions bo;
+    in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, bo));
+    const bool quick = std::getenv("WEFT_WEAVE_QUICK") != nullptr;  // accuracy of iwasaki_vertex only
+    for (const std::string method : {"iwasaki_vertex", "iwasaki"}) {
+      if (quick && method == "iwasaki") break;
+      auto frame = [&](const Camera& cam, int w, int h, int frames, bool weave) {
+        Scene s = in.scene;
+        s.camera = cam;
+        return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.iwasaki, gpu::Backdrop::measure, weave);
+      };
+      const double alone = bench::cloth_error(frame(close, kW, kH, 0, false).image, ref.image, ref.kinds).relative_rmse;
+      const double woven = bench::cloth_error(frame(close, kW, kH, 0, true).image, ref.image, ref.kinds).relative_rmse;
+      const int speed_frames = method == "iwasaki" ? 1 : 5;
+      const double ms_alone = quick ? 1.0 : frame(close, 640, 480, speed_frames, false).median_ms;
+      const double ms_woven = quick ? 1.0 : frame(close, 640, 480, speed_frames, true).median_ms;
+      const GpuFrame far_alone = frame(far, kW, kH, 0, false), far_woven = frame(far, kW, kH, 0, true);
+      double far_change = 0.0;
+      for (size_t i = 0; i < far_alone.image.pixels.size(); ++i)
+        far_change = std::max(far_change, glm::length(far_alone.image.pixels[i] - far_woven.image.pixels[i]));
+      double flicker[2] = {0.0, 0.0};
+      for (int weave = 0; weave < (quick ? 0 : 2); ++weave) {
+        GpuFrame prev = frame(dolly(far, close, 0.6), kW, kH, 0, weave);
+        for (int k = 1; k <= 16; ++k) {
+          GpuFrame next = frame(dolly(far, close, 0.6 + 0.4 * k / 16.0), kW, kH, 0, weave);
+          std::vector<bool> both(next.cloth.size());
+          for (size_t i = 0; i < both.size(); ++i) both[i] = next.cloth[i] && prev.cloth[i];
+          flicker[weave] += mean_change(next.image, prev.image, both) / 16.0;
+          prev = std::move(next);
+        }
+      }
+      char row[512];
+      std::snprintf(row, sizeof row, "| %s | %s | %.0f | %s | %.4f | %.4f | %.1f | %.1f | %.2f | %.1e | %.4f | %.4f |\n",
+                    c.scene.c_str(), c.fabric.empty() ? "(scene's)" : c.fabric.c_str(), repeat_px, method.c_str(), alone,
+                    woven, ms_alone, ms_woven, ms_woven / ms_alone, far_change, flicker[0], flicker[1]);
+      table << row;
+      std::cout << row << std::flush;
+      EXPECT_EQ(far_change, 0.0) << c.scene << " " << method << ": the layer changed the distant view";
+    }
+  }
+  std::cout << "\n" << table.str();
+  if (const char* out = std::getenv("WEFT_WEAVE_OUT")) std::ofstream(out) << table.str();
+}
