@@ -1,7 +1,7 @@
 #pragma once
 // Mirror-ball (chrome sphere) geometry: which world direction a camera pixel on the ball sees.
 //
-// Camera-to-world orientation (world frame of DESIGN.md §3, right-handed, +Z up): the camera
+// Camera-to-world orientation (world frame of docs/design.md §3, right-handed, +Z up): the camera
 // looks along world +Y at the ball, image x (right) is world +X, image y (down) is world −Z.
 // So the direction from the ball towards the camera is V = −Y, and the point of the ball
 // straight in front of the camera reflects the camera itself (R = V = −Y); the ball's rim

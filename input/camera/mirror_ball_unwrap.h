@@ -1,5 +1,5 @@
 #pragma once
-// Merged mirror-ball photograph -> equirect environment map in the world frame (DESIGN.md §3),
+// Merged mirror-ball photograph -> equirect environment map in the world frame (docs/design.md §3),
 // ready for the SG fit. Every texel averages 3×3 reflected directions spread over its extent,
 // each looked up (bilinear) where the ball reflects it (mirror_ball.h). Texels in the masked
 // cap behind the ball (which the ball does not show usefully) take the solid-angle weighted

@@ -1,7 +1,7 @@
 #pragma once
 // The command line shared by `weft` and its offline helper `weft-offline`: the subcommands a
 // binary registers, the subcommands it only lists (another executable runs them), the parse,
-// and the exit codes (0 ok, 1 runtime failure, 2 bad usage or bad input: DESIGN.md §1).
+// and the exit codes (0 ok, 1 runtime failure, 2 bad usage or bad input: docs/design.md §1).
 #include <utility>
 #include <vector>
 

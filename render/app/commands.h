@@ -1,7 +1,7 @@
 #pragma once
 // Each subcommand registers its options on the `weft` app and returns the action to run once
 // the command line is parsed. Actions return the exit code: 0 ok, 1 runtime failure, 2 bad
-// usage or bad input (DESIGN.md §1).
+// usage or bad input (docs/design.md §1).
 #include <functional>
 
 #include <CLI/CLI.hpp>

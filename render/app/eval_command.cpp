@@ -115,7 +115,7 @@ CommandAction add_eval_command(CLI::App& app) {
   sub->add_option("--fabric", a->fabric, "Fabric: a preset name (assets/fabrics/NAME.json) or a .json file")->capture_default_str();
   sub->add_option("--view", a->view, "Direction toward the viewer, x,y,z (normalised; z > 0)")->required();
   sub->add_option("--sg", a->sgs, "An SG light: axis_x,axis_y,axis_z,lambda,r,g,b (repeatable)")->required();
-  sub->add_option("--method", a->method, "Method: reference (converged quadrature of DESIGN.md §2), iwasaki (seed 000) or mizutani (seed 001, no visibility); the last two bake their tables first")
+  sub->add_option("--method", a->method, "Method: reference (converged quadrature of docs/design.md §2), iwasaki (seed 000) or mizutani (seed 001, no visibility); the last two bake their tables first")
       ->capture_default_str();
   sub->add_option("--tangent-samples", a->tangent_samples, "Tangent samples per thread N_j")->capture_default_str();
   sub->add_option("--tolerance", a->tolerance, "Convergence: relative change between grid doublings")

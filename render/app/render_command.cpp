@@ -1,5 +1,5 @@
 // `weft render`: one frame of a showroom scene to EXR (linear radiance) plus a tone-mapped PNG
-// beside it, with `reference` (ground truth of DESIGN.md §2 by ray casting and quadrature) or a
+// beside it, with `reference` (ground truth of docs/design.md §2 by ray casting and quadrature) or a
 // GPU method (frame/ holds the work).
 #include <cmath>
 #include <iostream>
@@ -33,7 +33,7 @@ struct RenderArgs {
   int sg_grid = 8;
   int map_width = 128;
   int sg_count = 10;
-  int tangent_samples = 32;  // DESIGN.md §2: the reference converges in N_j ≥ 32
+  int tangent_samples = 32;  // docs/design.md §2: the reference converges in N_j ≥ 32
   int check_stride = 6;
   bool no_check = false;
   double exposure = 0.0;  // 0: automatic
@@ -119,7 +119,7 @@ CommandAction add_render_command(CLI::App& app) {
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: the scene's; a glTF naming no cloth: every material)");
   sub->add_option("--env", a->env, "Environment: a map name (assets/envmaps/NAME.exr) or an .exr path, NAME@DEG (rotated about +Z), or "
                   "sky:elev=E,size=S,haze=T,azim=A,albedo=G (procedural) (default: the scene's)");
-  sub->add_option("--method", a->method, "Method: reference (ground truth of DESIGN.md §2, CPU) or a GPU method: sgpoint, iwasaki, iwasaki_vertex, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
+  sub->add_option("--method", a->method, "Method: reference (ground truth of docs/design.md §2, CPU) or a GPU method: sgpoint, iwasaki, iwasaki_vertex, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")
       ->capture_default_str();
   sub->add_option("--sgs", a->sgs_file,

@@ -1,9 +1,9 @@
 #pragma once
-// "Model no more than the scene needs" (DESIGN.md §4) for the weighting tables: given an
+// "Model no more than the scene needs" (docs/design.md §4) for the weighting tables: given an
 // error target E, pick the cheapest settings that keep each measured error under E, and say
 // what was chosen. Each knob is measured against a converged version of itself:
 //  - tangent samples N_j per thread: the fabric's radiance under SG lights with N_j samples
-//    against N_j = 32 (DESIGN.md §2's converged count), the other thread held at 32;
+//    against N_j = 32 (docs/design.md §2's converged count), the other thread held at 32;
 //  - λ levels: T at the geometric midpoint between two levels against the runtime's linear
 //    interpolation in log λ, on a subsample of ξ;
 //  - SVD rank per (t, λ): exact truncation error (low_rank.h), so it is simply E.

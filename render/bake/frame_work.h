@@ -1,6 +1,6 @@
 #pragma once
 // The frame cost the setting search (bake/scene_selection.h) ranks seed 000's two shadings by,
-// modelled at the kiosk's resolution (DESIGN.md §6: speed at 640×480) so that per-pixel and
+// modelled at the kiosk's resolution (docs/design.md §6: speed at 640×480) so that per-pixel and
 // per-vertex settings compete on one scale. Unit: one per-pixel shading step, one cloth pixel ×
 // one SG × one tangent sample (the runtime's loops, methods/iwasaki/iwasaki.glsl).
 //   per-pixel:   P × S × T̄

@@ -1,5 +1,5 @@
 #pragma once
-// "Model no more than the scene needs" (DESIGN.md §4) for a whole scene: the setting of every
+// "Model no more than the scene needs" (docs/design.md §4) for a whole scene: the setting of every
 // cost knob of seed 000's method (SG count of the map's fit, tangent samples per thread, λ
 // levels, SVD error, SDF resolution, PCA error, the cloth mesh's density for per-vertex shading,
 // per-vertex or per-pixel shading) is chosen so

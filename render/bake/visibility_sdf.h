@@ -4,7 +4,7 @@
 // the angular (θ, φ) domain, and the gradient ∇d the runtime uses to build the linear
 // visibility V' of Eq. 12.
 //
-// Parametrisation (the vertex's thread-1 frame, DESIGN.md §2 with α = 0: t = u, n' = n, b = v):
+// Parametrisation (the vertex's thread-1 frame, docs/design.md §2 with α = 0: t = u, n' = n, b = v):
 //   θ = asin(ω·u) ∈ [−π/2, π/2],  φ = atan2(ω·v, ω·n),
 //   ω(θ, φ) = sin θ·u + cos θ·(cos φ·n + sin φ·v).
 // The hemisphere n·ω > 0 is φ ∈ (−π/2, π/2). The stored grid is that square, N×N cells of

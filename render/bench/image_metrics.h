@@ -1,5 +1,5 @@
 #pragma once
-// DESIGN.md §6's accuracy measure over the cloth pixels, and an error map to look at.
+// docs/design.md §6's accuracy measure over the cloth pixels, and an error map to look at.
 #include <vector>
 
 #include "image/image.h"

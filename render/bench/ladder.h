@@ -1,5 +1,5 @@
 #pragma once
-// The ladder of DESIGN.md §4 as the method registry orders it (methods::bench_ladder()): a
+// The ladder of docs/design.md §4 as the method registry orders it (methods::bench_ladder()): a
 // method is benchmarked when the GPU runtime has it; the rest are reported as missing. `scenes` limits a method to the
 // scenes it is for; `thin_reference`: measured against the reference with cloth as seed 004's
 // thin layer (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.

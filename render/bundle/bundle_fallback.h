@@ -1,5 +1,5 @@
 #pragma once
-// Boot-time bundle selection for the kiosk (DESIGN.md §5): use the freshly baked bundle if it
+// Boot-time bundle selection for the kiosk (docs/design.md §5): use the freshly baked bundle if it
 // verifies, else the last good copy, and say why. A bundle that verifies becomes the new last
 // good copy (replaced atomically, so a power cut never leaves a half-written one).
 #include <filesystem>

@@ -4,7 +4,7 @@
 //   g^c(x;μ,σ) = exp((2/σ²)(cos(x−μ) − 1))   (Eq. 2)   circular_gaussian
 //   g(x;μ,σ)   = exp(−(x−μ)²/σ²)             (Eq. 3)   bandwidth_gaussian
 //   g^u(x;μ,σ) = g(x;μ,σ)/(√π σ)              (Eq. 4)   normalized_bandwidth_gaussian
-// σ is a bandwidth, not a standard deviation: g(x;0,σ) has standard deviation σ/√2, so DESIGN.md's
+// σ is a bandwidth, not a standard deviation: g(x;0,σ) has standard deviation σ/√2, so docs/design.md's
 // N(x;γ) (Table II's γ, a standard deviation) is g^u(x;0,√2·γ). Angles in radians.
 #include <limits>
 
@@ -33,7 +33,7 @@ struct ScaledCircularGaussian {
 // (= exp(−4κ₁κ₂ sin²((μ₁−μ₂)/2)/(κ₃ + κ₁ + κ₂)), the form evaluated). Scales multiply.
 ScaledCircularGaussian product(const ScaledCircularGaussian& a, const ScaledCircularGaussian& b);
 
-// Seed 000 Eq. 11: an SG lobe G_k in a thread frame (t, n', b) of DESIGN.md §2, with θ, φ the fiber
+// Seed 000 Eq. 11: an SG lobe G_k in a thread frame (t, n', b) of docs/design.md §2, with θ, φ the fiber
 // angles of fiber_angles(), splits as G_k(ω_i) = g^c(θ_i;θ_k,σ_k)·g^c(φ_i;φ_k,σ'_k) where (θ_k, φ_k)
 // are the angles of ξ_k and σ'_k = σ_k/√(cosθ_i cosθ_k). With σ'_k taken at the true θ_i this is
 // exact (ω·ξ − 1 = (cos(θ_i−θ_k) − 1) + cosθ_i cosθ_k (cos(φ_i−φ_k) − 1)); the approximation the

@@ -1,6 +1,6 @@
 #pragma once
 // The whole fabric's response: both threads' tangent samples combined with Sadeghi's
-// reweighting (DESIGN.md §2: Q, W, and the integrand of L_o). One implementation, used by
+// reweighting (docs/design.md §2: Q, W, and the integrand of L_o). One implementation, used by
 // the reference, the baker and the tests.
 #include <span>
 #include <vector>

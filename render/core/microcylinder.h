@@ -1,6 +1,6 @@
 #pragma once
 // The canonical microcylinder model, per tangent sample (Sadeghi et al. 2013 as restated in
-// seed 000 Eq. 5–7, with the conventions of DESIGN.md §2). This file is the model's only
+// seed 000 Eq. 5–7, with the conventions of docs/design.md §2). This file is the model's only
 // definition: the reference, the baker and every test call it.
 #include <glm/glm.hpp>
 
@@ -24,7 +24,7 @@ struct ThreadFrame {
   dvec3 t, n_prime, b;
 };
 
-// thread 0 is DESIGN's thread 1 (along u), thread 1 is thread 2 (along v). α in radians.
+// thread 0 is docs/design.md's thread 1 (along u), thread 1 is thread 2 (along v). α in radians.
 ThreadFrame thread_frame(const SurfaceFrame& s, int thread, double alpha);
 
 // θ = asin(ω·t), φ = atan2(ω·b, ω·n'), ψ = atan2(ω·t, ω·n').
@@ -71,7 +71,7 @@ double projection(const FiberAngles& in, const FiberAngles& out);
 // Denominators the model divides by (cos²θ_d, cos θ_i + cos θ_o) vanish only when both
 // directions run along the thread; they are floored here so the model stays finite there.
 inline constexpr double kModelDenominatorFloor = 1e-12;
-// Q at or below this gives W = 0 (DESIGN.md §2).
+// Q at or below this gives W = 0 (docs/design.md §2).
 inline constexpr double kQFloor = 1e-8;
 
 }  // namespace weft

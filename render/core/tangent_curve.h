@@ -1,5 +1,5 @@
 #pragma once
-// Tangent curve of one thread (Sadeghi 2013 Table II, DESIGN.md §2): a piecewise-linear tilt
+// Tangent curve of one thread (Sadeghi 2013 Table II, docs/design.md §2): a piecewise-linear tilt
 // α(s) over arc length s. Offsets o_0..o_m in degrees, segment lengths ℓ_0..ℓ_{m-1}; a zero
 // length is a jump, so no sample ever lands inside it.
 #include <string>

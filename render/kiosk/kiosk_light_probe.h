@@ -1,6 +1,6 @@
 #pragma once
 // The kiosk's optional light probe (`weft run --probe ...`): the room's light, fitted to SGs on
-// the probe's own thread and picked up by the frame loop without waiting (DESIGN.md §5).
+// the probe's own thread and picked up by the frame loop without waiting (docs/design.md §5).
 //   none               the bundle's stored SGs only
 //   camera[:ID]        libcamera (first camera, or the one with this id); absent: stored SGs stay
 //   mock:A.exr[,B.exr] a simulated mirror-ball camera in map A; with several maps it switches to

@@ -1,6 +1,6 @@
 #pragma once
 // The renderer's side of the knob hand-off: what the knob mapper needs from the fabric presets,
-// and the preset with the knobs' AppearanceState applied (DESIGN.md §2: a knob edit changes A and
+// and the preset with the knobs' AppearanceState applied (docs/design.md §2: a knob edit changes A and
 // the gloss pair γ_s, γ_v of one thread, kept at their ratio).
 #include <vector>
 

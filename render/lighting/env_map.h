@@ -1,5 +1,5 @@
 #pragma once
-// Equirectangular environment maps (DESIGN.md §3): loading and writing OpenEXR, the
+// Equirectangular environment maps (docs/design.md §3): loading and writing OpenEXR, the
 // direction <-> texel mapping, bilinear lookup, per-texel solid angle, area-weighted resampling.
 //
 // Orientation (Blender's, +Z up): for a unit direction d,
@@ -59,7 +59,7 @@ struct EnvMap {
   glm::dvec3 lookup(const glm::dvec3& d) const;
 };
 
-// The mapping of DESIGN.md §3. uv in [0,1]²; v = 1 is straight up (+Z).
+// The mapping of docs/design.md §3. uv in [0,1]²; v = 1 is straight up (+Z).
 glm::dvec2 direction_to_uv(const glm::dvec3& d);
 glm::dvec3 uv_to_direction(const glm::dvec2& uv);
 // Continuous pixel coordinates (x right, y down from the top row; texel (i, j) spans [i, i+1) ×

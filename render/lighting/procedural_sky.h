@@ -1,5 +1,5 @@
 #pragma once
-// A procedural clear sky as an equirect EnvMap in Weft's frame (+Z up, DESIGN.md §3): the sky
+// A procedural clear sky as an equirect EnvMap in Weft's frame (+Z up, docs/design.md §3): the sky
 // dome after Preetham, Shirley and Smits 1999 (Perez distribution of luminance and chromaticity
 // with their turbidity fits, zenith luminance and chromaticity), a sun disc of uniform
 // radiance, and a Lambertian ground lit by both. Units: the paper's kcd/m² for the sky, the

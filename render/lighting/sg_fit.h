@@ -1,5 +1,5 @@
 #pragma once
-// Fitting K spherical Gaussians to an environment map (DESIGN.md §3, `weft fit`).
+// Fitting K spherical Gaussians to an environment map (docs/design.md §3, `weft fit`).
 //
 // Objective, on the map resampled (area-weighted) to a fit grid, with μ_k ≥ 0 (RGB) and λ_k in
 // [min_sharpness, max_sharpness]:

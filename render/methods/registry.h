@@ -20,7 +20,7 @@ const RuntimeMethod* find_method(std::string_view name);
 const RuntimeMethod& method(std::string_view name);
 std::vector<std::string> method_names();
 
-// One row of the bench's speed/accuracy ladder (DESIGN.md §4).
+// One row of the bench's speed/accuracy ladder (docs/design.md §4).
 struct BenchLadderEntry {
   std::string name;
   std::set<std::string> scenes;  // empty: every scene

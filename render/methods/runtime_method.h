@@ -1,5 +1,5 @@
 #pragma once
-// One runtime method as the registry lists it (DESIGN.md §4): its name and traits, what makes its
+// One runtime method as the registry lists it (docs/design.md §4): its name and traits, what makes its
 // GPU side, and its C++ evaluation. Each method's folder defines its entry (<name>_method.h).
 #include <functional>
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// An environment map as directional samples for the reference (DESIGN.md §3 orientation):
+// An environment map as directional samples for the reference (docs/design.md §3 orientation):
 // the map is cut into a width × width/2 grid of cells in (u, v); each cell becomes one
 // direction carrying the cell's radiant power ∫L dω (exact sum over the map's texels), placed
 // at the cell's luminance-weighted centroid direction so a small bright light keeps its true

@@ -1,5 +1,5 @@
 #pragma once
-// Ground truth of DESIGN.md §2 for a whole scene: per pixel, one primary ray through the pixel
+// Ground truth of docs/design.md §2 for a whole scene: per pixel, one primary ray through the pixel
 // centre (Embree); at a cloth hit the shading frame is the interpolated normal and warp, and
 //   L_o = ∫ L(ω_i) V(ω_i) · ClothBsdf::Point::integrand(ω_i, ω_o) dω_i
 // is integrated deterministically with visibility by shadow rays; Lambertian surfaces
@@ -48,7 +48,7 @@ struct ReferenceLighting {
 struct ReferenceRenderOptions {
   int width = 320, height = 240;
   int sg_grid = 8;           // SG lighting: sg_grid × 2·sg_grid cells per SG at level 0
-  int tangent_samples = 32;  // N_j per thread at level 0 (each level doubles it too); DESIGN.md §2: ≥ 32
+  int tangent_samples = 32;  // N_j per thread at level 0 (each level doubles it too); docs/design.md §2: ≥ 32
   // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
   int check_stride = 4;
   bool check_convergence = true;

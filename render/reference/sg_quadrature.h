@@ -36,7 +36,7 @@ struct SgQuadratureResult {
   double last_change = 0.0;   // relative change at the last doubling
 };
 
-// The cloth model of DESIGN.md §2 (ClothBsdf::Point::integrand) at `frame`.
+// The cloth model of docs/design.md §2 (ClothBsdf::Point::integrand) at `frame`.
 SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
                                          std::span<const SphericalGaussian> sgs,
                                          const SgQuadratureOptions& options = {});

@@ -1,5 +1,5 @@
 #pragma once
-// How many tangent samples N_j the reference needs (DESIGN.md §2: "the reference converges in
+// How many tangent samples N_j the reference needs (docs/design.md §2: "the reference converges in
 // N_j"): the check subset of the renderer (every `check_stride`-th pixel in x and y, its cloth
 // pixels) is rendered at N, 2N, 4N, ... from a minimum until doubling changes it by at most a
 // tolerance (relative RMSE, relative_change), up to a cap. Only the tangent samples are refined;

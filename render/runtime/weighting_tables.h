@@ -4,8 +4,8 @@
 //
 //   T_{t,λ}(ξ, ω_o) = ∫_Ω G(ω_i; ξ, λ) W(t, ω_i, ω_o) dω_i / ∫_Ω G(ω_i; ξ, λ) dω_i
 //
-// with G(ω) = exp(λ(ω·ξ − 1)) (λ = 2/σ², DESIGN.md §3), W from ClothBsdf::Point::weights (the
-// one implementation, DESIGN.md §2: it already carries a_j), Ω the upper hemisphere.
+// with G(ω) = exp(λ(ω·ξ − 1)) (λ = 2/σ², docs/design.md §3), W from ClothBsdf::Point::weights (the
+// one implementation, docs/design.md §2: it already carries a_j), Ω the upper hemisphere.
 // Directions are in the shading point's local frame: n = +z, warp u = +x, weft v = +y. ξ and
 // ω_o live on HemisphereNodeGrid (hemisphere_grid.h); ξ below the horizon is looked up at the
 // nearest horizon direction (the paper tabulates ξ on the hemisphere only).

@@ -1,6 +1,6 @@
 #pragma once
 // A triangle mesh as scenes hold it: positions, per-vertex normals and UVs, and for cloth the
-// warp direction field derived from the UVs (DESIGN.md §2: thread 1 runs along u).
+// warp direction field derived from the UVs (docs/design.md §2: thread 1 runs along u).
 #include <array>
 #include <cstdint>
 #include <stdexcept>

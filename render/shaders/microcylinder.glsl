@@ -1,4 +1,4 @@
-// The microcylinder model of DESIGN.md §2 in GLSL ES 3.0, for runtime methods that evaluate it
+// The microcylinder model of docs/design.md §2 in GLSL ES 3.0, for runtime methods that evaluate it
 // directly (sgpoint, the weave layer). Mirrors render/core/microcylinder.cpp + cloth_bsdf.cpp term by term;
 // tests/gpu/microcylinder_parity_test.cpp pins the two together.
 // Needs: #define MAX_TANGENT_SAMPLES before inclusion.
@@ -44,7 +44,7 @@ float fresnel_dielectric(float eta, float cos_i) {
   return 0.5 * (r_s * r_s + r_p * r_p);
 }
 
-// Thread frame of DESIGN.md §2: t = cos α·along + sin α·n, n' = −sin α·along + cos α·n, b = axis.
+// Thread frame of docs/design.md §2: t = cos α·along + sin α·n, n' = −sin α·along + cos α·n, b = axis.
 FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
   float c = cos(alpha), s = sin(alpha);
   vec3 t = c * along + s * n;

@@ -76,7 +76,7 @@ TEST(RenderCli, BadInputExitsWithTwo) {
   EXPECT_FALSE(fs::exists(temp("bad.exr")));
 }
 
-// Scenes, fabrics and maps by path (DESIGN §1): a glTF scene (the fuzz corpus's UV-mapped quad
+// Scenes, fabrics and maps by path (docs/design.md §1): a glTF scene (the fuzz corpus's UV-mapped quad
 // with a linen_plain material), a fabric file and an .exr file outside assets/.
 TEST(RenderCli, GltfSceneFabricFileAndMapByPath) {
   const fs::path gltf = fs::path(WEFT_SOURCE_ASSETS) / "../tests/fuzz/corpus/gltf/quad.gltf";

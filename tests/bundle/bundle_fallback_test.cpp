@@ -1,5 +1,5 @@
 // Kiosk boot: a bad bundle falls back to the last good one and says why; a good one becomes the
-// last good copy, replaced atomically and only when it changed (DESIGN.md §5).
+// last good copy, replaced atomically and only when it changed (docs/design.md §5).
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -1,4 +1,4 @@
-// The canonical model (DESIGN.md §2) against closed forms and invariants it must keep.
+// The canonical model (docs/design.md §2) against closed forms and invariants it must keep.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +40,7 @@ TEST(Fresnel, GrazingIsTotalAndMonotone) {
 }
 
 TEST(Gaussians, NormalGaussianIsSeedGuWithSqrt2Gamma) {
-  // seed 000 Eq. 3–4: g^u(x;0,σ) = exp(−x²/σ²)/(√π σ); DESIGN: σ = √2·γ.
+  // seed 000 Eq. 3–4: g^u(x;0,σ) = exp(−x²/σ²)/(√π σ); docs/design.md: σ = √2·γ.
   for (double gamma : {0.05, 0.2, 1.0})
     for (double x : {-0.3, 0.0, 0.1, 0.7}) {
       const double s = std::sqrt(2.0) * gamma;

@@ -322,7 +322,7 @@ TEST(CircularGaussian, MatchesSeedDefinitionsAndDesignGaussian) {
                   1e-14);
       EXPECT_NEAR(bandwidth_gaussian(x, 0.4, sigma), std::exp(-(x - 0.4) * (x - 0.4) / (sigma * sigma)), 1e-15);
     }
-  // DESIGN.md: N(x;γ) with γ a standard deviation is g^u(x;0,√2γ).
+  // docs/design.md: N(x;γ) with γ a standard deviation is g^u(x;0,√2γ).
   for (double gamma_deg : {2.5, 12.0, 60.0})
     for (double x : {-0.5, 0.0, 0.1, 1.2}) {
       const double gamma = gamma_deg * kDeg;

@@ -28,7 +28,7 @@ SgLighting blue_side() {
           {glm::dvec3(0, 0, -1), 2.0, glm::dvec3(0.3, 0.1, 0.05)}};
 }
 
-// The ray through pixel (x, y) (row 0 at the top), from the camera as DESIGN's renderer sets it up.
+// The ray through pixel (x, y) (row 0 at the top), from the camera as docs/design.md's renderer sets it up.
 glm::dvec3 pixel_ray(const Camera& cam, int x, int y, int w, int h) {
   const glm::dmat4 proj = glm::perspective(glm::radians(cam.fov_deg), double(w) / h, 0.05, 100.0);
   const glm::dmat4 inv = glm::inverse(proj * glm::lookAt(cam.position, cam.target, cam.up));

@@ -1,5 +1,5 @@
 // Benchmark (label bench, not run in CI): seed 000 on the GPU against the reference.
-//  - accuracy: relative RMSE sqrt(mean((x−r)²))/mean(r) over the cloth pixels (DESIGN.md §6) of
+//  - accuracy: relative RMSE sqrt(mean((x−r)²))/mean(r) over the cloth pixels (docs/design.md §6) of
 //    `weft render --method iwasaki` (in-process: same SG fit, GPU frame read back) against
 //    `weft render --method reference --lighting sg` at 320×240, same 10 SGs fitted to the map.
 //    References are slow (minutes): they are cached as EXR under $WEFT_BENCH_REFS (default

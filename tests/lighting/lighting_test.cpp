@@ -48,7 +48,7 @@ std::string run_weft(const std::string& args, int* code) {
 }
 }  // namespace
 
-// DESIGN.md §3 written out for the six axis directions, independently of the code's formula.
+// docs/design.md §3 written out for the six axis directions, independently of the code's formula.
 TEST(EnvMapOrientation, AxisDirectionsFollowBlenderConvention) {
   // −X is the centre of the image, +Y is three quarters across, +X is the seam (u = 0 ≡ 1).
   EXPECT_NEAR(direction_to_uv({-1, 0, 0}).x, 0.5, 1e-12);

@@ -1,5 +1,5 @@
 // Seed 001's approximation (render/methods/mizutani) against the converged reference of
-// DESIGN.md §2 on the unoccluded swatch, where the paper says it works (SGs from broad to
+// docs/design.md §2 on the unoccluded swatch, where the paper says it works (SGs from broad to
 // moderately sharp, views off grazing), and its stability where it does not (λ = 10⁴, 89° views).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Method `iwasaki`: scene.vert's outputs plus what the per-pixel visibility needs (DESIGN.md §4,
+// Method `iwasaki`: scene.vert's outputs plus what the per-pixel visibility needs (docs/design.md §4,
 // seed 000 §3.2 "SDF is interpolated at each pixel"): the triangle's three vertex indices (the
 // mesh is drawn de-indexed, every corner carrying all three) and a one-hot barycentric the
 // rasteriser interpolates.

@@ -3,7 +3,7 @@
 //  - Alternating anisotropy: each thread is an Ashikhmin–Shirley BRDF whose narrow direction
 //    runs along that thread (warp: u, weft: v), so the two threads' highlights differ.
 //  - Procedural yarn normals: the perturbed normal ñ of a yarn point tilts along the thread
-//    by the tangent curve's tilt α (DESIGN.md §2's samples, so each fabric's weave profile is
+//    by the tangent curve's tilt α (docs/design.md §2's samples, so each fabric's weave profile is
 //    its own Table II curve) and across it by ±β (the yarn's round cross-section, β = 15°,
 //    alternating between samples).
 //  - Approximate MDF rotation (Eq. 9–11): the distribution is evaluated at h̃ = R̃ᵀh in the

@@ -5,7 +5,7 @@
 //   L_o = Σ_k μ_k Σ_j (1/N_j) Σ_{t∈C_j} T_{t,λ_k}(ξ_k, ω_o) · ∫ G_k f_s cos θ_i dω_i          (Eq. 8–9)
 //
 // The weighting factor T is seed 001 Eq. 9, the same SG-convolved W that seed 000 Eq. 10 bakes
-// (DESIGN.md §2: one W), so this method reads the same WeightingTables as `iwasaki`.
+// (docs/design.md §2: one W), so this method reads the same WeightingTables as `iwasaki`.
 // The shading factor ∫ G_k f_s cos θ_i dω_i, per lobe (Eq. 10–16):
 //  - G_k = g^c(θ_i;θ_k,σ_k)·g^c(φ_i;φ_k,σ'_k), σ'_k = σ_k/√(cosθ_i cosθ_k) (Eq. 10);
 //  - the longitudinal lobe g^u(θ_h;γ) ≈ g^c(θ_i;−θ_o,2γ)/(√πγ), merged with the SG's θ factor

@@ -1,4 +1,4 @@
-// Method `sgpoint` (DESIGN.md §4): each SG as a directional light along its axis carrying the
+// Method `sgpoint` (docs/design.md §4): each SG as a directional light along its axis carrying the
 // SG's whole power P_k = μ_k·2π(1−e^{−2λ})/λ, shading with the full model. The naive baseline.
 in vec3 v_position;
 in vec3 v_normal;

@@ -1,4 +1,4 @@
-// Method `sheen` (DESIGN.md §4): the peer baseline a glTF viewer would show.
+// Method `sheen` (docs/design.md §4): the peer baseline a glTF viewer would show.
 in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;

@@ -1,5 +1,5 @@
 #pragma once
-// Method `sheen` (DESIGN.md §4): what a glTF / Filament viewer shows for cloth — Lambert plus
+// Method `sheen` (docs/design.md §4): what a glTF / Filament viewer shows for cloth — Lambert plus
 // the Charlie sheen lobe (Estevez & Kulla 2017: D = (2 + 1/α)·sin^{1/α}θ_h / 2π) with
 // Neubelt's visibility V = 1/(4(n·l + n·v − n·l·n·v)), as Filament's cloth model and
 // KHR_materials_sheen do (without the albedo-scaling LUT: the two lobes simply add).
