@@ -51,6 +51,11 @@ run_default() {
     "$weft" bake --scene "$scene" --grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
       --out "$bundle"  # the default settings, coarser grids: a few minutes of CPU (docs/showroom/README.md)
   mkdir -p "$state"
+  # The close-up beside it: the kiosk's zoom all the way in (the scene's closeup_camera), where the
+  # weave layer shows the linen's plain weave and the satin's floats.
+  "$weft" run --bundle "$bundle" --state-dir "$state" --display headless --panel none --frames 1 --zoom 1 \
+    --turntable 0 --screenshot "$BUILD_DIR/showroom-closeup.png"
+  echo "setup: wrote $BUILD_DIR/showroom-closeup.png (the close-up: keys t/g zoom on the kiosk)"
   local panel=none
   [ -t 0 ] && panel=keyboard  # turn the knobs from this terminal (weft run --help; input/panel/KNOBS.md)
   if "$weft" run --bundle "$bundle" --state-dir "$state" --display kms --panel "$panel"; then

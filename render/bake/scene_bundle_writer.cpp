@@ -38,6 +38,9 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
   scene["environment"] = s.environment;
   scene["camera"] = {{"position", vec3(s.camera.position)}, {"target", vec3(s.camera.target)},
                      {"up", vec3(s.camera.up)}, {"fov_deg", s.camera.fov_deg}};
+  if (s.closeup)
+    scene["closeup_camera"] = {{"position", vec3(s.closeup->position)}, {"target", vec3(s.closeup->target)},
+                               {"up", vec3(s.closeup->up)}, {"fov_deg", s.closeup->fov_deg}};
   json objects = json::array();
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
@@ -48,6 +51,8 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
       jo["material"] = "cloth";
       jo["fabric"] = o.fabric;
       if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
+      if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
+        jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);

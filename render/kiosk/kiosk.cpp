@@ -334,6 +334,7 @@ void Kiosk::show_first_frame() {
   meter_as_baked();
   poll_knobs();
   if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
+  zoom_shown_ = zoom_drawn_ = zoom_target_;  // a kiosk started zoomed in (--zoom) shows it at once
   draw_frame(0);
   drawn_ = 1;
   first_frame_shown_ = true;

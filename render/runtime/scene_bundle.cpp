@@ -84,12 +84,18 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
     s.name = j.at("name").get<std::string>();
     s.description = j.value("description", "");
     s.environment = j.value("environment", "");
-    const json& c = j.at("camera");
-    s.camera.position = read_vec3(r, S, c.at("position"));
-    s.camera.target = read_vec3(r, S, c.at("target"));
-    s.camera.up = read_vec3(r, S, c.at("up"));
-    s.camera.fov_deg = c.at("fov_deg").get<double>();
-    if (!(s.camera.fov_deg > 0 && s.camera.fov_deg < 180)) throw bad(r, S, "camera fov_deg out of (0, 180)");
+    auto camera = [&](const json& c, const std::string& what) {
+      Camera cam;
+      cam.position = read_vec3(r, S, c.at("position"));
+      cam.target = read_vec3(r, S, c.at("target"));
+      cam.up = read_vec3(r, S, c.at("up"));
+      cam.fov_deg = c.at("fov_deg").get<double>();
+      if (!(cam.fov_deg > 0 && cam.fov_deg < 180)) throw bad(r, S, what + " fov_deg out of (0, 180)");
+      if (!(glm::length(cam.target - cam.position) > 1e-9)) throw bad(r, S, what + ": position and target coincide");
+      return cam;
+    };
+    s.camera = camera(j.at("camera"), "camera");
+    if (j.contains("closeup_camera")) s.closeup = camera(j.at("closeup_camera"), "closeup_camera");
     const json& objects = j.at("objects");
     if (!objects.is_array() || objects.empty()) throw bad(r, S, "no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
@@ -105,6 +111,14 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
           o.optical_thickness = jo.at("optical_thickness").get<double>();
           if (!(o.optical_thickness > 0.0 && o.optical_thickness <= kMaxOpticalThickness))
             throw bad(r, S, "object '" + o.name + "': optical_thickness outside (0, 20]");
+        }
+        if (jo.contains("weave_repeats_per_uv")) {
+          const json& w = jo.at("weave_repeats_per_uv");
+          if (!w.is_array() || w.size() != 2) throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv is not two numbers");
+          o.weave_repeats_per_uv = {w[0].get<double>(), w[1].get<double>()};
+          for (double x : {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y})
+            if (!(x > 0.0 && x <= kMaxWeaveRepeatsPerUv))
+              throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv outside (0, 10^6]");
         }
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
