@@ -8,10 +8,10 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/progress_bar.h"
-#include "bake/bundle_fabrics.h"
-#include "bake/scene_bake.h"
-#include "bake/scene_bundle_writer.h"
-#include "bake/selection_bundle.h"
+#include "bake/writers/bundle_fabrics.h"
+#include "bake/scene/scene_bake.h"
+#include "bake/writers/scene_bundle_writer.h"
+#include "bake/selection/selection_bundle.h"
 #include "bundle/bundle_writer.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
@@ -31,7 +31,7 @@ struct BakeArgs {
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
   std::vector<int> samples;
   int subdivide = -1;  // ≥ 0: midpoint subdivision levels of the cloth meshes (the search's choice when < 0)
-  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h); holds --grid
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --grid
 };
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }

@@ -8,7 +8,7 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/progress_bar.h"
-#include "bake/scene_bake.h"
+#include "bake/scene/scene_bake.h"
 #include "frame/frame_files.h"
 #include "frame/frame_inputs.h"
 #include "gpu/egl_context.h"

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "bake/scene_selection.h"
+#include "bake/selection/scene_selection.h"
 #include "bench/bench_case.h"
 #include "bench/bench_results.h"
 #include "bench/knob_sweeps.h"
@@ -28,7 +28,7 @@ namespace weft::bench {
 namespace {
 
 // The row of a seed 000 method (iwasaki or iwasaki_vertex) with the setting `weft bake
-// --target-error` picks for it (bake/scene_selection.h, the method held fixed), next to the
+// --target-error` picks for it (bake/selection/scene_selection.h, the method held fixed), next to the
 // paper-default row of the same case; its views' references cached beside the bench's.
 Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, RowMeasure& measure,
                      const std::filesystem::path& cache) {

@@ -1,6 +1,6 @@
 #include "bench/cpu_methods.h"
 
-#include "bake/table_baker.h"
+#include "bake/tables/table_baker.h"
 #include "methods/registry.h"
 
 namespace weft::bench {

@@ -4,9 +4,9 @@
 #include <functional>
 #include <iostream>
 
-#include "bake/bake_selection.h"
+#include "bake/tables/bake_selection.h"
 #include "bench/bench_case.h"
-#include "bench/image_metrics.h"
+#include "measure/image_metrics.h"
 #include "bench/number_text.h"
 #include "bench/report.h"
 #include "bench/stopwatch.h"

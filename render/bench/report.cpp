@@ -76,7 +76,7 @@ void target_error_section(std::ostream& md, const BenchOptions& a, const BenchRe
   if (run_iwasaki && a.target_error > 0) {
     md << "\n## `weft bake --target-error " << fmt(a.target_error) << "` against the paper's settings\n\n"
        << "`METHOD (target " << fmt(a.target_error) << ")`: the setting `weft bake --target-error` picks for the method "
-       << "(bake/scene_selection.h: tangent samples, λ levels, SVD error, SDF resolution, PCA error, searched from the "
+       << "(bake/selection/scene_selection.h: tangent samples, λ levels, SVD error, SDF resolution, PCA error, searched from the "
           "paper's setting by measuring the image error on the scene's views, 160x120, against the reference; grids as the "
           "paper row). Cost: ms/frame and bundle bytes (tables + visibility PCA). The RMSE here is on the bench's own view "
           "and size, which the search did not measure.\n\n"

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "bake/scene_bundle_writer.h"
+#include "bake/writers/scene_bundle_writer.h"
 #include "bench/chart.h"
-#include "bench/image_metrics.h"
+#include "measure/image_metrics.h"
 #include "bench/number_text.h"
 #include "bench/table_stats.h"
 #include "frame/frame_render.h"

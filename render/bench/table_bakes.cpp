@@ -4,7 +4,7 @@
 #include <chrono>
 #include <iostream>
 
-#include "bake/visibility_mask_bake.h"
+#include "bake/visibility/visibility_mask_bake.h"
 #include "bench/number_text.h"
 #include "bench/stopwatch.h"
 #include "gpu/scene_renderer.h"

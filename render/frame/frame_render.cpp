@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "bake/table_baker.h"
+#include "bake/tables/table_baker.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"

@@ -27,10 +27,10 @@
 #include <span>
 #include <vector>
 
-#include "bake/scene_visibility.h"
-#include "bake/sigmoid_gain.h"
-#include "bake/visibility_mask_bake.h"
-#include "bake/weighting_bake.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/sigmoid_gain.h"
+#include "bake/visibility/visibility_mask_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"

@@ -10,8 +10,8 @@
 #include <future>
 #include <numbers>
 
-#include "bake/scene_visibility.h"
-#include "bake/sigmoid_gain.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/sigmoid_gain.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
