@@ -8,8 +8,8 @@
 
 #include "bench/bench_case.h"
 #include "bench/number_text.h"
+#include "bench/ladder.h"
 #include "bench/stability.h"
-#include "methods/registry.h"
 
 namespace weft::bench {
 
@@ -125,8 +125,7 @@ void see_through_section(std::ostream& md, const BenchResults& res) {
   std::vector<std::string> cases;
   std::map<std::string, std::vector<const Row*>> by_case;
   for (const auto& r : res.rows) {
-    const methods::RuntimeMethod* m = methods::find_method(r.method);
-    if (!m || m->reference != methods::BenchReference::thin_layer) continue;
+    if (!thin_reference(r.method)) continue;
     const std::string key = r.scene + " / " + r.fabric + " / " + r.env;
     if (!by_case.count(key)) cases.push_back(key);
     by_case[key].push_back(&r);

@@ -11,6 +11,7 @@
 #include "frame/frame_render.h"
 #include "gpu/scene_renderer.h"
 #include "image/image.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
@@ -32,9 +33,9 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
   r.reference_tangent_samples = ref->tangent_samples;
   if (bundle) {
     r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
-    if (gpu::reads_visibility_masks(m.name)) r.bundle_bytes += mask_bytes(*bundle);
+    if (methods::method(m.name).reads_visibility_masks()) r.bundle_bytes += mask_bytes(*bundle);
   }
-  r.visibility = gpu::uses_seed000_tables(m.name);
+  r.visibility = methods::method(m.name).needs_seed000_tables();
   r.sg_count = int(c.sgs.size());
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);

@@ -8,6 +8,7 @@
 #include "bench/number_text.h"
 #include "bench/stopwatch.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 #include "runtime/visibility_mask.h"
 
 namespace weft::bench {
@@ -19,7 +20,10 @@ IwasakiBakeOptions TableBakes::paper_options() const {
   if (options_.quick) o.visibility.resolution = 16;
   // Masks only when a method reads them (an empty list runs every method).
   const auto& m = options_.methods;
-  if (m.empty() || std::any_of(m.begin(), m.end(), [](const std::string& n) { return gpu::reads_visibility_masks(n); }))
+  if (m.empty() || std::any_of(m.begin(), m.end(), [](const std::string& n) {
+        const methods::RuntimeMethod* method = methods::find_method(n);
+        return method && method->reads_visibility_masks();
+      }))
     o.mask_resolution = kMaskResolution;
   return o;
 }
@@ -45,7 +49,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key
 
 std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::string& method, const Scene& scene,
                                                                 const std::map<std::string, Fabric>& fabrics) {
-  if (!gpu::reads_seed000_tables(method)) return nullptr;
+  if (!methods::method(method).reads_seed000_tables()) return nullptr;
   const std::string k = key(scene, fabrics);
   if (bakes_.count(k)) return bakes_.at(k);
   std::string fabric_set;
@@ -77,7 +81,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
     std::cerr << " " << fmt(it->second.seconds) << " s\n";
   }
   // The base mesh's masks do not fit the refined vertices: bake them again for the methods that read them.
-  const bool masks = gpu::reads_visibility_masks(method);
+  const bool masks = methods::method(method).reads_visibility_masks();
   if (masks && it->second.masks.empty()) {
     std::cerr << "weft bench: baking visibility masks of " << scene.name << "'s cloth subdivided " << levels << " ..."
               << std::flush;

@@ -7,6 +7,7 @@
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 
 namespace weft {
 
@@ -17,7 +18,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
   std::vector<Fabric> cloth;
   for (const auto& o : scene.objects)
     if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
-  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), table_baker());
+  gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);
   gpu::OffscreenTarget target(width, height);

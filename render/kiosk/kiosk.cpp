@@ -19,6 +19,7 @@
 #include "kiosk/knob_sources.h"
 #include "kiosk/turntable.h"
 #include "journal/journal_log.h"
+#include "methods/registry.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
 
@@ -144,7 +145,7 @@ void Kiosk::check_config() {
   if (!std::isfinite(c.turntable) || std::abs(c.turntable) > 360)
     throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
   if (c.method != "auto") try {
-      gpu::parse_method(c.method);
+      methods::method(c.method);
     } catch (const std::invalid_argument& e) {
       throw KioskConfigError(std::string("--method: ") + e.what() + " or auto");
     }

@@ -20,7 +20,7 @@
 #include "runtime/sigmoid_gain_table.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
-#include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/sg_visibility.h"
 
 namespace weft {
 

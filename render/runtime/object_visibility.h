@@ -8,7 +8,7 @@ namespace weft {
 
 // One object's visibility: d_v = mean + basis · c_v on a resolution² grid over (θ, φ) of
 // the vertex's thread-1 frame (render/bake/visibility/visibility.md). The runtime reconstructs d and ∇d
-// from it per (vertex, SG): methods/iwasaki_visibility.h.
+// from it per (vertex, SG): methods/sg_visibility.h.
 struct ObjectVisibility {
   int resolution = 0;                // cells = resolution², row-major [θ][φ]
   int terms = 0;

@@ -74,7 +74,7 @@ struct Case {
 
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
-void check_parity(const Case& c, gpu::Method method) {
+void check_parity(const Case& c, const methods::RuntimeMethod& method) {
   const bool per_vertex = method.name.starts_with("iwasaki_vertex");
   const bool masks = method.name.find("_mask") != std::string::npos;
   const bool quadrature = method.name.ends_with("quadrature");

@@ -11,6 +11,7 @@
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 
 namespace weft {
 
@@ -33,7 +34,7 @@ RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::stri
   gpu::EglContext ctx = gpu::EglContext::headless();
   gpu::OffscreenTarget target(views.width, views.height);
   for (const auto& name : candidates) {
-    gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(name), 16, data);
+    gpu::SceneRenderer renderer(scene, cloth, methods::method(name), 16, data);
     renderer.set_lighting(sgs);
     target.bind();
     RungMeasure m;

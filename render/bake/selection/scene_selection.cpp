@@ -12,6 +12,7 @@
 #include "bake/selection/setting_truncation.h"
 #include "bake/visibility/sigmoid_gain.h"
 #include "bake/tables/weighting_bake.h"
+#include "methods/registry.h"
 #include "runtime/paper_tangent_samples.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
@@ -167,7 +168,7 @@ public:
     m.sg_count = int(sgs.size());
     m.work = work(s, *bundle, m.sg_count);
     ctx_.make_current();
-    gpu::SceneRenderer renderer(drawn, cloth_, gpu::parse_method(knobs_.methods[s.method]), 16, bundle);
+    gpu::SceneRenderer renderer(drawn, cloth_, methods::method(knobs_.methods[s.method]), 16, bundle);
     renderer.set_lighting(sgs);
     target_.bind();
     const int w = o_.views.width, h = o_.views.height;

@@ -15,7 +15,7 @@ namespace weft {
 
 struct SceneVisibilityOptions {
   // The paper's 128² (it samples 512² and keeps 128²). The runtime never expands the grids: it
-  // reconstructs d only at the SG axes when the lighting changes (methods/iwasaki_visibility.h),
+  // reconstructs d only at the SG axes when the lighting changes (methods/sg_visibility.h),
   // so the resolution costs bundle bytes (the PCA basis) and bake time, not GPU memory.
   // Measured, pillow/linen/studio, iwasaki vs reference: 32² 29.0 %, 64² 24.1 %, 128² 20.7 %.
   int resolution = 128;
