@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "files/atomic_file.h"
+
 namespace weft::bench {
 
 InputHash& add_file(InputHash& h, const std::filesystem::path& file) {
@@ -34,18 +36,14 @@ std::optional<CachedReference> load_reference(const std::filesystem::path& file)
 
 void store_reference(const std::filesystem::path& file, const CachedReference& r) {
   std::filesystem::create_directories(file.parent_path());
-  const auto tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    const int32_t w = r.image.width, h = r.image.height;
-    out.write("WEFTREF1", 8);
-    out.write(reinterpret_cast<const char*>(&w), 4);
-    out.write(reinterpret_cast<const char*>(&h), 4);
-    out.write(reinterpret_cast<const char*>(r.image.pixels.data()), std::streamsize(r.image.pixels.size() * sizeof(glm::dvec3)));
-    out.write(reinterpret_cast<const char*>(r.kinds.data()), std::streamsize(r.kinds.size()));
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, file);
+  std::ostringstream out(std::ios::binary);
+  const int32_t w = r.image.width, h = r.image.height;
+  out.write("WEFTREF1", 8);
+  out.write(reinterpret_cast<const char*>(&w), 4);
+  out.write(reinterpret_cast<const char*>(&h), 4);
+  out.write(reinterpret_cast<const char*>(r.image.pixels.data()), std::streamsize(r.image.pixels.size() * sizeof(glm::dvec3)));
+  out.write(reinterpret_cast<const char*>(r.kinds.data()), std::streamsize(r.kinds.size()));
+  write_file_atomically(file, out.view());
 }
 
 std::optional<TangentConvergence> load_convergence(const std::filesystem::path& file) {
@@ -74,16 +72,12 @@ std::optional<TangentConvergence> load_convergence(const std::filesystem::path& 
 
 void store_convergence(const std::filesystem::path& file, const TangentConvergence& c) {
   std::filesystem::create_directories(file.parent_path());
-  const auto tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out.precision(17);
-    out << "WEFTNJ1\nsamples " << c.samples << " converged " << (c.converged ? 1 : 0) << " cloth_pixels "
-        << c.cloth_pixels << " seconds " << c.seconds << "\n";
-    for (const auto& s : c.steps) out << "step " << s.samples << " " << s.finer << " " << s.relative_change << "\n";
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, file);
+  std::ostringstream out;
+  out.precision(17);
+  out << "WEFTNJ1\nsamples " << c.samples << " converged " << (c.converged ? 1 : 0) << " cloth_pixels "
+      << c.cloth_pixels << " seconds " << c.seconds << "\n";
+  for (const auto& s : c.steps) out << "step " << s.samples << " " << s.finer << " " << s.relative_change << "\n";
+  write_file_atomically(file, out.view());
 }
 
 }  // namespace weft::bench

@@ -1,4 +1,4 @@
-#include "bundle/atomic_file.h"
+#include "files/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -7,7 +7,7 @@
 #include <string>
 #include <system_error>
 
-namespace weft::bundle {
+namespace weft {
 namespace {
 
 [[noreturn]] void fail(const std::string& step, const std::filesystem::path& file) {
@@ -66,4 +66,8 @@ void write_file_atomically(const std::filesystem::path& target, std::span<const 
   fsync_directory(dir);
 }
 
-}  // namespace weft::bundle
+void write_file_atomically(const std::filesystem::path& target, std::string_view text) {
+  write_file_atomically(target, std::as_bytes(std::span<const char>(text.data(), text.size())));
+}
+
+}  // namespace weft
