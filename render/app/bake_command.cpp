@@ -44,8 +44,8 @@ int run_bake(const BakeArgs& a) {
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   in.scene = as_usage("--scene", [&] { return load_scene_named(a.scene, assets_dir(), a.fabric); });
-  for (auto& o : in.scene.objects)
-    if (!a.fabric.empty() && o.material == Material::cloth) o.fabric = a.fabric;
+  if (!a.fabric.empty())
+    for (auto& o : in.scene.cloth_objects()) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
   if (a.subdivide > 0 && !search) in.scene = refine_cloth_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");

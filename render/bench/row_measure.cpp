@@ -37,8 +37,7 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
   }
   r.visibility = methods::method(m.name).needs_seed000_tables();
   r.sg_count = int(c.sgs.size());
-  for (const auto& o : scene.objects)
-    if (o.material == Material::cloth) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
+  for (const auto& o : scene.cloth_objects()) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
   const GpuFrame speed = render_gpu_frame(scene, c.fabrics, c.sgs, m.name, a.speed_width, a.speed_height,
                                           a.speed_frames, bundle);
   renderer_ = speed.renderer;

@@ -75,7 +75,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
               << std::flush;
     const auto t = std::chrono::steady_clock::now();
     for (size_t i = 0; i < refined.objects.size(); ++i)
-      if (refined.objects[i].material == Material::cloth)
+      if (refined.objects[i].is_cloth())
         if (auto v = bake_object_visibility(refined, i, paper_options().visibility)) it->second.cloth.emplace(i, std::move(*v));
     it->second.seconds = seconds_since(t);
     std::cerr << " " << fmt(it->second.seconds) << " s\n";
@@ -94,7 +94,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
   }
   auto data = std::make_shared<IwasakiBundleData>(*base);
   for (size_t i = 0; i < refined.objects.size(); ++i)
-    if (refined.objects[i].material == Material::cloth) data->visibility.erase(i), data->masks.erase(i);
+    if (refined.objects[i].is_cloth()) data->visibility.erase(i), data->masks.erase(i);
   for (const auto& [i, v] : it->second.cloth) data->visibility.emplace(i, v);
   if (masks)
     for (const auto& [i, m] : it->second.masks) data->masks.emplace(i, m);

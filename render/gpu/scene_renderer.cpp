@@ -46,7 +46,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
   size_t cloth = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    auto obj = std::make_unique<Object>(Object{&o, nullptr, o.material == Material::cloth, 0, nullptr});
+    auto obj = std::make_unique<Object>(Object{&o, nullptr, o.is_cloth(), 0, nullptr});
     if (obj->cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->handle = cloth_->add_object(i, o.mesh, object_fabric(o, fabrics[cloth]));

@@ -37,9 +37,8 @@ const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   using methods::RuntimeMethod, methods::Shading;
   if (!bundle.iwasaki) return tableless_rung();
   bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
-  for (const auto& o : bundle.scene.scene.objects)
-    if (o.material == Material::cloth)
-      sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
+  for (const auto& o : bundle.scene.scene.cloth_objects())
+    sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
   if (sheer)
     return kiosk_rung([](const RuntimeMethod& m) {
       return m.see_through && m.needs_seed000_tables() && m.shading == Shading::per_vertex && !m.reads_visibility_masks();
@@ -55,7 +54,7 @@ const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   // measured closer to the scene's reference.
   bool masks_cover = true;
   for (const auto& [i, v] : bundle.iwasaki->visibility)
-    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].material == Material::cloth)
+    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth())
       masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
   if (!masks_cover)
     return kiosk_rung([&](const RuntimeMethod& m) {

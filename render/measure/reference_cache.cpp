@@ -18,6 +18,13 @@ InputHash& add_file(InputHash& h, const std::filesystem::path& file) {
   return h.add(s.str());
 }
 
+InputHash& add_mesh(InputHash& h, const TriangleMesh& mesh) {
+  for (const auto* attribute : {&mesh.positions, &mesh.normals, &mesh.warps})
+    h.add(std::string_view(reinterpret_cast<const char*>(attribute->data()), attribute->size() * sizeof(glm::dvec3)));
+  return h.add(std::string_view(reinterpret_cast<const char*>(mesh.triangles.data()),
+                                mesh.triangles.size() * sizeof(mesh.triangles[0])));
+}
+
 std::optional<CachedReference> load_reference(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;

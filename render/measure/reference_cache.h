@@ -14,6 +14,7 @@
 #include "image/image.h"
 #include "reference/scene_render.h"
 #include "reference/tangent_convergence.h"
+#include "scene/mesh.h"
 
 namespace weft::bench {
 
@@ -21,6 +22,8 @@ inline constexpr const char* kReferenceCodeVersion = "weft-reference-2026-11-27"
 
 // Adds a file's contents to `h`; throws std::runtime_error when it cannot be read.
 InputHash& add_file(InputHash& h, const std::filesystem::path& file);
+// Adds a mesh's positions, normals, warps and triangles to `h`, as the cache keys hash a scene's meshes.
+InputHash& add_mesh(InputHash& h, const TriangleMesh& mesh);
 
 struct CachedReference {
   Image image;

@@ -18,13 +18,10 @@ namespace {
 void add_scene(InputHash& h, const Scene& s, const std::map<std::string, std::string>& fabric_texts) {
   h.add(s.name);
   for (const auto& o : s.objects) {
-    h.add(o.name).add(o.fabric).add_number(o.material == Material::cloth ? 1 : 0);
+    h.add(o.name).add(o.fabric).add_number(o.is_cloth() ? 1 : 0);
     h.add_number(o.albedo.r).add_number(o.albedo.g).add_number(o.albedo.b);
-    for (const auto* attribute : {&o.mesh.positions, &o.mesh.normals, &o.mesh.warps})
-      h.add(std::string_view(reinterpret_cast<const char*>(attribute->data()), attribute->size() * sizeof(glm::dvec3)));
-    h.add(std::string_view(reinterpret_cast<const char*>(o.mesh.triangles.data()),
-                           o.mesh.triangles.size() * sizeof(o.mesh.triangles[0])));
-    if (o.material == Material::cloth) {
+    bench::add_mesh(h, o.mesh);
+    if (o.is_cloth()) {
       const auto text = fabric_texts.find(o.fabric);
       h.add(text != fabric_texts.end() ? text->second : o.fabric);
     }

@@ -4,6 +4,7 @@
 // Format: assets/scenes/README.md.
 #include <filesystem>
 #include <stdexcept>
+#include <ranges>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct SceneObject {
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
+  bool is_cloth() const { return material == Material::cloth; }
 };
 
 // The fabric cloth object `o` is drawn with: `fabric` (its preset's, or a knob's edit of it) with
@@ -52,6 +54,11 @@ struct Scene {
   std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
                              // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;
+  // The cloth objects in order, a view of `objects`: the k-th is the renderer's cloth object k
+  // (gpu::SceneRenderer takes their fabrics in this order).
+  auto cloth_objects() const& { return objects | std::views::filter(&SceneObject::is_cloth); }
+  auto cloth_objects() & { return objects | std::views::filter(&SceneObject::is_cloth); }
+  void cloth_objects() const&& = delete;  // a view of a temporary would dangle
 };
 
 // What a scene that imports a glTF needs besides its own files (render/scene/gltf_scene.h).

@@ -28,9 +28,9 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   IwasakiBundleData out;
   IwasakiBakeReport rep;
   auto t0 = std::chrono::steady_clock::now();
-  for (const auto& o : scene.objects) {
+  for (const auto& o : scene.cloth_objects()) {
     if (!opt.bake_tables) break;
-    if (o.material != Material::cloth || out.tables.count(o.fabric)) continue;
+    if (out.tables.count(o.fabric)) continue;
     const Fabric& fabric = fabrics.at(o.fabric);
     BakeSettings settings;
     settings.tangent_samples = paper_tangent_samples(fabric);  // the paper's settings by default
@@ -76,7 +76,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     auto bar = open_stage(opt, "visibility " + scene.objects[i].name);
     SceneVisibilityStats st;
     SceneVisibilityOptions vo = opt.visibility;
-    if (scene.objects[i].material != Material::cloth) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
+    if (!scene.objects[i].is_cloth()) vo.resolution = std::min(vo.resolution, vo.lambertian_resolution);
     auto v = bake_object_visibility(scene, i, vo, [&](size_t d, size_t n) {
       if (!opt.quiet) bar(0.95 * double(d) / double(n));
     }, &st);
@@ -94,7 +94,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     }
     if (v) out.visibility.emplace(i, std::move(*v));
     // Occluded cloth also gets a bit mask (iwasaki_vertex_mask's exact V_k per vertex and SG).
-    if (opt.mask_resolution > 0 && scene.objects[i].material == Material::cloth && out.visibility.count(i))
+    if (opt.mask_resolution > 0 && scene.objects[i].is_cloth() && out.visibility.count(i))
       if (auto m = bake_visibility_mask(scene, i, opt.mask_resolution)) {
         if (!opt.quiet)
           std::fprintf(stderr, "  %s: visibility mask %d² per vertex, %.2f MB\n", scene.objects[i].name.c_str(),

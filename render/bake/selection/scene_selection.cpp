@@ -64,8 +64,7 @@ public:
     for (int j = 0; j < 2; ++j)
       for (const auto& [name, f] : fabrics_) curved_[j] = curved_[j] || !straight(f, j);
     views_ = refs.cameras;
-    for (const auto& o2 : scene_.objects)
-      if (o2.material == Material::cloth) cloth_.push_back(fabrics_.at(o2.fabric));
+    for (const auto& o2 : scene_.cloth_objects()) cloth_.push_back(fabrics_.at(o2.fabric));
     for (PixelKind k : refs.images.at(0).kinds) cloth_pixels_ += k == PixelKind::cloth ? 1.0 : 0.0;
     // Occluded at all? The paper's SDF tells (an unoccluded scene stores no visibility).
     int paper_sdf = 0;
@@ -244,8 +243,7 @@ private:
   // vertices and their fabrics' tangent samples, the reference's cloth pixels scaled to 640×480.
   double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) {
     double vertices = 0.0, vertex_samples = 0.0;
-    for (const auto& o : scene(s.density).objects) {
-      if (o.material != Material::cloth) continue;
+    for (const auto& o : scene(s.density).cloth_objects()) {
       const auto& t = d.tables.at(o.fabric).tangent_samples;
       const double n = double(o.mesh.positions.size());
       vertices += n;
@@ -289,12 +287,12 @@ private:
     std::map<size_t, ObjectVisibility> out;
     if (reuse)
       for (const auto& [i, v] : visibility(sdf, int(level0 - knobs_.subdivisions.begin())))
-        if (scene_.objects[i].material != Material::cloth) out.emplace(i, v);
+        if (!scene_.objects[i].is_cloth()) out.emplace(i, v);
     const Scene& drawn = scene(density);
     const auto t0 = std::chrono::steady_clock::now();
     size_t baked = 0;
     for (size_t i = 0; i < drawn.objects.size(); ++i) {
-      const bool cloth = drawn.objects[i].material == Material::cloth;
+      const bool cloth = drawn.objects[i].is_cloth();
       if (reuse && !cloth) continue;
       SceneVisibilityOptions vo = o_.visibility;
       vo.resolution = knobs_.sdf_resolutions[sdf];

@@ -23,8 +23,8 @@ std::string preset_text(const std::filesystem::path& dir, const std::string& nam
 std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const std::filesystem::path& dir,
                                                        bool only_scene) {
   std::map<std::string, std::string> texts;
-  for (const auto& o : scene.objects) {
-    if (o.material != Material::cloth || texts.count(o.fabric)) continue;
+  for (const auto& o : scene.cloth_objects()) {
+    if (texts.count(o.fabric)) continue;
     try {
       load_fabric_named(o.fabric, dir);  // validates; throws naming the known presets or the file's problem
     } catch (const std::exception& e) {
@@ -40,8 +40,8 @@ std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const
 
 std::map<std::string, Fabric> cloth_fabrics(const Scene& scene, const std::map<std::string, std::string>& fabric_texts) {
   std::map<std::string, Fabric> fabrics;
-  for (const auto& o : scene.objects)
-    if (o.material == Material::cloth && !fabrics.count(o.fabric))
+  for (const auto& o : scene.cloth_objects())
+    if (!fabrics.count(o.fabric))
       fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
   return fabrics;
 }

@@ -42,7 +42,7 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
     json jo{{"name", o.name}};
-    if (o.material == Material::cloth) {
+    if (o.is_cloth()) {
       if (!in.fabrics.count(o.fabric))
         throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
       jo["material"] = "cloth";
