@@ -24,33 +24,25 @@ void fsync_directory(const std::filesystem::path& dir) {
   if (rc != 0) fail("cannot fsync directory", dir);
 }
 
-}  // namespace
 
-void write_file_atomically(const std::filesystem::path& target, std::span<const std::byte> bytes) {
-  const std::filesystem::path dir =
-      target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  // The pid keeps two writers (two processes) from sharing a temporary.
-  const std::filesystem::path temp =
-      dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()));
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail("cannot create", temp);
-  auto abandon = [&](const std::string& step) {
+std::filesystem::path directory_of(const std::filesystem::path& target) {
+  return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// Beside the target; the pid keeps two writers (two processes) from sharing a temporary.
+std::filesystem::path temporary_for(const std::filesystem::path& target) {
+  return directory_of(target) / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()));
+}
+
+// The temporary's data on disk, then renamed over the target, then the rename on disk.
+void replace_with(const std::filesystem::path& target, const std::filesystem::path& temp, int fd) {
+  if (::fsync(fd) != 0) {
     const int saved = errno;
     ::close(fd);
     ::unlink(temp.c_str());
     errno = saved;
-    fail(step, temp);
-  };
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      abandon("cannot write");
-    }
-    done += std::size_t(n);
+    fail("cannot fsync", temp);
   }
-  if (::fsync(fd) != 0) abandon("cannot fsync");
   if (::close(fd) != 0) {
     const int saved = errno;
     ::unlink(temp.c_str());
@@ -63,7 +55,48 @@ void write_file_atomically(const std::filesystem::path& target, std::span<const 
     errno = saved;
     fail("cannot rename over " + target.string() + ": from", temp);
   }
-  fsync_directory(dir);
+  fsync_directory(directory_of(target));
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& target, std::span<const std::byte> bytes) {
+  const std::filesystem::path temp = temporary_for(target);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("cannot create", temp);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int saved = errno;
+      ::close(fd);
+      ::unlink(temp.c_str());
+      errno = saved;
+      fail("cannot write", temp);
+    }
+    done += std::size_t(n);
+  }
+  replace_with(target, temp, fd);
+}
+
+void write_file_atomically(const std::filesystem::path& target,
+                           const std::function<void(const std::filesystem::path& temporary)>& write) {
+  const std::filesystem::path temp = temporary_for(target);
+  try {
+    write(temp);
+  } catch (...) {
+    ::unlink(temp.c_str());
+    throw;
+  }
+  const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    errno = saved;
+    fail("cannot open", temp);
+  }
+  replace_with(target, temp, fd);
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view text) {

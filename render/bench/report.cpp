@@ -1,8 +1,8 @@
 #include "bench/report.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +10,7 @@
 #include "bench/number_text.h"
 #include "bench/ladder.h"
 #include "bench/stability.h"
+#include "files/atomic_file.h"
 
 namespace weft::bench {
 
@@ -279,7 +280,7 @@ void missing_section(std::ostream& md, const BenchOptions& a, const BenchResults
 void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
   const auto& rows = res.rows;
   const auto& renderer = res.renderer;
-  std::ofstream csv(out / "results.csv");
+  std::ostringstream csv;
   csv << "scene,fabric,env,method,speed_width,speed_height,ms_per_frame,frames,width,height,relative_rmse,cloth_pixels,"
          "renderer,note,bundle_bytes,shadow_pixels,shadow_relative_rmse,shadow_brightness_ratio,band_brightness_ratio,"
          "lambert_relative_rmse,lambert_brightness_ratio,setting,sg_count,subdivision,cloth_mesh_bytes,"
@@ -298,7 +299,7 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
         << (r.cloth_mesh_bytes ? std::to_string(r.cloth_mesh_bytes) : "") << ","
         << (r.visibility_bake_s >= 0 ? fmt(r.visibility_bake_s, 4) : "") << ","
         << (r.reference_tangent_samples ? std::to_string(r.reference_tangent_samples) : "") << "\n";
-  if (!csv) throw std::runtime_error("cannot write " + (out / "results.csv").string());
+  write_file_atomically(out / "results.csv", csv.view());
 }
 
 void write_chart(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
@@ -307,22 +308,23 @@ void write_chart(const std::filesystem::path& out, const BenchOptions& a, const 
 }
 
 void write_sg_sweep_csv(const std::filesystem::path& file, const std::vector<SweepRow>& sweep) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "method,sg_count,ms_per_frame,relative_rmse_vs_map\n";
   for (const auto& r : sweep) csv << r.method << "," << r.sg_count << "," << fmt(r.ms, 6) << "," << fmt(r.rmse, 6) << "\n";
+  write_file_atomically(file, csv.view());
 }
 
 void write_knob_sweep_csv(const std::filesystem::path& file, const KnobSweep& ks) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "knob,value,ms_per_frame,relative_rmse,table_bytes,visibility_bytes,bake_seconds,tables\n";
   for (const auto& r : ks.rows)
     csv << ks.knob << "," << r.value << "," << fmt(r.ms, 6) << "," << fmt(r.rmse, 6) << "," << r.table_bytes << ","
         << r.visibility_bytes << "," << fmt(r.bake_s, 4) << ",\"" << r.tables << "\"\n";
-  if (!csv) throw std::runtime_error("cannot write " + file.string());
+  write_file_atomically(file, csv.view());
 }
 
 void write_report_md(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
-  std::ofstream md(out / "report.md");
+  std::ostringstream md;
   overview(md, a, res);
   target_error_section(md, a, res);
   images_section(md, a, res);
@@ -331,7 +333,7 @@ void write_report_md(const std::filesystem::path& out, const BenchOptions& a, co
   stability_section(md, a, res);
   thin_occluder_section(md, a, res);
   missing_section(md, a, res);
-  if (!md) throw std::runtime_error("cannot write " + (out / "report.md").string());
+  write_file_atomically(out / "report.md", md.view());
 }
 
 }  // namespace weft::bench
