@@ -30,6 +30,13 @@ std::string read(const std::filesystem::path& p) {
   return s.str();
 }
 
+// A file holding "old" alone in a fresh directory.
+std::filesystem::path old_file(const std::string& name, const std::string& file_name) {
+  const auto file = fresh_dir(name) / file_name;
+  write_file_atomically(file, std::string_view("old"));
+  return file;
+}
+
 size_t entries(const std::filesystem::path& dir) {
   return size_t(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()));
 }
@@ -37,31 +44,25 @@ size_t entries(const std::filesystem::path& dir) {
 }  // namespace
 
 TEST(AtomicFile, TextReplacesTheTarget) {
-  const auto dir = fresh_dir("text");
-  const auto file = dir / "a.json";
-  write_file_atomically(file, std::string_view("old"));
+  const auto file = old_file("text", "a.json");
   write_file_atomically(file, std::string_view("new contents"));
   EXPECT_EQ(read(file), "new contents");
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entries(file.parent_path()), 1u);
 }
 
 TEST(AtomicFile, PathWriterFillsTheTemporary) {
-  const auto dir = fresh_dir("writer");
-  const auto file = dir / "b.png";
-  write_file_atomically(file, std::string_view("old"));
+  const auto file = old_file("writer", "b.png");
   write_file_atomically(file, [&](const std::filesystem::path& temporary) {
     EXPECT_NE(temporary, file);
     EXPECT_EQ(temporary.parent_path(), file.parent_path());
     std::ofstream(temporary, std::ios::binary) << "written by a library";
   });
   EXPECT_EQ(read(file), "written by a library");
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entries(file.parent_path()), 1u);
 }
 
 TEST(AtomicFile, AFailedWriterLeavesTheOldContents) {
-  const auto dir = fresh_dir("failed");
-  const auto file = dir / "c.exr";
-  write_file_atomically(file, std::string_view("old"));
+  const auto file = old_file("failed", "c.exr");
   EXPECT_THROW(write_file_atomically(file,
                                      [](const std::filesystem::path& temporary) {
                                        std::ofstream(temporary) << "half";
@@ -69,7 +70,7 @@ TEST(AtomicFile, AFailedWriterLeavesTheOldContents) {
                                      }),
                std::runtime_error);
   EXPECT_EQ(read(file), "old");
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(entries(file.parent_path()), 1u);
 }
 
 TEST(AtomicFile, AMissingDirectoryThrows) {
