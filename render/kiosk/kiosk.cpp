@@ -19,6 +19,7 @@
 #include "kiosk/knob_sources.h"
 #include "kiosk/turntable.h"
 #include "journal/journal_log.h"
+#include "methods/registry.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
 
@@ -44,8 +45,7 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 // fabrics keeps its own.
 std::string knob_fabric(const SceneBundle& sb) {
   std::string fabric;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) fabric = o.fabric;
+  for (const auto& o : sb.scene.cloth_objects()) fabric = o.fabric;
   return fabric;
 }
 
@@ -63,8 +63,7 @@ std::vector<Fabric> preset_list(const SceneBundle& sb) {
 
 std::vector<Fabric> cloth_fabrics(const SceneBundle& sb) {
   std::vector<Fabric> fabrics;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) fabrics.push_back(sb.fabrics.at(o.fabric));
+  for (const auto& o : sb.scene.cloth_objects()) fabrics.push_back(sb.fabrics.at(o.fabric));
   return fabrics;
 }
 
@@ -144,7 +143,7 @@ void Kiosk::check_config() {
   if (!std::isfinite(c.turntable) || std::abs(c.turntable) > 360)
     throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
   if (c.method != "auto") try {
-      gpu::parse_method(c.method);
+      methods::method(c.method);
     } catch (const std::invalid_argument& e) {
       throw KioskConfigError(std::string("--method: ") + e.what() + " or auto");
     }
@@ -573,11 +572,10 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   try {
     const std::string dressed = knob_fabric(*scene_);
     size_t c = 0;
-    for (const auto& o : scene_->scene.objects)
-      if (o.material == Material::cloth) {
-        if (o.fabric == dressed) renderer_->set_fabric(c, f);
-        ++c;
-      }
+    for (const auto& o : scene_->scene.cloth_objects()) {
+      if (o.fabric == dressed) renderer_->set_fabric(c, f);
+      ++c;
+    }
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
     log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
   }

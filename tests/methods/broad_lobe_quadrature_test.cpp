@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "reference/sg_quadrature.h"

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "image/image.h"
 #include "lighting/env_spec.h"

@@ -31,10 +31,10 @@
 #include <string>
 #include <vector>
 
-#include "bake/iwasaki_bundle_writer.h"
-#include "bake/scene_bake.h"
-#include "bake/visibility_mask_bake.h"
-#include "bench/image_metrics.h"
+#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/scene/scene_bake.h"
+#include "bake/visibility/visibility_mask_bake.h"
+#include "measure/image_metrics.h"
 #include "core/fabric.h"
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "core/fabric.h"
 #include "support/sky_direction.h"
