@@ -2,7 +2,7 @@
 // Which SGs of a lighting are the sky's broad lobes, and per vertex the bits of their quadrature
 // cells that the vertex's visibility mask leaves open: what a lighting change computes on the CPU
 // for the rungs that shade the broad lobes by quadrature (methods/iwasaki/broad_lobe_quadrature.h,
-// IWASAKI.md "Broad lobes by quadrature"), carried in SgVisibility (methods/sg_visibility.h).
+// docs/research/iwasaki.md "Broad lobes by quadrature"), carried in SgVisibility (methods/sg_visibility.h).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -1,5 +1,5 @@
 // Point study on a scene (bench label, no assertions): what shades the sharp SGs low over the
-// horizon wrong on a curved cloth (pillow / linen / the bundled studio: IWASAKI.md, "A sharp lobe
+// horizon wrong on a curved cloth (pillow / linen / the bundled studio: docs/research/iwasaki.md, "A sharp lobe
 // low over the horizon"). Per cloth pixel and per SG with λ ≥ 16, occlusion off on both sides (the
 // facet's plane still cuts both), for N tangent samples per thread in $WEFT_STUDY_SAMPLES
 // (default "3,6,12"), tables at grid $WEFT_STUDY_GRID (default 32; ω_o at $WEFT_STUDY_WO_GRID when set):

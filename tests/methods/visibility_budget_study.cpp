@@ -1,4 +1,4 @@
-// Error budget of iwasaki under skies (bench label, no assertions; IWASAKI.md, "Visibility or
+// Error budget of iwasaki under skies (bench label, no assertions; docs/research/iwasaki.md, "Visibility or
 // shading under a low sun"): per cloth pixel of a scene's camera, the C++ twin of iwasaki against
 // the reference, with and without occlusion by the scene, split per SG. Variants:
 //   open   iwasaki with no visibility (the surface's horizon only) vs the reference with shadow

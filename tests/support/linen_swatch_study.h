@@ -1,4 +1,4 @@
-// The setup the broad-lobe point studies share (IWASAKI.md, "What limits broad lobes"): the linen
+// The setup the broad-lobe point studies share (docs/research/iwasaki.md, "What limits broad lobes"): the linen
 // swatch's grid-32 tables at 3+3 tangent samples, the same model at 64 samples as the converged
 // side, and the four views every study reads.
 #pragma once

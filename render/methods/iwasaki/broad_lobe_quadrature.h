@@ -1,6 +1,6 @@
 #pragma once
 // The sky's broad lobes by quadrature of the canonical model at the mesh vertices (rungs
-// iwasaki_vertex_quadrature and iwasaki_quadrature; IWASAKI.md, "Broad lobes by quadrature").
+// iwasaki_vertex_quadrature and iwasaki_quadrature; docs/research/iwasaki.md, "Broad lobes by quadrature").
 // Iwasaki's Eq. 9 factorises a lobe's light into T times a shading integral, which misses by
 // 10–17 % where both W and f_s vary over the lobe, and the SDF's one linear boundary cannot hold
 // a wide lobe occluded from several sides. So an SG with λ < kBroadLobeSharpness is shaded as the
