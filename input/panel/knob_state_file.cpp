@@ -1,14 +1,13 @@
 #include "panel/knob_state_file.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string_view>
+#include <system_error>
+
+#include "files/atomic_file.h"
 
 namespace weft::input {
 namespace {
@@ -41,18 +40,6 @@ int steps(const nlohmann::json& j, const char* key) {
 std::string text_field(const nlohmann::ordered_json& j, const char* key) {
   const auto it = j.find(key);
   return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
-bool fsync_path(const std::filesystem::path& p, int flags, std::string& why) {
-  const int fd = ::open(p.c_str(), flags);
-  if (fd < 0) {
-    why = "cannot open " + p.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  const bool ok = ::fsync(fd) == 0;
-  if (!ok) why = "fsync " + p.string() + ": " + std::strerror(errno);
-  ::close(fd);
-  return ok;
 }
 
 }  // namespace
@@ -113,40 +100,13 @@ KnobPositions parse_knob_state(const std::string& text, const std::vector<Preset
 }
 
 bool write_file_atomically(const std::filesystem::path& file, const std::string& text, std::string& why) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    why = "cannot create " + tmp.string() + ": " + std::strerror(errno);
+  try {
+    weft::write_file_atomically(file, std::string_view(text));
+    return true;
+  } catch (const std::system_error& e) {
+    why = e.what();
     return false;
   }
-  size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      why = "cannot write " + tmp.string() + ": " + std::strerror(errno);
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return false;
-    }
-    done += static_cast<size_t>(n);
-  }
-  // Data on disk before the rename makes it visible, or a power cut could leave an empty file.
-  if (::fsync(fd) != 0) {
-    why = "fsync " + tmp.string() + ": " + std::strerror(errno);
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    return false;
-  }
-  ::close(fd);
-  if (::rename(tmp.c_str(), file.c_str()) != 0) {
-    why = "cannot rename " + tmp.string() + " to " + file.string() + ": " + std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return false;
-  }
-  // The rename itself is only durable once the directory is.
-  const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  return fsync_path(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC, why);
 }
 
 RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::vector<PresetLook>& presets,

@@ -26,7 +26,7 @@ std::string knob_state_text(const KnobPositions& positions, const std::vector<Pr
 KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets);
 
 // Replaces `file` with `text` so that after a crash or power cut it holds either the old or the
-// new content, never a mix. Returns false and `why` on failure.
+// new content, never a mix (files/atomic_file.h). Returns false and `why` on failure.
 bool write_file_atomically(const std::filesystem::path& file, const std::string& text, std::string& why);
 
 struct RestoredKnobs {

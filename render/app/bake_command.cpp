@@ -8,10 +8,10 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/progress_bar.h"
-#include "bake/bundle_fabrics.h"
-#include "bake/scene_bake.h"
-#include "bake/scene_bundle_writer.h"
-#include "bake/selection_bundle.h"
+#include "bake/writers/bundle_fabrics.h"
+#include "bake/scene/scene_bake.h"
+#include "bake/writers/scene_bundle_writer.h"
+#include "bake/selection/selection_bundle.h"
 #include "bundle/bundle_writer.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
@@ -31,7 +31,7 @@ struct BakeArgs {
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
   std::vector<int> samples;
   int subdivide = -1;  // ≥ 0: midpoint subdivision levels of the cloth meshes (the search's choice when < 0)
-  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/scene_selection.h); holds --grid
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --grid
 };
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
@@ -44,8 +44,8 @@ int run_bake(const BakeArgs& a) {
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   in.scene = as_usage("--scene", [&] { return load_scene_named(a.scene, assets_dir(), a.fabric); });
-  for (auto& o : in.scene.objects)
-    if (!a.fabric.empty() && o.material == Material::cloth) o.fabric = a.fabric;
+  if (!a.fabric.empty())
+    for (auto& o : in.scene.cloth_objects()) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
   if (a.subdivide > 0 && !search) in.scene = refine_cloth_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");

@@ -11,9 +11,9 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/stage_progress_bar.h"
-#include "bake/azimuthal_bake.h"
-#include "bake/bake_selection.h"
-#include "bake/weighting_bake.h"
+#include "bake/tables/azimuthal_bake.h"
+#include "bake/tables/bake_selection.h"
+#include "bake/tables/weighting_bake.h"
 
 namespace weft {
 

@@ -37,7 +37,7 @@ private:
   bool terminal_ = isatty(fileno(stderr)) != 0;
 };
 
-// A bar for one stage, as the bakers' per-stage progress callbacks (bake/scene_bake.h) open them.
+// A bar for one stage, as the bakers' per-stage progress callbacks (bake/scene/scene_bake.h) open them.
 inline std::function<void(double)> open_progress_bar(const std::string& label) {
   auto bar = std::make_shared<ProgressBar>(label);
   return [bar](double fraction) { (*bar)(fraction); };

@@ -8,12 +8,13 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/progress_bar.h"
-#include "bake/scene_bake.h"
+#include "bake/scene/scene_bake.h"
 #include "frame/frame_files.h"
 #include "frame/frame_inputs.h"
 #include "gpu/egl_context.h"
 #include "frame/frame_render.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 #include "runtime/visibility_mask.h"
 #include "scene/weave_scale.h"
 
@@ -50,10 +51,11 @@ int run_render(const RenderArgs& a) {
   {
     std::string all = "reference";
     bool known = a.method == "reference";
-    for (const auto& m : gpu::method_names()) known = known || m == a.method, all += ", " + m;
+    for (const auto& m : methods::method_names()) known = known || m == a.method, all += ", " + m;
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
-  if (!a.bundle.empty() && !gpu::reads_seed000_tables(a.method))
+  const methods::RuntimeMethod* method = methods::find_method(a.method);  // null: the reference
+  if (!a.bundle.empty() && !(method && method->reads_seed000_tables()))
     throw UsageError("--bundle: only with --method iwasaki, iwasaki_vertex or mizutani");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
@@ -81,11 +83,11 @@ int run_render(const RenderArgs& a) {
     throw UsageError(e.what());
   }
   if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
-  if (gpu::uses_seed000_tables(a.method) && !in.iwasaki) {
+  if (method && method->needs_seed000_tables() && !in.iwasaki) {
     std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;
     o.progress = open_progress_bar;
-    if (gpu::reads_visibility_masks(a.method)) o.mask_resolution = kMaskResolution;
+    if (method->reads_visibility_masks()) o.mask_resolution = kMaskResolution;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, o));
   }
   const FrameFileOptions files{a.method, a.out, a.width, a.height, a.exposure, a.exposure_bias};

@@ -18,16 +18,15 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
   } catch (const SceneError& e) {
     throw InvalidOption(e.what());
   }
-  for (auto& o : c.scene.objects)
-    if (o.material == Material::cloth) {
-      if (fabric_arg != "scene") o.fabric = fabric_arg;
-      if (c.fabrics.count(o.fabric)) continue;
-      try {
-        c.fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
-      } catch (const FabricError& e) {
-        throw InvalidOption(std::string("--fabrics: ") + e.what());
-      }
+  for (auto& o : c.scene.cloth_objects()) {
+    if (fabric_arg != "scene") o.fabric = fabric_arg;
+    if (c.fabrics.count(o.fabric)) continue;
+    try {
+      c.fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
+    } catch (const FabricError& e) {
+      throw InvalidOption(std::string("--fabrics: ") + e.what());
     }
+  }
   if (c.fabrics.empty()) throw InvalidOption("--scenes: " + scene_name + " has no cloth");
   c.fabric_label = fabric_arg == "scene" ? c.fabrics.begin()->first : fabric_arg;
   c.env = env_arg == "scene" ? c.scene.environment : env_arg;

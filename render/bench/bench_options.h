@@ -37,7 +37,7 @@ struct BenchOptions {
   int stress_points = 24;
   bool no_stability = false;
   int bake_grid = 0;           // iwasaki tables' ξ/ω grids n×n; 0: the paper's 48 (12 with --quick)
-  double target_error = 0.05;  // > 0: `iwasaki (target E)`, `iwasaki_vertex (target E)` rows (bake/scene_selection.h)
+  double target_error = 0.05;  // > 0: `iwasaki (target E)`, `iwasaki_vertex (target E)` rows (bake/selection/scene_selection.h)
   // Midpoint subdivision levels > 0 (scene/mesh_subdivision.h): each per-vertex method row is
   // followed by a row drawn on the cloth meshes refined that many levels, with the visibility
   // baked on them (`METHOD (subdivision L)`), against the same reference.

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "bake/scene_selection.h"
+#include "bake/selection/scene_selection.h"
 #include "bench/bench_case.h"
 #include "bench/bench_results.h"
 #include "bench/knob_sweeps.h"
@@ -21,6 +21,7 @@
 #include "bench/stopwatch.h"
 #include "bench/table_bakes.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 #include "scene/mesh_subdivision.h"
 
 namespace weft::bench {
@@ -28,7 +29,7 @@ namespace weft::bench {
 namespace {
 
 // The row of a seed 000 method (iwasaki or iwasaki_vertex) with the setting `weft bake
-// --target-error` picks for it (bake/scene_selection.h, the method held fixed), next to the
+// --target-error` picks for it (bake/selection/scene_selection.h, the method held fixed), next to the
 // paper-default row of the same case; its views' references cached beside the bench's.
 Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, RowMeasure& measure,
                      const std::filesystem::path& cache) {
@@ -85,7 +86,8 @@ void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, Tab
         for (const auto& m : run) {
           if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
           res.rows.push_back(measure.measure(c, m, m.name, m.name, bakes.tables_for(m.name, c.scene, c.fabrics)));
-          if (m.name.find("_vertex") != std::string::npos && gpu::reads_seed000_tables(m.name))
+          if (const auto& method = methods::method(m.name);
+              method.shading == methods::Shading::per_vertex && method.reads_seed000_tables())
             for (int levels : a.subdivide) res.rows.push_back(subdivided_row(c, m, levels, bakes, measure));
           if ((m.name == "iwasaki" || m.name == "iwasaki_vertex") && a.target_error > 0)
             res.rows.push_back(target_error_row(a, c, m, measure, cache));
@@ -114,7 +116,7 @@ int run_bench(BenchOptions a) {
   apply_quick(a);
   apply_sweep(a);
   validate(a);
-  const auto available = gpu::method_names();
+  const auto available = methods::method_names();
   const bool has_iwasaki = std::find(available.begin(), available.end(), "iwasaki") != available.end();
   const LadderRun ladder_run = select_methods(available, a.methods);
   const auto& run = ladder_run.run;

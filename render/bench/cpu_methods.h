@@ -1,9 +1,10 @@
 #pragma once
 // The runtime methods' C++ evaluations behind one signature, for the stability sweeps and the
 // bench's stability table: the registry's (methods/registry.h), one row per method that has its
-// own, in the table's order. iwasaki and mizutani read baked weighting tables: small ones
-// (kStressTableGrid) are baked in memory for each stress fabric on first use, with the paper's
-// tangent samples (bake_selection.h); iwasaki runs without visibility here.
+// own, in the table's order (kStabilityOrder, then any other in the registry's order). iwasaki
+// and mizutani read baked weighting tables: small ones (kStressTableGrid) are baked in memory for
+// each stress fabric on first use, with the paper's tangent samples (bake_selection.h); iwasaki
+// runs without visibility here.
 #include <functional>
 #include <span>
 #include <string>
@@ -26,6 +27,9 @@ struct CpuMethod {
 
 // ξ, ω_o and ω_i grids of the tables the table-backed methods bake (the paper's are 48).
 inline constexpr int kStressTableGrid = methods::kStressTableGrid;
+
+// The stability table's rows by registry name.
+inline constexpr const char* kStabilityOrder[] = {"iwasaki", "mizutani", "sgpoint", "sheen", "mdfrot", "thin", "sheer"};
 
 const std::vector<CpuMethod>& cpu_methods();
 

@@ -4,9 +4,9 @@
 #include <functional>
 #include <iostream>
 
-#include "bake/bake_selection.h"
+#include "bake/tables/bake_selection.h"
 #include "bench/bench_case.h"
-#include "bench/image_metrics.h"
+#include "measure/image_metrics.h"
 #include "bench/number_text.h"
 #include "bench/report.h"
 #include "bench/stopwatch.h"
@@ -22,8 +22,8 @@ void sweep_sg_counts(const BenchOptions& a, const std::vector<LadderEntry>& run,
   if (a.sweep_sg_counts.empty()) return;
   const Scene s = load_scene_named(a.scenes.front(), a.assets);
   std::map<std::string, Fabric> fabrics;
-  for (const auto& o : s.objects)
-    if (o.material == Material::cloth && !fabrics.count(o.fabric))
+  for (const auto& o : s.cloth_objects())
+    if (!fabrics.count(o.fabric))
       fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
   const auto env_file = env_map_file(s.environment, a.assets / "envmaps");
   auto map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, nullptr));

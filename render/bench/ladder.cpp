@@ -3,17 +3,34 @@
 #include <algorithm>
 
 #include "bench/bench_options.h"
-#include "methods/registry.h"
 
 namespace weft::bench {
 
 const std::vector<LadderEntry>& ladder() {
-  static const std::vector<LadderEntry> l = [] {
-    std::vector<LadderEntry> out;
-    for (const auto& e : methods::bench_ladder()) out.push_back({e.name, e.scenes, e.thin_reference});
-    return out;
-  }();
+  static const std::vector<LadderEntry> l = {
+      {"iwasaki"},
+      {"iwasaki_mask"},
+      {"iwasaki_quadrature"},
+      {"iwasaki_mask_quadrature"},
+      {"iwasaki_vertex"},
+      {"iwasaki_vertex_mask"},
+      {"iwasaki_vertex_quadrature"},
+      {"iwasaki_vertex_mask_quadrature"},
+      {"mizutani"},
+      {"sgpoint"},
+      {"mdfrot"},
+      {"sheen"},
+      {"thin", {"curtain"}, true},
+      {"sheer", {"curtain"}, true},
+      {"sheer_vertex", {"curtain"}, true},
+  };
   return l;
+}
+
+bool thin_reference(const std::string& name) {
+  for (const auto& e : ladder())
+    if (e.name == name) return e.thin_reference;
+  return false;
 }
 
 LadderRun select_methods(const std::vector<std::string>& available, const std::vector<std::string>& requested) {

@@ -1,8 +1,10 @@
 #pragma once
-// The ladder of docs/design.md §4 as the method registry orders it (methods::bench_ladder()): a
-// method is benchmarked when the GPU runtime has it; the rest are reported as missing. `scenes` limits a method to the
-// scenes it is for; `thin_reference`: measured against the reference with cloth as seed 004's
-// thin layer (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.
+// The ladder of docs/design.md §4: the bench's rows per runtime method, keyed by the method's registry
+// name (methods/registry.h). A method is benchmarked when the GPU runtime has it; the rest are
+// reported as missing, and a runtime method the ladder does not list runs after them, on every
+// scene against the opaque reference. `scenes` limits a method to the scenes it is for;
+// `thin_reference`: measured against the reference with cloth as seed 004's thin layer
+// (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.
 #include <set>
 #include <string>
 #include <vector>
@@ -15,7 +17,10 @@ struct LadderEntry {
   bool thin_reference = false;
 };
 
+// In the chart's and the report's order.
 const std::vector<LadderEntry>& ladder();
+// Whether the method named `name` is measured against the thin-layer reference (thin, sheer, sheer_vertex).
+bool thin_reference(const std::string& name);
 
 // What a run measures: the ladder's methods the runtime has (those `requested` names, or all
 // when it is empty), then any runtime method the ladder does not list; `missing`: the ladder's

@@ -26,13 +26,10 @@ void add_scene_inputs(InputHash& h, const std::filesystem::path& assets, const s
     h.add_number(v.x).add_number(v.y).add_number(v.z);
   h.add_number(s.camera.fov_deg);
   for (const auto& o : s.objects) {
-    h.add(o.name).add(o.fabric).add_number(o.material == Material::cloth ? 1 : 0);
+    h.add(o.name).add(o.fabric).add_number(o.is_cloth() ? 1 : 0);
     if (o.optical_thickness > 0.0) h.add_number(o.optical_thickness);  // only a sheer's: other keys stay
     h.add_number(o.albedo.r).add_number(o.albedo.g).add_number(o.albedo.b);
-    for (const auto* attribute : {&o.mesh.positions, &o.mesh.normals, &o.mesh.warps})
-      h.add(std::string_view(reinterpret_cast<const char*>(attribute->data()), attribute->size() * sizeof(glm::dvec3)));
-    h.add(std::string_view(reinterpret_cast<const char*>(o.mesh.triangles.data()),
-                           o.mesh.triangles.size() * sizeof(o.mesh.triangles[0])));
+    add_mesh(h, o.mesh);
   }
 }
 

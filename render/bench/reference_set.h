@@ -15,7 +15,7 @@
 
 #include "bench/bench_case.h"
 #include "bench/bench_options.h"
-#include "bench/reference_cache.h"
+#include "measure/reference_cache.h"
 #include "lighting/env_map.h"
 #include "reference/tangent_convergence.h"
 

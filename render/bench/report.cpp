@@ -1,15 +1,16 @@
 #include "bench/report.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "bench/bench_case.h"
 #include "bench/number_text.h"
+#include "bench/ladder.h"
 #include "bench/stability.h"
-#include "methods/registry.h"
+#include "files/atomic_file.h"
 
 namespace weft::bench {
 
@@ -76,7 +77,7 @@ void target_error_section(std::ostream& md, const BenchOptions& a, const BenchRe
   if (run_iwasaki && a.target_error > 0) {
     md << "\n## `weft bake --target-error " << fmt(a.target_error) << "` against the paper's settings\n\n"
        << "`METHOD (target " << fmt(a.target_error) << ")`: the setting `weft bake --target-error` picks for the method "
-       << "(bake/scene_selection.h: tangent samples, λ levels, SVD error, SDF resolution, PCA error, searched from the "
+       << "(bake/selection/scene_selection.h: tangent samples, λ levels, SVD error, SDF resolution, PCA error, searched from the "
           "paper's setting by measuring the image error on the scene's views, 160x120, against the reference; grids as the "
           "paper row). Cost: ms/frame and bundle bytes (tables + visibility PCA). The RMSE here is on the bench's own view "
           "and size, which the search did not measure.\n\n"
@@ -125,8 +126,7 @@ void see_through_section(std::ostream& md, const BenchResults& res) {
   std::vector<std::string> cases;
   std::map<std::string, std::vector<const Row*>> by_case;
   for (const auto& r : res.rows) {
-    const methods::RuntimeMethod* m = methods::find_method(r.method);
-    if (!m || m->reference != methods::BenchReference::thin_layer) continue;
+    if (!thin_reference(r.method)) continue;
     const std::string key = r.scene + " / " + r.fabric + " / " + r.env;
     if (!by_case.count(key)) cases.push_back(key);
     by_case[key].push_back(&r);
@@ -280,7 +280,7 @@ void missing_section(std::ostream& md, const BenchOptions& a, const BenchResults
 void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
   const auto& rows = res.rows;
   const auto& renderer = res.renderer;
-  std::ofstream csv(out / "results.csv");
+  std::ostringstream csv;
   csv << "scene,fabric,env,method,speed_width,speed_height,ms_per_frame,frames,width,height,relative_rmse,cloth_pixels,"
          "renderer,note,bundle_bytes,shadow_pixels,shadow_relative_rmse,shadow_brightness_ratio,band_brightness_ratio,"
          "lambert_relative_rmse,lambert_brightness_ratio,setting,sg_count,subdivision,cloth_mesh_bytes,"
@@ -299,7 +299,7 @@ void write_results_csv(const std::filesystem::path& out, const BenchOptions& a, 
         << (r.cloth_mesh_bytes ? std::to_string(r.cloth_mesh_bytes) : "") << ","
         << (r.visibility_bake_s >= 0 ? fmt(r.visibility_bake_s, 4) : "") << ","
         << (r.reference_tangent_samples ? std::to_string(r.reference_tangent_samples) : "") << "\n";
-  if (!csv) throw std::runtime_error("cannot write " + (out / "results.csv").string());
+  write_file_atomically(out / "results.csv", csv.view());
 }
 
 void write_chart(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
@@ -308,22 +308,23 @@ void write_chart(const std::filesystem::path& out, const BenchOptions& a, const 
 }
 
 void write_sg_sweep_csv(const std::filesystem::path& file, const std::vector<SweepRow>& sweep) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "method,sg_count,ms_per_frame,relative_rmse_vs_map\n";
   for (const auto& r : sweep) csv << r.method << "," << r.sg_count << "," << fmt(r.ms, 6) << "," << fmt(r.rmse, 6) << "\n";
+  write_file_atomically(file, csv.view());
 }
 
 void write_knob_sweep_csv(const std::filesystem::path& file, const KnobSweep& ks) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "knob,value,ms_per_frame,relative_rmse,table_bytes,visibility_bytes,bake_seconds,tables\n";
   for (const auto& r : ks.rows)
     csv << ks.knob << "," << r.value << "," << fmt(r.ms, 6) << "," << fmt(r.rmse, 6) << "," << r.table_bytes << ","
         << r.visibility_bytes << "," << fmt(r.bake_s, 4) << ",\"" << r.tables << "\"\n";
-  if (!csv) throw std::runtime_error("cannot write " + file.string());
+  write_file_atomically(file, csv.view());
 }
 
 void write_report_md(const std::filesystem::path& out, const BenchOptions& a, const BenchResults& res) {
-  std::ofstream md(out / "report.md");
+  std::ostringstream md;
   overview(md, a, res);
   target_error_section(md, a, res);
   images_section(md, a, res);
@@ -332,7 +333,7 @@ void write_report_md(const std::filesystem::path& out, const BenchOptions& a, co
   stability_section(md, a, res);
   thin_occluder_section(md, a, res);
   missing_section(md, a, res);
-  if (!md) throw std::runtime_error("cannot write " + (out / "report.md").string());
+  write_file_atomically(out / "report.md", md.view());
 }
 
 }  // namespace weft::bench

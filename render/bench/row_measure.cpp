@@ -3,14 +3,15 @@
 #include <cmath>
 #include <iostream>
 
-#include "bake/scene_bundle_writer.h"
+#include "bake/writers/scene_bundle_writer.h"
 #include "bench/chart.h"
-#include "bench/image_metrics.h"
+#include "measure/image_metrics.h"
 #include "bench/number_text.h"
 #include "bench/table_stats.h"
 #include "frame/frame_render.h"
 #include "gpu/scene_renderer.h"
 #include "image/image.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
@@ -32,12 +33,11 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
   r.reference_tangent_samples = ref->tangent_samples;
   if (bundle) {
     r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
-    if (gpu::reads_visibility_masks(m.name)) r.bundle_bytes += mask_bytes(*bundle);
+    if (methods::method(m.name).reads_visibility_masks()) r.bundle_bytes += mask_bytes(*bundle);
   }
-  r.visibility = gpu::uses_seed000_tables(m.name);
+  r.visibility = methods::method(m.name).needs_seed000_tables();
   r.sg_count = int(c.sgs.size());
-  for (const auto& o : scene.objects)
-    if (o.material == Material::cloth) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
+  for (const auto& o : scene.cloth_objects()) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
   const GpuFrame speed = render_gpu_frame(scene, c.fabrics, c.sgs, m.name, a.speed_width, a.speed_height,
                                           a.speed_frames, bundle);
   renderer_ = speed.renderer;

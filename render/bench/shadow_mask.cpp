@@ -22,7 +22,7 @@ ShadowMask sun_shadow_mask(const Scene& scene, const SgLighting& sgs, int width,
     for (int x = 0; x < width; ++x) {
       const glm::dvec3 dir = camera_ray(scene.camera, width, height, x + 0.5, y + 0.5);
       const auto hit = rays.intersect(scene.camera.position, dir);
-      if (!hit || scene.objects[hit->object].material != Material::cloth) continue;
+      if (!hit || !scene.objects[hit->object].is_cloth()) continue;
       const SurfacePoint s = rays.surface(*hit);
       // Two-sided cloth: the side the camera sees (as the reference shades it).
       const glm::dvec3 ng = glm::dot(s.geometric_normal, dir) > 0.0 ? -s.geometric_normal : s.geometric_normal;

@@ -4,12 +4,13 @@
 #include <array>
 #include <iterator>
 #include <ctime>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 
 #include "bench/number_text.h"
 #include "bench/report.h"
+#include "files/atomic_file.h"
 #include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/sg_fit.h"
@@ -131,7 +132,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
     it->reference_samples = r.reference_tangent_samples;
   }
 
-  std::ofstream csv(out / "low_sun.csv");
+  std::ostringstream csv;
   csv << "scene,fabric,env," << kSweepMethods[0] << "_rmse," << kSweepMethods[1]
       << "_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,reference_tangent_samples";
   for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << kSweepMethods[i] << "_rmse";
@@ -144,7 +145,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
     for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << fmt(c.rmse[i], 4);
     csv << "\n";
   }
-  if (!csv) throw std::runtime_error("cannot write " + (out / "low_sun.csv").string());
+  write_file_atomically(out / "low_sun.csv", csv.view());
 
   double fit_worst = 0.0, probe_worst = 0.0, probe_ms_worst = 0.0;
   for (const auto& [env, f] : fits) {
@@ -152,7 +153,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
     probe_worst = std::max(probe_worst, f.probe_irradiance_error);
     probe_ms_worst = std::max(probe_ms_worst, f.probe_update_ms);
   }
-  std::ofstream md(out / "low_sun.md");
+  std::ostringstream md;
   md << "# Low suns and turned maps (`weft bench --sweep " << a.sweep << "`)\n\n"
      << "Relative RMSE over the cloth pixels at " << a.width << "x" << a.height
      << " against the reference under the same " << a.sg_count << " fitted SGs (SG grid " << a.sg_grid << ", "
@@ -192,6 +193,7 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
        << (r.tangent.steps.empty() ? "" : r.tangent_cached ? "cached (" + fmt(r.tangent.seconds) + ")" : fmt(r.tangent.seconds))
        << " | " << (r.image_cached ? "cached" : fmt(r.render_seconds)) << " |\n";
   }
+  write_file_atomically(out / "low_sun.md", md.view());
 }
 
 }  // namespace weft::bench

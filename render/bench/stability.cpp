@@ -4,7 +4,7 @@
 #include <numbers>
 #include <random>
 
-#include "methods/registry.h"
+#include "bench/ladder.h"
 #include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
@@ -102,8 +102,7 @@ std::vector<dvec3> stress_reference(const StressCase& c) {
 StressResult run_stress(const CpuMethod& method, const StressCase& c, const std::vector<dvec3>* reference,
                         int tangent_samples) {
   const ClothBsdf bsdf(c.fabric, tangent_samples);
-  const methods::RuntimeMethod* entry = methods::find_method(method.name);
-  const bool thin = entry && entry->reference == methods::BenchReference::thin_layer;  // thin, sheer, sheer_vertex
+  const bool thin = thin_reference(method.name);
   const ThinParams thin_p = thin_params(c.fabric);
   StressResult r;
   double se = 0.0, sum_ref = 0.0;

@@ -4,10 +4,11 @@
 #include <chrono>
 #include <iostream>
 
-#include "bake/visibility_mask_bake.h"
+#include "bake/visibility/visibility_mask_bake.h"
 #include "bench/number_text.h"
 #include "bench/stopwatch.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 #include "runtime/visibility_mask.h"
 
 namespace weft::bench {
@@ -19,7 +20,10 @@ IwasakiBakeOptions TableBakes::paper_options() const {
   if (options_.quick) o.visibility.resolution = 16;
   // Masks only when a method reads them (an empty list runs every method).
   const auto& m = options_.methods;
-  if (m.empty() || std::any_of(m.begin(), m.end(), [](const std::string& n) { return gpu::reads_visibility_masks(n); }))
+  if (m.empty() || std::any_of(m.begin(), m.end(), [](const std::string& n) {
+        const methods::RuntimeMethod* method = methods::find_method(n);
+        return method && method->reads_visibility_masks();
+      }))
     o.mask_resolution = kMaskResolution;
   return o;
 }
@@ -45,7 +49,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key
 
 std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::string& method, const Scene& scene,
                                                                 const std::map<std::string, Fabric>& fabrics) {
-  if (!gpu::reads_seed000_tables(method)) return nullptr;
+  if (!methods::method(method).reads_seed000_tables()) return nullptr;
   const std::string k = key(scene, fabrics);
   if (bakes_.count(k)) return bakes_.at(k);
   std::string fabric_set;
@@ -71,13 +75,13 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
               << std::flush;
     const auto t = std::chrono::steady_clock::now();
     for (size_t i = 0; i < refined.objects.size(); ++i)
-      if (refined.objects[i].material == Material::cloth)
+      if (refined.objects[i].is_cloth())
         if (auto v = bake_object_visibility(refined, i, paper_options().visibility)) it->second.cloth.emplace(i, std::move(*v));
     it->second.seconds = seconds_since(t);
     std::cerr << " " << fmt(it->second.seconds) << " s\n";
   }
   // The base mesh's masks do not fit the refined vertices: bake them again for the methods that read them.
-  const bool masks = gpu::reads_visibility_masks(method);
+  const bool masks = methods::method(method).reads_visibility_masks();
   if (masks && it->second.masks.empty()) {
     std::cerr << "weft bench: baking visibility masks of " << scene.name << "'s cloth subdivided " << levels << " ..."
               << std::flush;
@@ -90,7 +94,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
   }
   auto data = std::make_shared<IwasakiBundleData>(*base);
   for (size_t i = 0; i < refined.objects.size(); ++i)
-    if (refined.objects[i].material == Material::cloth) data->visibility.erase(i), data->masks.erase(i);
+    if (refined.objects[i].is_cloth()) data->visibility.erase(i), data->masks.erase(i);
   for (const auto& [i, v] : it->second.cloth) data->visibility.emplace(i, v);
   if (masks)
     for (const auto& [i, m] : it->second.masks) data->masks.emplace(i, m);

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "bake/scene_bake.h"
+#include "bake/scene/scene_bake.h"
 #include "bench/bench_options.h"
 
 namespace weft::bench {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-#include "bundle/atomic_file.h"
+#include "files/atomic_file.h"
 
 namespace weft::bundle {
 namespace {

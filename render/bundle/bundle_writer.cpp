@@ -4,7 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "bundle/atomic_file.h"
+#include "files/atomic_file.h"
 #include "bundle/crc32c.h"
 
 namespace weft::bundle {

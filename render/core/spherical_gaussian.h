@@ -79,7 +79,7 @@ glm::dvec3 irradiance(const SphericalGaussian& g, const glm::dvec3& n);
 //   (its height decays as e^{λch}, faster than the re-aimed SG's): the SG on e that keeps both
 //   G's power above the plane, H(λ, c) (sg_hemisphere_integral), and its mean cosine there, C/H:
 //   λ' from horizon_sharpness_for_mean_cosine, μ' = μ·H(λ, c)/H(λ', 0). The broad rule gave a
-//   λ = 1000 sun 2° below the horizon 38 % of its light short (IWASAKI.md).
+//   λ = 1000 sun 2° below the horizon 38 % of its light short (docs/research/iwasaki.md).
 // - In between, λ' and μ' are blended geometrically (horizon_sliver_weight).
 // λ' ≥ `min_sharpness`.
 SphericalGaussian above_horizon(const SphericalGaussian& g, const glm::dvec3& n, double min_sharpness);

@@ -39,11 +39,10 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
     }
   }
   if (!a.fabric.empty())
-    for (auto& obj : in.scene.objects)
-      if (obj.material == Material::cloth) obj.fabric = a.fabric;
+    for (auto& obj : in.scene.cloth_objects()) obj.fabric = a.fabric;
   try {
     for (const auto& obj : in.scene.objects)
-      if (obj.material == Material::cloth && !in.fabrics.count(obj.fabric))
+      if (obj.is_cloth() && !in.fabrics.count(obj.fabric))
         in.fabrics.emplace(obj.fabric, load_fabric_named(obj.fabric, a.assets / "fabrics"));
   } catch (const FabricError& e) {
     throw FrameInputError(std::string("--fabric: ") + e.what());

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <chrono>
 
-#include "bake/table_baker.h"
+#include "bake/tables/table_baker.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
+#include "methods/registry.h"
 
 namespace weft {
 
@@ -15,9 +16,8 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
                           std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
-  for (const auto& o : scene.objects)
-    if (o.material == Material::cloth) cloth.push_back(fabrics.at(o.fabric));
-  gpu::SceneRenderer renderer(scene, cloth, gpu::parse_method(method), 16, std::move(iwasaki), table_baker());
+  for (const auto& o : scene.cloth_objects()) cloth.push_back(fabrics.at(o.fabric));
+  gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);
   renderer.set_weave(weave);

@@ -17,25 +17,6 @@
 
 namespace weft::gpu {
 
-Method parse_method(const std::string& name) { return methods::method(name); }
-std::string method_name(Method method) { return method.name; }
-std::vector<std::string> method_names() { return methods::method_names(); }
-
-bool uses_seed000_tables(Method method) { return method.seed000 == methods::Seed000Tables::required; }
-bool reads_seed000_tables(Method method) { return method.seed000 != methods::Seed000Tables::unused; }
-bool uses_seed000_tables(const std::string& name) {
-  const auto* m = methods::find_method(name);
-  return m && uses_seed000_tables(*m);
-}
-bool reads_seed000_tables(const std::string& name) {
-  const auto* m = methods::find_method(name);
-  return m && reads_seed000_tables(*m);
-}
-bool reads_visibility_masks(const std::string& name) {
-  const auto* m = methods::find_method(name);
-  return m && m->visibility_masks;
-}
-
 SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness) {
   SgLighting out = sgs;
   for (SphericalGaussian& g : out) {
@@ -58,7 +39,8 @@ struct SceneRenderer::Object {
   const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
 };
 
-SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples,
+SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method,
+                             int tangent_samples,
                              std::shared_ptr<const IwasakiBundleData> iwasaki, TableSource tables)
     : method_(&method), bundle_(iwasaki) {
   cloth_ = method.make_gpu(ClothMethodSetup{tangent_samples, std::move(iwasaki), std::move(tables)});
@@ -70,7 +52,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Me
     const SceneObject& o = scene.objects[i];
     auto obj = std::make_unique<Object>();
     obj->source = &o;
-    obj->cloth = o.material == Material::cloth;
+    obj->cloth = o.is_cloth();
     if (obj->cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->fabric = object_fabric(o, fabrics[cloth]);

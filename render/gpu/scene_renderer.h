@@ -14,27 +14,12 @@
 #include "image/image.h"
 #include "methods/bundle_visibility.h"
 #include "methods/cloth_method.h"
-#include "methods/registry.h"
+#include "methods/runtime_method.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
 
 class WeaveLayer;
-
-// A runtime method: an entry of the registry (methods/registry.h), which lists them all.
-using Method = const methods::RuntimeMethod&;
-Method parse_method(const std::string& name);  // throws std::invalid_argument listing the methods
-std::string method_name(Method method);
-std::vector<std::string> method_names();
-// Seed 000's tables (a bundle's IwasakiBundleData): iwasaki and iwasaki_vertex cannot draw
-// without them; mizutani also reads their W tables when given (else it bakes its own).
-bool uses_seed000_tables(Method method);
-bool reads_seed000_tables(Method method);
-// The same by name; false for names that are no GPU method.
-bool uses_seed000_tables(const std::string& method_name);
-bool reads_seed000_tables(const std::string& method_name);
-// The bundle's per-vertex visibility masks (the *_mask and *_quadrature rungs); false for other names.
-bool reads_visibility_masks(const std::string& method_name);
 
 // What is drawn behind the scene. `measure`: nothing (black) except behind see-through cloth,
 // where the SG environment is seen as the reference sees it (the bench's accuracy frames).
@@ -59,7 +44,8 @@ public:
   // mizutani takes its W tables from there when they were baked for the paper's samples (else
   // from `tables`, which the offline commands fill with a baker and the kiosk leaves empty). The
   // bundle's visibility shades every method's floors.
-  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, Method method, int tangent_samples = 16,
+  // `method`: an entry of the registry (methods/registry.h).
+  SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method, int tangent_samples = 16,
                 std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr, TableSource tables = {});
   ~SceneRenderer();
 

@@ -14,6 +14,8 @@
 #include <ImfHeader.h>
 #include <png.h>
 
+#include "files/atomic_file.h"
+
 namespace weft {
 
 void write_exr(const Image& image, const std::filesystem::path& file) {
@@ -30,9 +32,11 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
     fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
     fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
     fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
-    Imf::OutputFile out(file.c_str(), header);
-    out.setFrameBuffer(fb);
-    out.writePixels(image.height);
+    write_file_atomically(file, [&](const std::filesystem::path& temporary) {
+      Imf::OutputFile out(temporary.c_str(), header);
+      out.setFrameBuffer(fb);
+      out.writePixels(image.height);
+    });
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write EXR " + file.string() + ": " + e.what());
   }
@@ -40,30 +44,32 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
 
 
 void write_png(const Image& image, const std::filesystem::path& file, double exposure) {
-  std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(file.c_str(), "wb"), std::fclose);
-  if (!fp) throw std::runtime_error("cannot open " + file.string() + " for writing");
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!png || !info) {
+  write_file_atomically(file, [&](const std::filesystem::path& temporary) {
+    std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(temporary.c_str(), "wb"), std::fclose);
+    if (!fp) throw std::runtime_error("cannot open " + file.string() + " for writing");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!png || !info) {
+      png_destroy_write_struct(&png, &info);
+      throw std::runtime_error("libpng: out of memory writing " + file.string());
+    }
+    std::vector<unsigned char> row(static_cast<size_t>(image.width) * 3);
+    if (setjmp(png_jmpbuf(png))) {
+      png_destroy_write_struct(&png, &info);
+      throw std::runtime_error("libpng: failed writing " + file.string());
+    }
+    png_init_io(png, fp.get());
+    png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c) row[3 * x + c] = static_cast<unsigned char>(std::lround(255.0 * display_value(image.at(x, y)[c], exposure)));
+      png_write_row(png, row.data());
+    }
+    png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("libpng: out of memory writing " + file.string());
-  }
-  std::vector<unsigned char> row(static_cast<size_t>(image.width) * 3);
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("libpng: failed writing " + file.string());
-  }
-  png_init_io(png, fp.get());
-  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) row[3 * x + c] = static_cast<unsigned char>(std::lround(255.0 * display_value(image.at(x, y)[c], exposure)));
-    png_write_row(png, row.data());
-  }
-  png_write_end(png, info);
-  png_destroy_write_struct(&png, &info);
+  });
 }
 
 double auto_exposure(const Image& image, const std::vector<bool>& include, double bias_ev) {

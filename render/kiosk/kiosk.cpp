@@ -21,6 +21,7 @@
 #include "kiosk/turntable.h"
 #include "scene/weave_scale.h"
 #include "journal/journal_log.h"
+#include "methods/registry.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
 
@@ -46,7 +47,7 @@ Camera closeup_of(const Scene& scene, const std::vector<Fabric>& cloth, int heig
   std::map<std::string, Fabric> fabrics;
   size_t c = 0;
   for (const auto& o : scene.objects)
-    if (o.material == Material::cloth && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
+    if (o.is_cloth() && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
   return closeup_camera(scene, fabrics, height);
 }
 void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
@@ -65,8 +66,7 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 // fabrics keeps its own.
 std::string knob_fabric(const SceneBundle& sb) {
   std::string fabric;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) fabric = o.fabric;
+  for (const auto& o : sb.scene.cloth_objects()) fabric = o.fabric;
   return fabric;
 }
 
@@ -84,8 +84,7 @@ std::vector<Fabric> preset_list(const SceneBundle& sb) {
 
 std::vector<Fabric> cloth_fabrics(const SceneBundle& sb) {
   std::vector<Fabric> fabrics;
-  for (const auto& o : sb.scene.objects)
-    if (o.material == Material::cloth) fabrics.push_back(sb.fabrics.at(o.fabric));
+  for (const auto& o : sb.scene.cloth_objects()) fabrics.push_back(sb.fabrics.at(o.fabric));
   return fabrics;
 }
 
@@ -166,7 +165,7 @@ void Kiosk::check_config() {
     throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
   if (!(c.zoom >= 0.0 && c.zoom <= 1.0)) throw KioskConfigError("--zoom: the way to the close-up, in [0, 1]");
   if (c.method != "auto") try {
-      gpu::parse_method(c.method);
+      methods::method(c.method);
     } catch (const std::invalid_argument& e) {
       throw KioskConfigError(std::string("--method: ") + e.what() + " or auto");
     }
@@ -603,11 +602,10 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   try {
     const std::string dressed = knob_fabric(*scene_);
     size_t c = 0;
-    for (const auto& o : scene_->scene.objects)
-      if (o.material == Material::cloth) {
-        if (o.fabric == dressed) renderer_->set_fabric(c, f);
-        ++c;
-      }
+    for (const auto& o : scene_->scene.cloth_objects()) {
+      if (o.fabric == dressed) renderer_->set_fabric(c, f);
+      ++c;
+    }
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
     log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
   }

@@ -79,9 +79,9 @@ struct KioskConfig {
   double sim_speed = 1.0;                 // sim: scripts play this many times faster
   std::string screenshot;                 // PNG of the last frame, tone-mapped; empty: none
   std::vector<int> size{640, 480};        // headless frame size
-  // auto: iwasaki_vertex when the bundle has seed 000 tables (the same accuracy as per-pixel
-  // iwasaki on the showroom meshes at a tenth to a twentieth of the cost; render/methods/iwasaki/IWASAKI.md),
-  // or sheer_vertex when a cloth object is a sheer (seed 004's layer over it, see-through), else sgpoint.
+  // auto: the registry's kiosk rung whose traits fit the bundle (kiosk/kiosk_bundle.h, kiosk_method):
+  // per vertex with seed 000's tables (the same accuracy as per pixel on the showroom meshes at a
+  // tenth to a twentieth of the cost; docs/research/iwasaki.md), see-through for a sheer.
   std::string method = "auto";
   // Tone mapping (image/tone_map.h): exposure metered on the cloth whenever the lighting changes
   // (not on knob edits: a darker fabric shows darker), eased in over kExposureAdaptSeconds, plus

@@ -1,16 +1,72 @@
 #include "kiosk/kiosk_bundle.h"
 
 #include <map>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "core/input_hash.h"
-#include "gpu/scene_renderer.h"
 #include "kiosk/kiosk_config_error.h"
 #include "methods/registry.h"
 #include "scene/scene.h"
 
 namespace weft {
+
+namespace {
+
+// The first of the kiosk's rungs (RuntimeMethod::kiosk_rung), in the registry's order, whose traits fit.
+template <class Fits>
+const methods::RuntimeMethod& kiosk_rung(Fits fits) {
+  for (const auto& m : methods::registry())
+    if (m.kiosk_rung && fits(m)) return m;
+  throw std::logic_error("the method registry has no kiosk rung for this bundle");
+}
+
+// Opaque cloth shaded with seed 000's tables.
+bool opaque_seed000(const methods::RuntimeMethod& m) { return m.needs_seed000_tables() && !m.see_through; }
+
+// Drawn without seed 000's tables: opaque, and nothing the bundle's bake adds.
+const methods::RuntimeMethod& tableless_rung() {
+  return kiosk_rung([](const methods::RuntimeMethod& m) {
+    return !m.reads_seed000_tables() && !m.see_through && !m.reads_visibility_masks();
+  });
+}
+
+// --method auto (header).
+const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
+  using methods::RuntimeMethod, methods::Shading;
+  if (!bundle.iwasaki) return tableless_rung();
+  bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
+  for (const auto& o : bundle.scene.scene.cloth_objects())
+    sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
+  if (sheer)
+    return kiosk_rung([](const RuntimeMethod& m) {
+      return m.see_through && m.needs_seed000_tables() && m.shading == Shading::per_vertex && !m.reads_visibility_masks();
+    });
+  // The bake's search chose an opaque rung without masks (per pixel or per vertex): its shading;
+  // else per vertex.
+  const RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
+  const Shading shading =
+      chosen && opaque_seed000(*chosen) && !chosen->reads_visibility_masks() ? chosen->shading : Shading::per_vertex;
+  // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
+  // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
+  // take the quadrature rung, or the rung that reads the masks which `weft bake --choose-rung`
+  // measured closer to the scene's reference.
+  bool masks_cover = true;
+  for (const auto& [i, v] : bundle.iwasaki->visibility)
+    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth())
+      masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
+  if (!masks_cover)
+    return kiosk_rung([&](const RuntimeMethod& m) {
+      return opaque_seed000(m) && m.shading == shading && !m.reads_visibility_masks();
+    });
+  if (chosen && opaque_seed000(*chosen) && chosen->reads_visibility_masks()) return *chosen;
+  return kiosk_rung([&](const RuntimeMethod& m) {
+    return opaque_seed000(m) && m.shading == shading && m.masks.broad_lobes && !m.masks.open_share;
+  });
+}
+
+}  // namespace
 
 std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
   InputHash h;
@@ -21,7 +77,7 @@ std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method) {
   KioskBundle b;
   b.scene = read_scene_bundle(reader);
-  if (has_iwasaki_sections(reader) && method != "sgpoint") {
+  if (has_iwasaki_sections(reader) && method != tableless_rung().name) {
     std::map<size_t, size_t> vertices;
     for (size_t i = 0; i < b.scene.scene.objects.size(); ++i) vertices[i] = b.scene.scene.objects[i].mesh.positions.size();
     b.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
@@ -40,32 +96,8 @@ std::string selected_method(std::string_view selection_json) {
 
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file) {
-  bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
-  for (const auto& o : bundle.scene.scene.objects)
-    if (o.material == Material::cloth)
-      sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
-  const bool searched = bundle.baked_for == "iwasaki" || bundle.baked_for == "iwasaki_vertex";
-  std::string opaque = searched ? bundle.baked_for : "iwasaki_vertex";
-  // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
-  // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
-  // take the quadrature rung, or the rung that reads the masks which `weft bake --choose-rung`
-  // measured closer to the scene's reference.
-  if (bundle.iwasaki) {
-    bool masks_cover = true;
-    for (const auto& [i, v] : bundle.iwasaki->visibility)
-      if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].material == Material::cloth)
-        masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
-    if (masks_cover) {
-      const methods::RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
-      const bool measured = chosen && chosen->visibility_masks && chosen->seed000 == methods::Seed000Tables::required &&
-                            !chosen->see_through;
-      opaque = measured ? chosen->name : opaque == "iwasaki" ? "iwasaki_quadrature" : "iwasaki_vertex_quadrature";
-    }
-  }
-  const methods::RuntimeMethod& m = gpu::parse_method(method != "auto" ? method
-                                                      : bundle.iwasaki ? (sheer ? "sheer_vertex" : opaque)
-                                                                       : "sgpoint");
-  if (gpu::uses_seed000_tables(m) && !bundle.iwasaki)
+  const methods::RuntimeMethod& m = method != "auto" ? methods::method(method) : auto_method(bundle);
+  if (m.needs_seed000_tables() && !bundle.iwasaki)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");
   return m;

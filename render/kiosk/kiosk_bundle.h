@@ -1,7 +1,7 @@
 #pragma once
 // A scene bundle as the kiosk shows it: what it reads from a verified bundle (the scene, every
-// fabric preset, and seed 000's tables unless it draws with sgpoint), the runtime method it
-// draws with, and a fingerprint of the content. Read at boot (through the last-good fallback)
+// fabric preset, and seed 000's tables unless it draws with the kiosk's rung that needs none),
+// the runtime method it draws with, and a fingerprint of the content. Read at boot (through the last-good fallback)
 // and for each content update (kiosk/bundle_watcher.h), the same way both times.
 #include <cstdint>
 #include <filesystem>
@@ -18,7 +18,7 @@ namespace weft {
 
 struct KioskBundle {
   SceneBundle scene;
-  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or sgpoint asked for)
+  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or the tableless rung asked for)
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
   // The method `weft bake --target-error` or `--choose-rung` measured (bake/selection); empty: none.
   std::string baked_for;
@@ -32,12 +32,14 @@ std::string selected_method(std::string_view selection_json);
 // bundle::BundleError naming the section when something is missing or invalid.
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
-// The method for a bundle: --method, or for auto (when the bundle has seed 000 tables)
-// sheer_vertex if a cloth object is a sheer, else the rung `weft bake --choose-rung` chose (baked_for)
-// when the bundle's masks cover the occluded cloth, else the quadrature rung of the per-pixel or
-// per-vertex method the bake's search chose (or iwasaki_vertex), or that method itself where masks
-// are missing; sgpoint without tables. Throws
-// KioskConfigError when the method needs tables the bundle lacks.
+// The method for a bundle: --method, or for auto the first of the registry's kiosk rungs
+// (RuntimeMethod::kiosk_rung) whose traits fit the bundle: without seed 000 tables, one that needs
+// none; with them, a see-through per-vertex rung if a cloth object is a sheer; else an opaque rung
+// with the shading (per pixel or per vertex) of the one the bake's search chose (per vertex when
+// none), which where the bundle's masks cover the occluded cloth is the mask-reading rung
+// `weft bake --choose-rung` chose (baked_for), or the one taking the broad lobes by quadrature over
+// the masks, and elsewhere the one reading no masks. Throws KioskConfigError when the method needs
+// tables the bundle lacks.
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file);
 

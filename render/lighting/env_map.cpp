@@ -18,6 +18,8 @@
 #include <OpenEXR/ImfCompression.h>
 #include <Imath/half.h>
 
+#include "files/atomic_file.h"
+
 namespace weft {
 
 namespace {
@@ -381,9 +383,11 @@ void write_env_map(const std::filesystem::path& path, const EnvMap& map, const E
                                        sizeof(float) * channels * map.width));
       }
     }
-    Imf::OutputFile file(path.c_str(), header);
-    file.setFrameBuffer(fb);
-    file.writePixels(map.height);
+    write_file_atomically(path, [&](const std::filesystem::path& temporary) {
+      Imf::OutputFile file(temporary.c_str(), header);
+      file.setFrameBuffer(fb);
+      file.writePixels(map.height);
+    });
   } catch (const std::exception& e) {
     throw EnvMapError(path, std::string("cannot write OpenEXR: ") + e.what());
   }

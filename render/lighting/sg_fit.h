@@ -37,7 +37,7 @@ struct SgFitOptions {
   int count = 10;                // K
   int grid_width = 128;          // fit grid width (height = width / 2)
   // λ bounds. The shading tables cover 1/16..1024; lobes broader than λ ≈ 1 are the hard ones
-  // to shade (render/methods/iwasaki/IWASAKI.md) and the skies and bundled maps fit as well
+  // to shade (docs/research/iwasaki.md) and the skies and bundled maps fit as well
   // without them (docs/bench/low_sun/fit_error.md).
   double min_sharpness = 1.0;
   double max_sharpness = 1000.0; // σ ≈ 1/√λ ≈ 1.8°: where sources smaller than that end up

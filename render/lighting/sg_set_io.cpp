@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
+
+#include "files/atomic_file.h"
 
 namespace weft {
 
@@ -76,17 +79,12 @@ SgLighting load_sg_set(const std::filesystem::path& path) {
 }
 
 void save_sg_set(const std::filesystem::path& path, const SgLighting& sgs) {
-  // Write beside the target and rename, so a reader never sees half a file.
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw SgSetError(path, "cannot write");
-    out << sg_set_to_json(sgs).dump(2) << "\n";
-    if (!out) throw SgSetError(path, "write failed");
+  // A reader never sees half a file, nor a power cut a mix of two.
+  try {
+    write_file_atomically(path, sg_set_to_json(sgs).dump(2) + "\n");
+  } catch (const std::system_error& e) {
+    throw SgSetError(path, e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw SgSetError(path, "cannot replace: " + ec.message());
 }
 
 }  // namespace weft

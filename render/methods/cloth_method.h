@@ -11,7 +11,7 @@
 #include "runtime/table_source.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
-#include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/sg_visibility.h"
 #include "scene/mesh.h"
 
 namespace weft::gpu {

@@ -1,6 +1,6 @@
 #pragma once
 // Floors and occluders: Lambertian surfaces under the SGs, shadowed with seed 000's visibility
-// (§3.2) like the cloth — the same baked SDF per vertex (bake/scene_visibility.h), read at the
+// (§3.2) like the cloth — the same baked SDF per vertex (bake/visibility/scene_visibility.h), read at the
 // SG axes when the lighting changes (SgVisibility), and the same visibility ratio H of Eq. 12–14.
 //
 // Per vertex and SG G_k: E_k = irradiance(G_k, n) · min(1, H_sdf / H_horizon), where
@@ -20,7 +20,7 @@
 #include "runtime/sigmoid_gain_table.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
-#include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/sg_visibility.h"
 
 namespace weft {
 

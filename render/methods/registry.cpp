@@ -1,6 +1,5 @@
 #include "methods/registry.h"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "methods/iwasaki/iwasaki_method.h"
@@ -41,25 +40,6 @@ std::vector<std::string> method_names() {
   std::vector<std::string> names;
   for (const auto& m : registry()) names.push_back(m.name);
   return names;
-}
-
-std::vector<BenchLadderEntry> bench_ladder() {
-  std::vector<const RuntimeMethod*> sorted;
-  for (const auto& m : registry()) sorted.push_back(&m);
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const RuntimeMethod* a, const RuntimeMethod* b) { return a->ladder_position < b->ladder_position; });
-  std::vector<BenchLadderEntry> ladder;
-  for (const RuntimeMethod* m : sorted) ladder.push_back({m->name, m->bench_scenes, m->reference == BenchReference::thin_layer});
-  return ladder;
-}
-
-std::vector<const RuntimeMethod*> stability_methods() {
-  std::vector<const RuntimeMethod*> out;
-  for (const auto& m : registry())
-    if (m.stability_position >= 0 && m.cpu) out.push_back(&m);
-  std::stable_sort(out.begin(), out.end(),
-                   [](const RuntimeMethod* a, const RuntimeMethod* b) { return a->stability_position < b->stability_position; });
-  return out;
 }
 
 }  // namespace weft::methods

@@ -3,7 +3,6 @@
 // GPU side, and its C++ evaluation. Each method's folder defines its entry (<name>_method.h).
 #include <functional>
 #include <memory>
-#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,10 +22,18 @@ enum class Seed000Tables {
   required,         // cannot draw without them
 };
 
-// What the bench measures a method's accuracy against.
-enum class BenchReference {
-  opaque,      // the reference with opaque cloth
-  thin_layer,  // the reference with cloth as seed 004's thin layer (ReferenceRenderOptions::thin_cloth)
+// Where a method shades.
+enum class Shading {
+  per_pixel,   // every cloth fragment
+  per_vertex,  // every mesh vertex, interpolated over the triangles
+};
+
+// What a method reads from the bundle's per-vertex visibility masks (`weft bake` writes them
+// unless `--no-masks`).
+struct MaskUse {
+  bool open_share = false;   // the sharper SGs' visibility: the mask's open share V_k instead of the SDF's H
+  bool broad_lobes = false;  // the sky's broad lobes by quadrature over the mask's cells
+  bool any() const { return open_share || broad_lobes; }
 };
 
 // One C++ evaluation: radiance leaving the cloth towards ω_o.
@@ -46,17 +53,20 @@ struct RuntimeMethod {
   // The cloth shows what lies behind it: drawn last, blended dst·α + src, over the SG environment.
   bool see_through = false;
   Seed000Tables seed000 = Seed000Tables::unused;
-  // Reads the bundle's per-vertex visibility masks (`weft bake` writes them unless `--no-masks`).
-  bool visibility_masks = false;
-  BenchReference reference = BenchReference::opaque;
-  std::set<std::string> bench_scenes;  // the scenes the bench runs it on; empty: every scene
-  int ladder_position = 0;             // its row on the bench's chart and report (ascending)
-  int stability_position = -1;         // its row in the stability table; -1: no C++ evaluation of its own
+  Shading shading = Shading::per_pixel;
+  MaskUse masks;
+  // `weft run --method auto` may choose it: the kiosk takes the first such method, in the
+  // registry's order, whose traits fit the bundle (kiosk/kiosk_bundle.h).
+  bool kiosk_rung = false;
   // The fragment shader's function parts in order, without the method's main (a parity test
   // compiles them with its own); embedded names (shaders/embedded_shaders.h).
   std::vector<std::string_view> glsl;
   GpuFactory make_gpu;
-  CpuEvaluation cpu;  // empty where stability_position is -1
+  CpuEvaluation cpu;  // empty: no C++ evaluation of its own
+
+  bool needs_seed000_tables() const { return seed000 == Seed000Tables::required; }
+  bool reads_seed000_tables() const { return seed000 != Seed000Tables::unused; }
+  bool reads_visibility_masks() const { return masks.any(); }
 };
 
 }  // namespace weft::methods

@@ -16,7 +16,7 @@
 // [−π/2, π/2], φ_k nodes over [−π, π], λ' nodes uniform in log(1 + λ') over [0, lambda_max];
 // lookups are trilinear and clamp to the axes (φ_k is wrapped to (−π, π] first); past lambda_max
 // the ratio is held at the last node while Z(λ') is exact. The table is computed offline
-// (render/bake/azimuthal_bake.h); this is what the runtime reads.
+// (render/bake/tables/azimuthal_bake.h); this is what the runtime reads.
 #include <cstddef>
 #include <vector>
 

@@ -3,7 +3,7 @@
 // tables T of each baked fabric (SVD factors), the per-vertex visibility SDF of each occluded
 // object (cloth, floor, occluder) as PCA (mean, basis, coefficients), the sigmoid gain table κ,
 // and each occluded cloth object's per-vertex visibility mask (runtime/visibility_mask.h). Written by
-// `weft bake` beside the scene sections (render/bake/iwasaki_bundle_writer.h), read here for
+// `weft bake` beside the scene sections (render/bake/writers/iwasaki_bundle_writer.h), read here for
 // `weft run` / `weft render --method iwasaki`.
 #include <map>
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 // The scene part of a bundle (BUNDLE_FORMAT.md, "Scene bundle sections"): meshes, materials,
-// fabric parameters, camera and default SGs, written by `weft bake` (render/bake/scene_bundle_writer.h)
+// fabric parameters, camera and default SGs, written by `weft bake` (render/bake/writers/scene_bundle_writer.h)
 // and read back here for `weft run`.
 // Tables baked by other stages (T, SDF/PCA, κ, T_l) go beside these under their own names.
 #include <filesystem>

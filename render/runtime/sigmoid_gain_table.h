@@ -1,7 +1,7 @@
 #pragma once
 // The sigmoid gain table κ(σ_l, σ'_l, ∇d) of seed 000 §3.2 (Eq. 14) and its lookup: the
 // occluded share H of an SG lobe against the linear visibility V' ≈ 1 / (1 + exp(−κ·d)).
-// Fitted offline (render/bake/sigmoid_gain.h, which also holds H itself); read from a bundle.
+// Fitted offline (render/bake/visibility/sigmoid_gain.h, which also holds H itself); read from a bundle.
 #include <cmath>
 #include <vector>
 
@@ -30,7 +30,7 @@ struct SigmoidGainTableSpec {
 class SigmoidGainTable {
  public:
   // A table from its spec and normalised gains, as normalized_gains() gives them (a bundle's,
-  // or fit_sigmoid_gain_table's in render/bake/sigmoid_gain.h). Throws std::invalid_argument
+  // or fit_sigmoid_gain_table's in render/bake/visibility/sigmoid_gain.h). Throws std::invalid_argument
   // on a size mismatch or a non-finite or non-positive gain.
   static SigmoidGainTable from_gains(const SigmoidGainTableSpec& spec, std::vector<float> gains,
                                      double max_fit_error);

@@ -1,7 +1,7 @@
 #pragma once
 // Where a method gets weighting and azimuthal tables that no bundle holds. Baking them takes
 // render/bake (seconds to a minute on two cores), which stays out of the kiosk's executable, so
-// the offline commands hand in a baker (bake/table_baker.h) and the kiosk hands in none: a
+// the offline commands hand in a baker (bake/tables/table_baker.h) and the kiosk hands in none: a
 // method that needs a table it cannot get then throws instead of baking at boot.
 #include <array>
 #include <functional>

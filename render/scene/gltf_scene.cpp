@@ -402,11 +402,10 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
 // Looks at the bounds' centre from the front left and above (Weft's cameras face +y), far enough
 // that the bounding sphere fills the vertical field of view.
 Camera framed_camera(const Scene& s) {
-  bool any_cloth = false;
-  for (const auto& o : s.objects) any_cloth = any_cloth || o.material == Material::cloth;
+  const bool any_cloth = !s.cloth_objects().empty();
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const auto& o : s.objects)
-    if (!any_cloth || o.material == Material::cloth)
+    if (!any_cloth || o.is_cloth())
       for (const auto& p : o.mesh.positions) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);

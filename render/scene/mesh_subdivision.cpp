@@ -54,8 +54,7 @@ TriangleMesh subdivide_midpoint(const TriangleMesh& mesh, int levels) {
 }
 
 Scene refine_cloth_meshes(Scene scene, int levels) {
-  for (auto& o : scene.objects)
-    if (o.material == Material::cloth) o.mesh = subdivide_midpoint(o.mesh, levels);
+  for (auto& o : scene.cloth_objects()) o.mesh = subdivide_midpoint(o.mesh, levels);
   return scene;
 }
 

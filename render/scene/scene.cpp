@@ -236,7 +236,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     }
     try {
       obj.mesh = generate_mesh(field(o, "mesh", where), where + ".mesh", base_dir);
-      obj.repair = finish_mesh(obj.mesh, obj.material == Material::cloth, s.name + "/" + obj.name);
+      obj.repair = finish_mesh(obj.mesh, obj.is_cloth(), s.name + "/" + obj.name);
     } catch (const MeshError& e) {
       throw SceneError(where + ": " + e.what());
     }

@@ -41,6 +41,7 @@ struct SceneObject {
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
+  bool is_cloth() const { return material == Material::cloth; }
 };
 
 // The most weave repeats per UV unit a scene or glTF may give.
@@ -50,6 +51,40 @@ inline constexpr double kMaxWeaveRepeatsPerUv = 1e6;
 // the object's own overrides (its optical thickness, when it gives one).
 Fabric object_fabric(const SceneObject& o, Fabric fabric);
 
+// The cloth objects among a scene's objects, in order (Scene::cloth_objects). Hand-written
+// rather than std::views::filter: the fuzz build's clang 14 cannot compile libstdc++ 12's ranges.
+template <class Object>
+class ClothObjects {
+public:
+  class iterator {
+  public:
+    iterator(Object* at, Object* end) : at_(at), end_(end) { skip(); }
+    Object& operator*() const { return *at_; }
+    Object* operator->() const { return at_; }
+    iterator& operator++() {
+      ++at_;
+      skip();
+      return *this;
+    }
+    bool operator==(const iterator& other) const { return at_ == other.at_; }
+
+  private:
+    void skip() {
+      while (at_ != end_ && !at_->is_cloth()) ++at_;
+    }
+    Object* at_;
+    Object* end_;
+  };
+  ClothObjects(Object* first, Object* last) : first_(first), last_(last) {}
+  iterator begin() const { return iterator(first_, last_); }
+  iterator end() const { return iterator(last_, last_); }
+  bool empty() const { return begin() == end(); }
+
+private:
+  Object* first_;
+  Object* last_;
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -58,6 +93,11 @@ struct Scene {
   std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
                              // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;
+  // The cloth objects in order, a view of `objects`: the k-th is the renderer's cloth object k
+  // (gpu::SceneRenderer takes their fabrics in this order).
+  ClothObjects<const SceneObject> cloth_objects() const& { return {objects.data(), objects.data() + objects.size()}; }
+  ClothObjects<SceneObject> cloth_objects() & { return {objects.data(), objects.data() + objects.size()}; }
+  void cloth_objects() const&& = delete;  // a view of a temporary would dangle
 };
 
 // What a scene that imports a glTF needs besides its own files (render/scene/gltf_scene.h).

@@ -35,7 +35,7 @@ Camera closeup_camera(const Scene& scene, const std::map<std::string, Fabric>& f
   if (scene.closeup) return *scene.closeup;
   double repeat = 0.0;
   for (const auto& o : scene.objects) {
-    if (o.material != Material::cloth) continue;
+    if (!o.is_cloth()) continue;
     const auto it = fabrics.find(o.fabric);
     if (it == fabrics.end()) continue;
     const glm::dvec2 r = uv_length(o.mesh) / weave_tiles_per_uv(o, object_fabric(o, it->second));

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "bake/scene_selection.h"
+#include "bake/selection/scene_selection.h"
 #include "bundle/bundle_reader.h"
 #include "runtime/iwasaki_bundle.h"
 #include "runtime/scene_bundle.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "bench/image_metrics.h"
+#include "measure/image_metrics.h"
 #include "bench/shadow_mask.h"
 #include "scene/scene.h"
 

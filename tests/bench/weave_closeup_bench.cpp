@@ -16,8 +16,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "bake/scene_bake.h"
-#include "bench/image_metrics.h"
+#include "bake/scene/scene_bake.h"
+#include "measure/image_metrics.h"
 #include "frame/frame_inputs.h"
 #include "frame/frame_render.h"
 #include "kiosk/camera_zoom.h"
@@ -76,7 +76,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     // The repeat's size in pixels at the close-up's target, on the accuracy image.
     double repeat_px = 0.0;
     for (const auto& o : in.scene.objects)
-      if (o.material == Material::cloth) {
+      if (o.is_cloth()) {
         const glm::dvec2 r = uv_length(o.mesh) / weave_tiles_per_uv(o, object_fabric(o, in.fabrics.at(o.fabric)));
         const double d = glm::length(close.target - close.position);
         const double px = std::min(r.x, r.y) * kH / (2.0 * d * std::tan(glm::radians(close.fov_deg) / 2.0));

@@ -27,10 +27,10 @@
 #include <span>
 #include <vector>
 
-#include "bake/scene_visibility.h"
-#include "bake/sigmoid_gain.h"
-#include "bake/visibility_mask_bake.h"
-#include "bake/weighting_bake.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/sigmoid_gain.h"
+#include "bake/visibility/visibility_mask_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
@@ -74,7 +74,7 @@ struct Case {
 
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
-void check_parity(const Case& c, gpu::Method method) {
+void check_parity(const Case& c, const methods::RuntimeMethod& method) {
   const bool per_vertex = method.name.starts_with("iwasaki_vertex");
   const bool masks = method.name.find("_mask") != std::string::npos;
   const bool quadrature = method.name.ends_with("quadrature");

@@ -5,9 +5,9 @@
 
 #include <random>
 
-#include "bake/azimuthal_bake.h"
-#include "bake/bake_selection.h"
-#include "bake/weighting_bake.h"
+#include "bake/tables/azimuthal_bake.h"
+#include "bake/tables/bake_selection.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "gpu/egl_context.h"
 #include "methods/fabric_uniforms.h"

@@ -15,9 +15,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "bake/scene_visibility.h"
-#include "bake/sigmoid_gain.h"
-#include "bake/weighting_bake.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/sigmoid_gain.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"

@@ -19,7 +19,7 @@
 #include <span>
 #include <vector>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 #include "panel/appearance_channel.h"
@@ -238,7 +239,7 @@ TEST(KnobStateFile, RoundTrip) {
   const auto file = dir / "knobs.json";
   std::string why;
   ASSERT_TRUE(write_file_atomically(file, knob_state_text(p, presets), why)) << why;
-  EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);  // no temporary left
   const auto r = restore_knob_state(file, presets, 0);
   EXPECT_TRUE(r.from_file) << r.message;
   EXPECT_EQ(r.positions, p);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <vector>
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "core/microcylinder.h"
 #include "methods/iwasaki/iwasaki.h"

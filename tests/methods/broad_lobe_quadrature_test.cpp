@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "reference/sg_quadrature.h"
@@ -23,11 +23,11 @@ namespace {
 
 // GridConvergesToTheFineGrid's measured worst at M = 8: linen 1.25 % (M = 4: 3.7 %); satin 21 %
 // at λ = 0.5, 7–10 % at λ ≥ 1 (M = 4: 31–42 %): satin's float lobe is a sharp feature inside a
-// broad SG at the grazing view. On the images M = 8 is enough (IWASAKI.md: drape/satin/sky:elev=5).
+// broad SG at the grazing view. On the images M = 8 is enough (docs/research/iwasaki.md: drape/satin/sky:elev=5).
 constexpr double kLinenQuadratureBound = 0.02;
 constexpr double kSatinQuadratureBound = 0.25;
 // Measured 0.6–0.8 %: the quadrature's part is within kQuadratureBound of the fine grid and
-// iwasaki's at λ = 4 within ~10 % (IWASAKI.md); a lobe dropped or counted twice is off by 40–60 %.
+// iwasaki's at λ = 4 within ~10 % (docs/research/iwasaki.md); a lobe dropped or counted twice is off by 40–60 %.
 constexpr double kSplitBound = 0.05;
 
 const Fabric& linen() {

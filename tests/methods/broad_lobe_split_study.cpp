@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 #include <Eigen/Dense>
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"

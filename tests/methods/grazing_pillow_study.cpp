@@ -1,5 +1,5 @@
 // Point study on a scene (bench label, no assertions): what shades the sharp SGs low over the
-// horizon wrong on a curved cloth (pillow / linen / the bundled studio: IWASAKI.md, "A sharp lobe
+// horizon wrong on a curved cloth (pillow / linen / the bundled studio: docs/research/iwasaki.md, "A sharp lobe
 // low over the horizon"). Per cloth pixel and per SG with λ ≥ 16, occlusion off on both sides (the
 // facet's plane still cuts both), for N tangent samples per thread in $WEFT_STUDY_SAMPLES
 // (default "3,6,12"), tables at grid $WEFT_STUDY_GRID (default 32; ω_o at $WEFT_STUDY_WO_GRID when set):
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "image/image.h"
 #include "lighting/env_spec.h"

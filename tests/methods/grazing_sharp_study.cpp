@@ -1,5 +1,5 @@
 // Point study (bench label, no assertions): a sharp SG a few degrees above the horizon (the bundled
-// studio's λ ≈ 300 lobes, 1–23° up, which carry the pillow's error under that map: IWASAKI.md,
+// studio's λ ≈ 300 lobes, 1–23° up, which carry the pillow's error under that map: docs/research/iwasaki.md,
 // docs/bench/low_sun/error_budget/quadrature_study/), iwasaki against the converged reference on the
 // linen swatch, lights around the azimuth and views from the normal to grazing; prints CSV.
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <vector>
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/sg_quadrature.h"
@@ -190,7 +190,7 @@ TEST(IwasakiSwatch, SatinSunAveragesTheFloatsTilts) {
 // sliver of the lobe is above the surface, hugging the horizon. above_horizon re-aims a sharp
 // lobe so that it keeps the sliver's power and mean cosine; with the broad lobes' rule (λ·s and
 // G's clamped cosine) these points were 17–38 % too dark (λ = 1000 at −0.5° and −2°), 22 % for
-// λ = 300 at −2° and 11 % for λ = 100 at −2°; now within 1–8 % (IWASAKI.md).
+// λ = 300 at −2° and 11 % for λ = 100 at −2°; now within 1–8 % (docs/research/iwasaki.md).
 TEST(IwasakiSwatch, SunJustBelowTheHorizon) {
   expect_close({{at_elevation(40, -0.5), 1000.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.10);
   expect_close({{at_elevation(40, -2), 1000.0, dvec3(1.0)}}, {dvec3(0, 0, 1), dvec3(0.3, 0.2, 0.93)}, 0.06);

@@ -10,13 +10,14 @@
 #include <future>
 #include <numbers>
 
-#include "bake/scene_visibility.h"
-#include "bake/sigmoid_gain.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/sigmoid_gain.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "gpu/scene_renderer.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "methods/lambert_visibility.h"
+#include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/procedural_meshes.h"
 #include "scene/scene.h"
@@ -151,15 +152,15 @@ TEST(LambertVisibility, SceneRendererShadesTheFloorWithTheBundlesVisibility) {
     r.draw(scene.camera, w, h);
     return gpu::read_linear_image(w, h);
   };
-  gpu::SceneRenderer shadowed(scene, {}, gpu::parse_method("sgpoint"), 16, data);
+  gpu::SceneRenderer shadowed(scene, {}, methods::method("sgpoint"), 16, data);
   ASSERT_EQ(shadowed.shadowed_lambertian_objects(), 1u);  // the floor; the pillow-shaped box is unoccluded
   shadowed.set_lighting(kLights);
   const Image image = frame(shadowed);
   // Prepared on another thread (as the kiosk does) and installed: the same frame, bit for bit.
-  gpu::SceneRenderer async(scene, {}, gpu::parse_method("sgpoint"), 16, data);
+  gpu::SceneRenderer async(scene, {}, methods::method("sgpoint"), 16, data);
   async.set_lighting(std::async(std::launch::async, [&] { return async.prepare_lighting(kLights); }).get());
   const Image async_image = frame(async);
-  gpu::SceneRenderer open(scene, {}, gpu::parse_method("sgpoint"), 16, nullptr);
+  gpu::SceneRenderer open(scene, {}, methods::method("sgpoint"), 16, nullptr);
   EXPECT_EQ(open.shadowed_lambertian_objects(), 0u);
   open.set_lighting(kLights);
   const Image open_image = frame(open);

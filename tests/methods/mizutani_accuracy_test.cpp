@@ -8,9 +8,9 @@
 #include <map>
 #include <memory>
 
-#include "bake/azimuthal_bake.h"
-#include "bake/bake_selection.h"
-#include "bake/weighting_bake.h"
+#include "bake/tables/azimuthal_bake.h"
+#include "bake/tables/bake_selection.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "methods/mizutani/mizutani.h"
 #include "reference/sg_quadrature.h"

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "bake/scene_visibility.h"
-#include "bake/visibility_sdf.h"
+#include "bake/visibility/scene_visibility.h"
+#include "bake/visibility/visibility_sdf.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-// Error budget of iwasaki under skies (bench label, no assertions; IWASAKI.md, "Visibility or
+// Error budget of iwasaki under skies (bench label, no assertions; docs/research/iwasaki.md, "Visibility or
 // shading under a low sun"): per cloth pixel of a scene's camera, the C++ twin of iwasaki against
 // the reference, with and without occlusion by the scene, split per SG. Variants:
 //   open   iwasaki with no visibility (the surface's horizon only) vs the reference with shadow
@@ -31,10 +31,10 @@
 #include <string>
 #include <vector>
 
-#include "bake/iwasaki_bundle_writer.h"
-#include "bake/scene_bake.h"
-#include "bake/visibility_mask_bake.h"
-#include "bench/image_metrics.h"
+#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/scene/scene_bake.h"
+#include "bake/visibility/visibility_mask_bake.h"
+#include "measure/image_metrics.h"
 #include "core/fabric.h"
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"

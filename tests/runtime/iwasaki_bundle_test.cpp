@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "bake/iwasaki_bundle_writer.h"
-#include "bake/weighting_bake.h"
+#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 
 using namespace weft;

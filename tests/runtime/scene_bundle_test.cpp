@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "bake/scene_bundle_writer.h"
+#include "bake/writers/scene_bundle_writer.h"
 #include "bundle/bundle_error.h"
 
 using namespace weft;

@@ -9,9 +9,9 @@
 #include <random>
 
 #include "runtime/hemisphere_grid.h"
-#include "bake/low_rank.h"
-#include "bake/sg_convolution.h"
-#include "bake/weighting_bake.h"
+#include "bake/tables/low_rank.h"
+#include "bake/tables/sg_convolution.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "core/fabric.h"
 

@@ -49,6 +49,22 @@ TEST(Scene, AllPresetsLoadWithClothFramesFromUVs) {
   }
 }
 
+TEST(Scene, ClothObjectsAreTheClothInOrder) {
+  Scene s;
+  for (const char* name : {"floor", "seat", "wall", "cushion"}) {
+    SceneObject o;
+    o.name = name;
+    o.material = std::string(name) == "seat" || std::string(name) == "cushion" ? Material::cloth : Material::lambertian;
+    s.objects.push_back(o);
+  }
+  std::vector<std::string> names;
+  for (const auto& o : s.cloth_objects()) names.push_back(o.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"seat", "cushion"}));
+  for (auto& o : s.cloth_objects()) o.fabric = "satin";
+  EXPECT_EQ(s.objects[1].fabric, "satin");
+  EXPECT_EQ(s.objects[0].fabric, "");
+}
+
 TEST(Scene, SwatchWarpRunsAlongX) {
   const Scene s = load_scene_preset("swatch", kDir);
   for (const auto& w : s.objects[0].mesh.warps) EXPECT_NEAR(w.x, 1.0, 1e-12);

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "bake/visibility_mask_bake.h"
+#include "bake/visibility/visibility_mask_bake.h"
 #include "runtime/visibility_mask.h"
 #include "scene/scene.h"
 

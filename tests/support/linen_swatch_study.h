@@ -1,11 +1,11 @@
-// The setup the broad-lobe point studies share (IWASAKI.md, "What limits broad lobes"): the linen
+// The setup the broad-lobe point studies share (docs/research/iwasaki.md, "What limits broad lobes"): the linen
 // swatch's grid-32 tables at 3+3 tangent samples, the same model at 64 samples as the converged
 // side, and the four views every study reads.
 #pragma once
 
 #include <vector>
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 #include "core/cloth_bsdf.h"
 #include "core/fabric.h"
 #include "support/sky_direction.h"

@@ -2,7 +2,7 @@
 // tables on both sides, not converged ones.
 #pragma once
 
-#include "bake/weighting_bake.h"
+#include "bake/tables/weighting_bake.h"
 
 namespace weft::test {
 

@@ -24,7 +24,7 @@ double lobe_sigma_prime(double sigma_k, double theta, double theta_k) {
 // for a λ = 0.28 lobe at the zenith. Kept in [¼, 1]: it only removes the frozen form's excess.
 // Near the thread's poles the frozen form vanishes with cos θ_k and the ratio grows past 1, but
 // there the model's cos²θ_l is taken at the peak as well, and letting the ratio brighten those
-// lobes (up to 4) leaves the pillow under skies 1–1.2 points of relative RMSE worse (IWASAKI.md).
+// lobes (up to 4) leaves the pillow under skies 1–1.2 points of relative RMSE worse (docs/research/iwasaki.md).
 double separable_spread(double lambda, double theta_k, double sigma_k) {
   const double frozen = gaussian_half_turn_integral(theta_k, sigma_k) *
                         circular_gaussian_circle_integral(lobe_sigma_prime(sigma_k, theta_k, theta_k)) *
@@ -79,7 +79,7 @@ SurfaceHeight surface_height(const ThreadFrame& tf, const dvec3& n, double theta
 // and the sample's lobe averaged over its arc is N(θ_h; √(γ² + c²δ²)) (φ_i taken at φ_k). The
 // midpoint samples alone put satin's 2.5° float highlight only where a sample's tilt is specular:
 // with 15 samples a sun at 20° on the swatch is −13 to +43 % from the converged curve (64
-// samples), with the lobes averaged over the arcs −3 to +7 % (IWASAKI.md, "Satin under skies").
+// samples), with the lobes averaged over the arcs −3 to +7 % (docs/research/iwasaki.md, "Satin under skies").
 double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double phi_o) {
   const double c = 0.5 * (std::cos(phi_i) + std::cos(phi_o));
   return std::sqrt(gamma * gamma + c * c * tilt_spread * tilt_spread);
@@ -90,7 +90,7 @@ double sample_lobe_width(double gamma, double tilt_spread, double phi_i, double 
 // specular cone, where W differs from its mean over the SG: on a satin swatch a λ = 19 lobe is
 // −18 to +44 % off with T at ξ_k, nearly all of it this factorisation (the exact shading factor
 // with T at ξ_k: −15 to +43 %). T at the surface lobe's peak (θ_l, φ_k), at the SG's own λ, takes
-// W where the product is: within ±6 % (IWASAKI.md, "Satin under skies"). One lookup serves both
+// W where the product is: within ±6 % (docs/research/iwasaki.md, "Satin under skies"). One lookup serves both
 // lobes: the volume lobe's peak lies next to it (separate lookups: within 0.7 % of the shared one).
 // How much of T the lobes take at their peak: all of it from λ = 8, none at λ ≤ 2, linear in log λ
 // between. For a sky's broad lobes (λ ≈ 2) Eq. 9's darkening and Eq. 13's frozen form's

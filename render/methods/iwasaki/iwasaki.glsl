@@ -120,7 +120,7 @@ vec3 sdf_in_sample_frame(vec3 n, vec3 u, vec3 v, vec3 t, vec3 np, vec3 b, float 
   return vec3(s.x, s.y * dot(dtheta_v, dw_dtheta) + s.z * dot(dphi_v, dw_dtheta),
               s.y * dot(dtheta_v, dw_dphi) + s.z * dot(dphi_v, dw_dphi));
 }
-// --- bake/sigmoid_gain.cpp's SigmoidGainTable::h.
+// --- bake/visibility/sigmoid_gain.cpp's SigmoidGainTable::h.
 float visibility_h(float sigma_l, float sp, vec3 s) {
   float len = length(s.yz);
   if (len == 0.0) return s.x > 0.0 ? 1.0 : (s.x < 0.0 ? 0.0 : 0.5);

@@ -9,27 +9,31 @@
 namespace weft::methods {
 
 namespace {
-// What a rung reads from the bundle's visibility masks (iwasaki_method.h).
-struct MaskUse {
+// What a rung reads from the bundle's visibility masks (iwasaki_method.h), and its name's suffix.
+struct Rung {
   const char* suffix;
-  bool open_share, quadrature;
+  MaskUse masks;
 };
-constexpr MaskUse kMaskUses[] = {
-    {"", false, false}, {"_mask", true, false}, {"_quadrature", false, true}, {"_mask_quadrature", true, true}};
+constexpr Rung kRungs[] = {{"", {}},
+                           {"_mask", {.open_share = true}},
+                           {"_quadrature", {.broad_lobes = true}},
+                           {"_mask_quadrature", {.open_share = true, .broad_lobes = true}}};
 
-RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, MaskUse masks) {
+RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Rung rung) {
   const bool per_vertex = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex;
+  const MaskUse masks = rung.masks;
   RuntimeMethod m;
-  m.name = std::string(per_vertex ? "iwasaki_vertex" : "iwasaki") + masks.suffix;
-  m.ladder_position = per_vertex ? 1 : 0;
+  m.name = std::string(per_vertex ? "iwasaki_vertex" : "iwasaki") + rung.suffix;
   m.seed000 = Seed000Tables::required;
+  m.shading = per_vertex ? Shading::per_vertex : Shading::per_pixel;
+  m.masks = masks;
+  m.kiosk_rung = true;
   m.glsl = gpu::iwasaki_glsl();
   m.make_gpu = [evaluation, masks](const gpu::ClothMethodSetup& s) {
-    gpu::IwasakiShaders shaders = masks.quadrature ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();
+    gpu::IwasakiShaders shaders = masks.broad_lobes ? gpu::iwasaki_quadrature_shaders() : gpu::iwasaki_shaders();
     shaders.open_share_masks = masks.open_share;
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, shaders);
   };
-  m.visibility_masks = masks.open_share || masks.quadrature;
   return m;
 }
 }  // namespace
@@ -37,9 +41,8 @@ RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, MaskUse m
 std::vector<RuntimeMethod> iwasaki_methods() {
   std::vector<RuntimeMethod> out;
   for (const auto evaluation : {gpu::IwasakiCloth::Evaluation::per_pixel, gpu::IwasakiCloth::Evaluation::per_vertex})
-    for (const MaskUse& masks : kMaskUses) out.push_back(seed000_method(evaluation, masks));
+    for (const Rung& rung : kRungs) out.push_back(seed000_method(evaluation, rung));
   // iwasaki's C++ evaluation (without visibility) stands for the family in the stability table.
-  out.front().stability_position = 0;
   out.front().cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
                        const TableSource& tables) {
     const TableBsdf t = stress_table_bsdf(b.fabric(), tables);

@@ -18,6 +18,6 @@
 #include "methods/runtime_method.h"
 
 namespace weft::methods {
-// In ladder order: the per-pixel rungs, then the per-vertex ones; `iwasaki` first.
+// The per-pixel rungs, then the per-vertex ones; `iwasaki` first.
 std::vector<RuntimeMethod> iwasaki_methods();
 }  // namespace weft::methods

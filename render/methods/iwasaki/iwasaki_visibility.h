@@ -19,37 +19,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/iwasaki_bundle.h"
-#include "runtime/visibility_mask.h"
-#include "methods/iwasaki/broad_lobe_quadrature.h"
+#include "methods/sg_visibility.h"
 #include "core/microcylinder.h"
 #include "core/spherical_gaussian.h"
 #include "scene/mesh.h"
 
 namespace weft {
-
-// Step 1 for every vertex of an object and every SG of a lighting.
-struct SgVisibility {
-  size_t vertices = 0;
-  int sgs = 0;
-  std::vector<float> values;  // [vertex][sg] × (d, ∂d/∂θ', ∂d/∂φ') (radians, vertex frame)
-  // The broad lobes' cell bits from the visibility mask (rungs with broad-lobe quadrature;
-  // broad_lobe_quadrature.h), computed with the values; empty (0 vertices) otherwise.
-  BroadLobeBits broad;
-  // `mesh`: the object's mesh (the vertex frames the bake cast from: normal + warp).
-  // `above_horizon`: look each SG up where iwasaki shades it at that vertex, the axis of
-  // above_horizon(G, vertex normal) (spherical_gaussian.h), instead of at its own axis.
-  static SgVisibility compute(const ObjectVisibility& visibility, const TriangleMesh& mesh, const SgLighting& sgs,
-                              bool above_horizon = false);
-  // The mask's alternative (method iwasaki_vertex_mask): per (vertex, SG) the share V_k of the
-  // SG's part above the vertex's surface that no geometry blocks, in place of d, as (V_k, 0, 0);
-  // the shader multiplies the SG's amplitude by it instead of taking the SDF's H per lobe.
-  static SgVisibility from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs);
-  dvec3 at(size_t vertex, int sg) const {
-    const float* p = &values[(vertex * size_t(sgs) + size_t(sg)) * 3];
-    return dvec3(p[0], p[1], p[2]);
-  }
-};
 
 struct SdfSample {
   double d = 0, d_dtheta = 0, d_dphi = 0;

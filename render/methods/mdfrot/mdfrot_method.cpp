@@ -60,8 +60,6 @@ private:
 RuntimeMethod mdfrot_method() {
   RuntimeMethod m;
   m.name = "mdfrot";
-  m.ladder_position = 4;
-  m.stability_position = 4;
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup&) { return std::make_unique<MdfrotCloth>(); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

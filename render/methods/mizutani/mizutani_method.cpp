@@ -74,8 +74,6 @@ RuntimeMethod mizutani_method() {
   RuntimeMethod m;
   m.name = "mizutani";
   m.seed000 = Seed000Tables::read_when_given;
-  m.ladder_position = 2;
-  m.stability_position = 1;
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup& s) { return std::make_unique<MizutaniCloth>(s.bundle, s.tables); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

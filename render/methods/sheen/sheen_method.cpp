@@ -44,8 +44,6 @@ private:
 RuntimeMethod sheen_method() {
   RuntimeMethod m;
   m.name = "sheen";
-  m.ladder_position = 5;
-  m.stability_position = 3;
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup&) { return std::make_unique<SheenCloth>(); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

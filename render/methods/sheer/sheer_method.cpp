@@ -46,8 +46,7 @@ RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
   RuntimeMethod m;
   m.see_through = true;
   m.seed000 = Seed000Tables::required;
-  m.reference = BenchReference::thin_layer;
-  m.bench_scenes = {"curtain"};
+  m.shading = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex ? Shading::per_vertex : Shading::per_pixel;
   m.glsl = sheer_glsl();
   m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) {
     return std::make_unique<gpu::IwasakiCloth>(s.bundle, evaluation, sheer_shaders());
@@ -59,8 +58,6 @@ RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
 RuntimeMethod sheer_method() {
   RuntimeMethod m = sheer_entry(gpu::IwasakiCloth::Evaluation::per_pixel);
   m.name = "sheer";
-  m.ladder_position = 7;
-  m.stability_position = 6;
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
               const TableSource& tables) {
     const TableBsdf t = stress_table_bsdf(b.fabric(), tables);
@@ -73,7 +70,7 @@ RuntimeMethod sheer_method() {
 RuntimeMethod sheer_vertex_method() {
   RuntimeMethod m = sheer_entry(gpu::IwasakiCloth::Evaluation::per_vertex);
   m.name = "sheer_vertex";
-  m.ladder_position = 8;
+  m.kiosk_rung = true;
   return m;
 }
 

@@ -56,10 +56,6 @@ RuntimeMethod thin_method() {
   RuntimeMethod m;
   m.name = "thin";
   m.see_through = true;
-  m.reference = BenchReference::thin_layer;
-  m.bench_scenes = {"curtain"};
-  m.ladder_position = 6;
-  m.stability_position = 5;
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup& s) { return std::make_unique<ThinCloth>(s.tangent_samples); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

@@ -1,0 +1,69 @@
+#include "bake/visibility/scene_visibility.h"
+
+#include <atomic>
+#include <chrono>
+
+#include <omp.h>
+
+#include "bake/visibility/visibility_sdf.h"
+#include "reference/ray_scene.h"
+
+namespace weft {
+
+std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_t object,
+                                                       const SceneVisibilityOptions& opt,
+                                                       const std::function<void(size_t, size_t)>& progress,
+                                                       SceneVisibilityStats* stats) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const TriangleMesh& mesh = scene.objects.at(object).mesh;
+  if (mesh.warps.size() != mesh.positions.size())
+    throw std::invalid_argument("visibility bake: object '" + scene.objects[object].name + "' has no warps");
+  const RayScene rays(scene);
+  const double eps = rays.ray_epsilon();
+  const int n = opt.resolution, cells = n * n;
+  const size_t vertices = mesh.positions.size();
+  Eigen::MatrixXf sdfs(cells, Eigen::Index(vertices));
+  std::atomic<size_t> cast{0}, blocked{0}, done{0};
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long v = 0; v < long(vertices); ++v) {
+    const SurfaceFrame frame = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
+    const dvec3 origin = mesh.positions[v] + eps * frame.n;
+    size_t c = 0, b = 0;
+    const VertexSdf s = vertex_sdf(frame, origin, n, opt.supersample, [&](const dvec3& o, const dvec3& d) {
+      ++c;
+      const bool hit = !rays.unoccluded(o, d);  // as the reference's shadow rays
+      b += hit;
+      return hit;
+    });
+    for (int k = 0; k < cells; ++k) sdfs(k, v) = float(s.d.values[k]);
+    cast += c;
+    blocked += b;
+    const size_t now = ++done;
+    if (progress && omp_get_thread_num() == 0) progress(now, vertices);  // the callback need not be thread-safe
+  }
+  if (stats) {
+    stats->vertices = vertices;
+    stats->blocked_share = cast ? double(blocked) / double(cast) : 0.0;
+  }
+  std::optional<ObjectVisibility> out;
+  if (blocked > 0) {
+    const SdfPca pca = fit_sdf_pca(sdfs, opt.pca);
+    ObjectVisibility o;
+    o.resolution = n;
+    o.terms = pca.terms();
+    o.mean.assign(pca.mean.data(), pca.mean.data() + cells);
+    o.basis.resize(size_t(o.terms) * cells);
+    for (int t = 0; t < o.terms; ++t)
+      for (int k = 0; k < cells; ++k) o.basis[size_t(t) * cells + k] = pca.basis(k, t);
+    o.coefficients.resize(vertices * o.terms);
+    for (size_t v = 0; v < vertices; ++v)
+      for (int t = 0; t < o.terms; ++t) o.coefficients[v * o.terms + t] = pca.coefficients(t, Eigen::Index(v));
+    o.rms_error = pca.rms_error;
+    o.max_error = pca.max_error;
+    out = std::move(o);
+  }
+  if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace weft

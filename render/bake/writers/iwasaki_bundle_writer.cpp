@@ -1,0 +1,69 @@
+#include "bake/writers/iwasaki_bundle_writer.h"
+
+#include <nlohmann/json.hpp>
+
+namespace weft {
+
+using nlohmann::json;
+
+void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
+  json index = json::object();
+  int id = 0;
+  for (const auto& [preset, t] : d.tables) {
+    json ranks = json::array(), errors = json::array();
+    std::vector<float> u, v;
+    for (const CompressedTable& c : t.tables) {
+      ranks.push_back(c.rank);
+      errors.push_back(c.error);
+      u.insert(u.end(), c.u.begin(), c.u.end());
+      v.insert(v.end(), c.v.begin(), c.v.end());
+    }
+    index[preset] = {{"id", id},
+                     {"tangent_samples", {t.tangent_samples[0], t.tangent_samples[1]}},
+                     {"tilts", t.tilts},
+                     {"sample_table", t.sample_table},
+                     {"node_grid", kNodeGridId},
+                     {"xi_resolution", t.xi_grid.n},
+                     {"wo_resolution", t.wo_grid.n},
+                     {"lambdas", t.lambdas},
+                     {"ranks", ranks},
+                     {"svd_errors", errors}};
+    w.add_array<float>(iwasaki_section::table(id, "u"), u);
+    w.add_array<float>(iwasaki_section::table(id, "v"), v);
+    ++id;
+  }
+  w.add_json(iwasaki_section::kTablesIndex, index.dump());
+  json vis = json::object();
+  for (const auto& [object, o] : d.visibility) {
+    const uint64_t cells = uint64_t(o.resolution) * o.resolution;
+    vis[std::to_string(object)] = {{"resolution", o.resolution}, {"terms", o.terms},
+                                   {"rms_error", o.rms_error}, {"max_error", o.max_error}};
+    w.add_array<float>(iwasaki_section::vis(object, "pca_mean"), o.mean, {cells});
+    w.add_array<float>(iwasaki_section::vis(object, "pca_basis"), o.basis, {uint64_t(o.terms), cells});
+    w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), o.coefficients,
+                       {uint64_t(o.vertex_count()), uint64_t(o.terms)});
+  }
+  w.add_json(iwasaki_section::kVisIndex, vis.dump());
+  if (d.kappa) {
+    const SigmoidGainTableSpec& s = d.kappa->spec();
+    w.add_array<float>(iwasaki_section::kKappa, d.kappa->normalized_gains(),
+                       {uint64_t(s.sigma_l_count), uint64_t(s.sigma_prime_count), uint64_t(s.beta_count)});
+    w.add_json(iwasaki_section::kKappaIndex,
+               json{{"sigma_min", s.sigma_min}, {"sigma_max", s.sigma_max}, {"max_fit_error", d.kappa->max_fit_error()}}
+                   .dump());
+  }
+  if (!d.masks.empty()) {
+    json masks = json::object();
+    for (const auto& [object, m] : d.masks) {
+      masks[std::to_string(object)] = {{"resolution", m.resolution}};
+      std::vector<std::uint32_t> bits;
+      bits.reserve(2 * m.words.size());
+      for (const std::uint64_t word : m.words) bits.insert(bits.end(), {std::uint32_t(word), std::uint32_t(word >> 32)});
+      w.add_array<std::uint32_t>(iwasaki_section::mask(object), bits,
+                                 {uint64_t(m.vertex_count()), uint64_t(m.blocks()), 2});
+    }
+    w.add_json(iwasaki_section::kMaskIndex, masks.dump());
+  }
+}
+
+}  // namespace weft

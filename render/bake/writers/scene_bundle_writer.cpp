@@ -1,0 +1,80 @@
+#include "bake/writers/scene_bundle_writer.h"
+
+#include <nlohmann/json.hpp>
+
+#include "lighting/sg_set_io.h"
+
+namespace weft {
+
+namespace {
+
+using nlohmann::json;
+
+json vec3(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+template <class V>
+std::vector<float> flatten(const std::vector<V>& values, int n) {
+  std::vector<float> out;
+  out.reserve(values.size() * n);
+  for (const auto& v : values)
+    for (int k = 0; k < n; ++k) out.push_back(static_cast<float>(v[k]));
+  return out;
+}
+
+}  // namespace
+
+size_t mesh_section_bytes(const TriangleMesh& m) {
+  const size_t per_vertex = 3 + 3 + (m.uvs.empty() ? 0 : 2) + (m.warps.empty() ? 0 : 3);  // floats
+  return 4 * (per_vertex * m.positions.size() + 3 * m.triangles.size());
+}
+
+void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in) {
+  const Scene& s = in.scene;
+  json scene;
+  scene["format"] = "weft-scene-bundle";
+  scene["version"] = 1;
+  scene["name"] = s.name;
+  scene["description"] = s.description;
+  scene["environment"] = s.environment;
+  scene["camera"] = {{"position", vec3(s.camera.position)}, {"target", vec3(s.camera.target)},
+                     {"up", vec3(s.camera.up)}, {"fov_deg", s.camera.fov_deg}};
+  if (s.closeup)
+    scene["closeup_camera"] = {{"position", vec3(s.closeup->position)}, {"target", vec3(s.closeup->target)},
+                               {"up", vec3(s.closeup->up)}, {"fov_deg", s.closeup->fov_deg}};
+  json objects = json::array();
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    const SceneObject& o = s.objects[i];
+    json jo{{"name", o.name}};
+    if (o.is_cloth()) {
+      if (!in.fabrics.count(o.fabric))
+        throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
+      jo["material"] = "cloth";
+      jo["fabric"] = o.fabric;
+      if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
+      if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
+        jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
+    } else {
+      jo["material"] = "lambertian";
+      jo["albedo"] = vec3(o.albedo);
+    }
+    objects.push_back(jo);
+    const TriangleMesh& m = o.mesh;
+    const uint64_t n = m.positions.size();
+    writer.add_array<float>(scene_section::mesh(i, "positions"), flatten(m.positions, 3), {n, 3});
+    writer.add_array<float>(scene_section::mesh(i, "normals"), flatten(m.normals, 3), {n, 3});
+    if (!m.uvs.empty()) writer.add_array<float>(scene_section::mesh(i, "uvs"), flatten(m.uvs, 2), {n, 2});
+    if (!m.warps.empty()) writer.add_array<float>(scene_section::mesh(i, "warps"), flatten(m.warps, 3), {n, 3});
+    std::vector<uint32_t> idx;
+    idx.reserve(m.triangles.size() * 3);
+    for (const auto& t : m.triangles) idx.insert(idx.end(), t.begin(), t.end());
+    writer.add_array<uint32_t>(scene_section::mesh(i, "indices"), idx, {m.triangles.size(), 3});
+  }
+  scene["objects"] = objects;
+  writer.add_json(scene_section::kScene, scene.dump(2));
+  json fabrics = json::object();
+  for (const auto& [name, text] : in.fabrics) fabrics[name] = json::parse(text);
+  writer.add_json(scene_section::kFabrics, fabrics.dump(2));
+  writer.add_json(scene_section::kSgs, sg_set_to_json(in.sgs).dump(2));
+}
+
+}  // namespace weft

@@ -1,0 +1,32 @@
+// The bench's ladder (render/bench/ladder.h), kept by method name beside the registry: each name
+// it lists is a runtime method, once, and the thin-layer reference is the see-through methods'.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "bench/ladder.h"
+#include "methods/registry.h"
+
+using namespace weft;
+
+TEST(Ladder, ListsRuntimeMethodsOnce) {
+  std::set<std::string> seen;
+  for (const auto& e : bench::ladder()) {
+    EXPECT_NE(methods::find_method(e.name), nullptr) << e.name;
+    EXPECT_TRUE(seen.insert(e.name).second) << e.name;
+  }
+}
+
+TEST(Ladder, ThinReferenceIsTheSeeThroughMethods) {
+  for (const auto& m : methods::registry()) EXPECT_EQ(bench::thin_reference(m.name), m.see_through) << m.name;
+}
+
+TEST(Ladder, UnlistedMethodsRunAfterTheLadder) {
+  const bench::LadderRun r = bench::select_methods({"sgpoint", "new_rung"}, {});
+  ASSERT_EQ(r.run.size(), 2u);
+  EXPECT_EQ(r.run[0].name, "sgpoint");
+  EXPECT_EQ(r.run[1].name, "new_rung");
+  EXPECT_TRUE(r.run[1].scenes.empty());
+  EXPECT_FALSE(r.run[1].thin_reference);
+}
