@@ -206,6 +206,8 @@ TEST(KeyboardKnobSource, KeysBecomeKnobEvents) {
   EXPECT_EQ(click[0].buttons, 0x10);
   EXPECT_EQ(click[1].buttons, 0);
   EXPECT_TRUE(keyboard_events('x', 0).empty());
+  EXPECT_EQ(keyboard_events('t', 0).at(0).zoom, 1);  // zoom closer / back
+  EXPECT_EQ(keyboard_events('G', 0).at(0).zoom, -5);
 
   int fds[2];
   ASSERT_EQ(::pipe(fds), 0);

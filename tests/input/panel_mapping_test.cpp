@@ -360,3 +360,32 @@ TEST(PanelConfig, ParsesAndRejects) {
   rejects(R"({"gpio":{"encoder_b":[1,2]}})", "gpio.encoder_b");
   rejects(R"({"gpio":{"buttons":[1,2,3,4,"x"]}})", "gpio.buttons[4]");
 }
+
+TEST(KnobMapper, ZoomStepsToTheCloseUpAndBackWithinItsLimits) {
+  KnobMapper m = linen_mapper();
+  EXPECT_EQ(m.appearance().zoom, 0.0f);
+  KnobEvent in;
+  in.zoom = 3;
+  EXPECT_TRUE(m.apply(in));
+  EXPECT_FLOAT_EQ(m.appearance().zoom, 3.0f / 8.0f);
+  in.zoom = 40;  // past the close-up: held there
+  m.apply(in);
+  EXPECT_FLOAT_EQ(m.appearance().zoom, 1.0f);
+  EXPECT_FALSE(m.apply(in));  // nothing changes at the limit
+  KnobEvent next;
+  next.buttons = 4;  // the next preset keeps the view
+  m.apply(next);
+  EXPECT_FLOAT_EQ(m.appearance().zoom, 1.0f);
+  in.zoom = -100;
+  m.apply(in);
+  EXPECT_EQ(m.appearance().zoom, 0.0f);
+  // A dial given to the zoom zooms instead of its own job.
+  MappingConfig c;
+  c.zoom_dial = 3;
+  KnobMapper z(installed_presets(), c);
+  KnobEvent turn;
+  turn.dial[3] = 2;
+  z.apply(turn);
+  EXPECT_FLOAT_EQ(z.appearance().zoom, 2.0f / 8.0f);
+  EXPECT_EQ(z.appearance().env_rotation_deg, 0.0f);
+}
