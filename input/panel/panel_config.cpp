@@ -87,6 +87,12 @@ PanelConfig parse_panel_config(const std::string& text, const std::string& origi
     if (!j["state_file"].is_string()) fail(origin, "state_file must be a path");
     c.state_file = j["state_file"].get<std::string>();
   }
+  if (j.contains("zoom_dial")) {
+    const auto& z = j["zoom_dial"];
+    if (!z.is_number_integer() || z.get<long>() < -1 || z.get<long>() >= kDialCount)
+      fail(origin, "zoom_dial must be a dial 0..3 (or -1: none), got " + z.dump());
+    c.zoom_dial = z.get<int>();
+  }
   return c;
 }
 

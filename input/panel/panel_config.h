@@ -26,6 +26,7 @@ struct PanelConfig {
   HidSourceOptions hid;
   GpioPanelConfig gpio;
   std::string state_file = "/var/lib/weft/knobs.json";
+  int zoom_dial = -1;  // a dial (0–3) that zooms instead of its own job (MappingConfig::zoom_dial); −1: none
 };
 
 // Throws PanelConfigError naming the field and the value; `origin` names the file.

@@ -267,7 +267,7 @@ void Kiosk::make_knob_controller(const SceneBundle& sb) {
   input::KnobControllerOptions ko;
   ko.state_file = state_dir_ok_ ? std::filesystem::path(config_.state_dir) / "knobs.json" : std::filesystem::path();
   ko.default_preset = default_preset(sb);
-  controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_)), ko, stderr_sink("weft run"));
+  controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_), mapping_), ko, stderr_sink("weft run"));
 }
 
 void Kiosk::start_knobs() {
@@ -279,6 +279,7 @@ void Kiosk::start_knobs() {
       throw KioskConfigError(e.what());
     }
   }
+  mapping_.zoom_dial = panel.zoom_dial;
   make_knob_controller(*scene_);
   controller_->restore();
   const input::LogSink log = stderr_sink("weft run");

@@ -142,6 +142,7 @@ private:
   bool finish_swap();  // true once the pending bundle is the one shown
   void log_swap_shown();
   void make_knob_controller(const SceneBundle& sb);
+  input::MappingConfig mapping_;  // the panel config's choices (a dial given to the zoom)
   void reset_knobs(const SceneBundle& sb, const std::string& why);
   void log_stats(Clock::time_point now);
 

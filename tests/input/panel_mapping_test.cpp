@@ -389,3 +389,10 @@ TEST(KnobMapper, ZoomStepsToTheCloseUpAndBackWithinItsLimits) {
   EXPECT_FLOAT_EQ(z.appearance().zoom, 2.0f / 8.0f);
   EXPECT_EQ(z.appearance().env_rotation_deg, 0.0f);
 }
+
+TEST(PanelConfig, ZoomDialIsADialOrNone) {
+  EXPECT_EQ(parse_panel_config(R"({"sources": ["keyboard"]})", "p.json").zoom_dial, -1);
+  EXPECT_EQ(parse_panel_config(R"({"zoom_dial": 3})", "p.json").zoom_dial, 3);
+  for (const char* bad : {R"({"zoom_dial": 4})", R"({"zoom_dial": -2})", R"({"zoom_dial": 1.5})", R"({"zoom_dial": "3"})"})
+    EXPECT_THROW(parse_panel_config(bad, "p.json"), PanelConfigError) << bad;
+}
