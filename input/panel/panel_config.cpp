@@ -53,7 +53,8 @@ PanelConfig parse_panel_config(const std::string& text, const std::string& origi
   if (!j.is_object()) fail(origin, "expected a JSON object");
   PanelConfig c;
   if (j.contains("sources")) {
-    if (!j["sources"].is_array()) fail(origin, "sources must be a list");
+    if (!j["sources"].is_array() || j["sources"].empty())
+      fail(origin, "sources must be a list of at least one source (hid, gpio, keyboard); a kiosk without a panel runs with --panel none");
     c.sources.clear();
     for (const auto& s : j["sources"]) {
       if (!s.is_string() || (s != "hid" && s != "gpio" && s != "keyboard"))

@@ -396,3 +396,7 @@ TEST(PanelConfig, ZoomDialIsADialOrNone) {
   for (const char* bad : {R"({"zoom_dial": 4})", R"({"zoom_dial": -2})", R"({"zoom_dial": 1.5})", R"({"zoom_dial": "3"})"})
     EXPECT_THROW(parse_panel_config(bad, "p.json"), PanelConfigError) << bad;
 }
+
+TEST(PanelConfig, AnEmptySourceListIsRefused) {
+  EXPECT_THROW(parse_panel_config(R"({"sources": []})", "p.json"), PanelConfigError);
+}
