@@ -30,21 +30,15 @@ struct RenderArgs {
   std::string lighting = "sg";
   std::string sgs_file;
   std::string out;
-  int width = 320, height = 240;
-  int sg_grid = 8;
-  int map_width = 128;
-  int sg_count = 10;
+  int width = 320, height = 240, sg_grid = 8, map_width = 128, sg_count = 10;
   int tangent_samples = 32;  // docs/design.md §2: the reference converges in N_j ≥ 32
-  int check_stride = 6;
-  bool no_check = false;
-  double exposure = 0.0;  // 0: automatic
-  double exposure_bias = 0.0;
+  int check_stride = 6, timed_frames = 20;
+  bool no_check = false, weave = false;
+  double exposure = 0.0, exposure_bias = 0.0;  // exposure 0: automatic
   std::string backdrop = "showroom";
-  int timed_frames = 20;
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
-  bool weave = false;
   int supersample = 0;  // 0: 4 with --weave, else 1
-  std::string camera = "scene";
+  std::string camera = "scene";  // or "closeup"
 };
 
 int run_render(const RenderArgs& a) {
