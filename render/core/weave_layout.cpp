@@ -47,6 +47,11 @@ WeaveSample WeaveLayout::at(double s, double t) const {
   return out;
 }
 
+double weave_tilt(const Fabric& fabric, const WeaveSample& w) {
+  const TangentCurve& curve = fabric.threads.at(w.thread).curve;
+  return curve.tilt_at(w.arc * curve.total_length());
+}
+
 glm::dvec2 weave_repeat_cm(const Fabric& fabric) {
   const WeaveLayout layout(fabric);
   return {layout.rows() / fabric.weave.picks_per_cm, layout.rows() / fabric.weave.ends_per_cm};

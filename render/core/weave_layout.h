@@ -38,6 +38,9 @@ private:
   double warp_share_ = 0.5, width_ = 0.66;
 };
 
+// The tilt α (radians) of the thread sample at `w` (a thread, not a gap): its curve at w.arc·Λ_j.
+double weave_tilt(const Fabric& fabric, const WeaveSample& w);
+
 // The weave's repeat in centimetres: (along s, along t) = (rows/picks per cm, rows/ends per cm).
 glm::dvec2 weave_repeat_cm(const Fabric& fabric);
 

@@ -31,6 +31,7 @@ namespace {
 // Every line goes to stderr, which systemd sends to the journal (with its priority).
 void log_info(const std::string& s) { log_line("weft run", LogPriority::info, s); }
 void log_warning(const std::string& s) { log_line("weft run", LogPriority::warning, s); }
+void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
 
 // The resolved weave for close-ups; a renderer that cannot draw it (a see-through method draws
 // none; a cloth mesh without UVs) shows the fabric level, as at a distance.
@@ -50,7 +51,6 @@ Camera closeup_of(const Scene& scene, const std::vector<Fabric>& cloth, int heig
     if (o.is_cloth() && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
   return closeup_camera(scene, fabrics, height);
 }
-void log_error(const std::string& s) { log_line("weft run", LogPriority::error, s); }
 
 constexpr auto kTickPeriod = std::chrono::microseconds(16667);
 // Time constant of the exposure easing in after a lighting change (a probe update, the

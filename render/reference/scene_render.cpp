@@ -85,8 +85,7 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
     const WeaveSample w = weave->layout.at(s.uv.x * weave->tiles_per_uv.x, s.uv.y * weave->tiles_per_uv.y);
     if (w.thread < 0) return dvec3(0.0);
     thread = w.thread;
-    const TangentCurve& curve = bsdf->fabric().threads[thread].curve;
-    tilt = curve.tilt_at(w.arc * curve.total_length());
+    tilt = weave_tilt(bsdf->fabric(), w);
   }
 
   if (!lighting_.sgs.empty()) {

@@ -31,6 +31,12 @@ glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric) {
   return uv_length(object.mesh) / repeat_m;
 }
 
+glm::dvec2 weave_repeat_metres(const SceneObject& object, const Fabric& fabric) {
+  if (object.weave_repeats_per_uv.x > 0.0 && object.weave_repeats_per_uv.y > 0.0)
+    return uv_length(object.mesh) / object.weave_repeats_per_uv;
+  return weave_repeat_cm(fabric) / 100.0;
+}
+
 Camera closeup_camera(const Scene& scene, const std::map<std::string, Fabric>& fabrics, int height, double repeat_pixels) {
   if (scene.closeup) return *scene.closeup;
   double repeat = 0.0;
@@ -38,7 +44,7 @@ Camera closeup_camera(const Scene& scene, const std::map<std::string, Fabric>& f
     if (!o.is_cloth()) continue;
     const auto it = fabrics.find(o.fabric);
     if (it == fabrics.end()) continue;
-    const glm::dvec2 r = uv_length(o.mesh) / weave_tiles_per_uv(o, object_fabric(o, it->second));
+    const glm::dvec2 r = weave_repeat_metres(o, object_fabric(o, it->second));
     const double smallest = std::min(r.x, r.y);
     if (repeat == 0.0 || smallest < repeat) repeat = smallest;
   }

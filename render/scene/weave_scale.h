@@ -19,6 +19,10 @@ glm::dvec2 uv_length(const TriangleMesh& mesh);
 // UV length against the fabric's repeat.
 glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric);
 
+// The repeat's size on the object in metres (along u, along v): the fabric's own repeat, or the
+// mesh's UV length over the object's weave_repeats_per_uv where it gives them.
+glm::dvec2 weave_repeat_metres(const SceneObject& object, const Fabric& fabric);
+
 // The scene's close-up camera, or, where it names none, its camera moved along the view toward the
 // target until the smallest weave repeat of its cloth spans `repeat_pixels` on an image
 // `height` pixels high (never farther than the camera already is).

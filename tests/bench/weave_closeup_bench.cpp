@@ -77,7 +77,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     double repeat_px = 0.0;
     for (const auto& o : in.scene.objects)
       if (o.is_cloth()) {
-        const glm::dvec2 r = uv_length(o.mesh) / weave_tiles_per_uv(o, object_fabric(o, in.fabrics.at(o.fabric)));
+        const glm::dvec2 r = weave_repeat_metres(o, object_fabric(o, in.fabrics.at(o.fabric)));
         const double d = glm::length(close.target - close.position);
         const double px = std::min(r.x, r.y) * kH / (2.0 * d * std::tan(glm::radians(close.fov_deg) / 2.0));
         repeat_px = repeat_px == 0.0 ? px : std::min(repeat_px, px);

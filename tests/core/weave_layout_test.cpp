@@ -96,8 +96,7 @@ TEST(WeaveLayout, RepeatAverageOfResolvedIntegrandIsTheFabricLevelIntegrand) {
         for (int x = 0; x < kGrid; ++x) {
           const WeaveSample w = layout.at((x + 0.5) / kGrid, (y + 0.5) / kGrid);
           if (w.thread < 0) continue;
-          const TangentCurve& c = f.threads[w.thread].curve;
-          avg += point.resolved_scattering(w.thread, c.tilt_at(w.arc * c.total_length()), wi, wo) / q;
+          avg += point.resolved_scattering(w.thread, weave_tilt(f, w), wi, wo) / q;
         }
       avg /= double(kGrid) * kGrid;
       const dvec3 fabric_level = point.integrand(wi, wo);

@@ -41,8 +41,7 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
                   glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs) {
   const WeaveSample w = layout.at(st.x, st.y);
   if (w.thread < 0) return dvec3(0.0);
-  const TangentCurve& curve = bsdf.fabric().threads[w.thread].curve;
-  const double alpha = curve.tilt_at(w.arc * curve.total_length());
+  const double alpha = weave_tilt(bsdf.fabric(), w);
   dvec3 resolved(0.0);
   for (size_t k = 0; k < sgs.size(); ++k)
     if (terms.q.at(k) > kQFloor)
