@@ -44,6 +44,7 @@ int run_bake(const BakeArgs& a) {
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   in.scene = as_usage("--scene", [&] { return load_scene_named(a.scene, assets_dir(), a.fabric); });
+  for (const std::string& w : in.scene.warnings) std::cerr << "weft bake: warning: " << w << "\n";
   if (!a.fabric.empty())
     for (auto& o : in.scene.cloth_objects()) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it

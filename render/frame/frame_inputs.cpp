@@ -19,6 +19,7 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   } catch (const SceneError& e) {
     throw FrameInputError(e.what());
   }
+  for (const std::string& w : in.scene.warnings) std::cerr << "weft render: warning: " << w << "\n";
   for (const auto& obj : in.scene.objects)
     if (obj.repair.degenerate_triangles_dropped > 0)
       std::cerr << "weft render: mesh " << in.scene.name << "/" << obj.name << ": dropped "

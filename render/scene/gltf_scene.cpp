@@ -170,6 +170,16 @@ bool is_preset(const std::filesystem::path& dir, const std::string& name) {
   return std::filesystem::is_regular_file(dir / (name + ".json"), ec);
 }
 
+// A material name as Blender exports a copy of it ("linen_plain.001"): the name without its
+// numbered suffix, or the name itself.
+std::string without_copy_suffix(const std::string& name) {
+  const auto dot = name.rfind('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == name.size()) return name;
+  for (size_t i = dot + 1; i < name.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(name[i]))) return name;
+  return name.substr(0, dot);
+}
+
 void Importer::resolve_materials() {
   fabrics_.assign(m_.materials.size() + 1, "");
   thickness_.assign(m_.materials.size() + 1, 0.0);
@@ -213,6 +223,8 @@ void Importer::resolve_materials() {
       }
     } else if (is_preset(options_.fabrics_dir, mat.name)) {
       fabric = mat.name;
+    } else if (is_preset(options_.fabrics_dir, without_copy_suffix(mat.name))) {
+      fabric = without_copy_suffix(mat.name);
     }
     any_cloth = any_cloth || !fabric.empty();
   }
@@ -518,7 +530,19 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
     std::replace(err.begin(), err.end(), '\n', ';');
     throw SceneError(origin + ": not a usable glTF 2.0 file (" + (err.empty() ? std::string("no reason given") : err) + ")");
   }
+  // No extension is read yet: a required one is refused by name (its data would read as garbage,
+  // e.g. a Draco mesh's missing buffer views), an optional one is a remark for the log.
+  for (const std::string& e : model.extensionsRequired)
+    throw SceneError(origin + ": requires the glTF extension " + e +
+                     ", which Weft cannot read (export the file without it, e.g. without mesh compression)");
+  std::vector<std::string> remarks;
+  for (const std::string& e : model.extensionsUsed) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
   Scene s = Importer(model, origin, base_dir, options).run();
+  for (const std::string& r : remarks) s.warnings.push_back(origin + ": " + r);
+  // tinygltf's warnings, one per line, for the log: what it let through is worth a look.
+  std::stringstream lines(warn);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) s.warnings.push_back(origin + ": " + line);
   s.name = std::filesystem::path(origin).stem().string();
   s.description = "glTF " + origin;
   return s;

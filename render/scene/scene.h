@@ -93,6 +93,7 @@ struct Scene {
   std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
                              // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;
+  std::vector<std::string> warnings;  // what an importer let through with a remark, for the log
   // The cloth objects in order, a view of `objects`: the k-th is the renderer's cloth object k
   // (gpu::SceneRenderer takes their fabrics in this order).
   ClothObjects<const SceneObject> cloth_objects() const& { return {objects.data(), objects.data() + objects.size()}; }

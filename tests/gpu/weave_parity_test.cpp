@@ -6,6 +6,7 @@
 
 #include <iostream>
 #include <random>
+#include <set>
 
 #include "core/cloth_bsdf.h"
 #include "core/weave_layout.h"
@@ -36,9 +37,10 @@ SgLighting four_sgs() {
 }
 
 // Per pixel: ω_o, the frame, the tile point (u_st.xy), the fabric-level term and the four Qs;
-// writes the factor (mode 0) or the four Qs cloth_q gives (mode 1).
+// writes the factor (mode 0), the four Qs cloth_q gives (mode 1) or the factor filtered over the
+// footprint whose tile-space derivatives are u_d's xy and zw (mode 2).
 const char* kFs = R"(
-uniform highp sampler2D u_wo, u_n, u_u, u_st, u_fabric, u_q;
+uniform highp sampler2D u_wo, u_n, u_u, u_st, u_fabric, u_q, u_d;
 uniform int u_mode;
 out vec4 colour;
 void main() {
@@ -48,6 +50,11 @@ void main() {
   q[0] = texelFetch(u_q, p, 0);
   if (u_mode == 0) {
     colour = vec4(weave_ratio(n, u, wo, texelFetch(u_st, p, 0).xy, texelFetch(u_fabric, p, 0).xyz, q), 1.0);
+    return;
+  }
+  if (u_mode == 2) {
+    highp vec4 d = texelFetch(u_d, p, 0);
+    colour = vec4(weave_ratio_filtered(n, u, wo, texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, q), 1.0);
     return;
   }
   for (int k = 0; k < 4; ++k) colour[k] = cloth_q(n, u, u_sg_axis[k], wo);
@@ -88,10 +95,11 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
       if (glm::length(v) > 0.2 && glm::length(v) < 1.0) return glm::normalize(v);
     }
   };
-  std::vector<float> wo(4 * kCases), n(4 * kCases), uu(4 * kCases), st(4 * kCases), fab(4 * kCases), q(4 * kCases);
+  std::vector<float> wo(4 * kCases), n(4 * kCases), uu(4 * kCases), st(4 * kCases), fab(4 * kCases), q(4 * kCases),
+      d(4 * kCases);
   std::vector<SurfaceFrame> frames(kCases);
   std::vector<dvec3> wos(kCases);
-  std::vector<glm::dvec2> sts(kCases);
+  std::vector<glm::dvec2> sts(kCases), dxs(kCases), dys(kCases);
   std::vector<WeaveVertexTerms> terms(kCases);
   for (int i = 0; i < kCases; ++i) {
     const dvec3 nn = unit();
@@ -105,19 +113,25 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     wos[i] = test::load_direction(wo, i);
     sts[i] = {float(3.0 * u01(rng)), float(3.0 * u01(rng))};
     st[4 * i] = float(sts[i].x), st[4 * i + 1] = float(sts[i].y);
+    // Footprints from a twentieth of a repeat to a whole one, any orientation.
+    for (int c = 0; c < 4; ++c) d[4 * i + c] = float((0.05 + 0.45 * u01(rng)) * (2.0 * u01(rng) - 1.0));
+    dxs[i] = {d[4 * i], d[4 * i + 1]}, dys[i] = {d[4 * i + 2], d[4 * i + 3]};
     terms[i] = weave_vertex_terms(bsdf, frames[i], wos[i], sgs);
     for (int c = 0; c < 3; ++c) fab[4 * i + c] = float(terms[i].fabric[c]);
     for (int k = 0; k < 4; ++k) q[4 * i + k] = float(terms[i].q[k]);
     terms[i].fabric = dvec3(fab[4 * i], fab[4 * i + 1], fab[4 * i + 2]);
     for (int k = 0; k < 4; ++k) terms[i].q[k] = q[4 * i + k];
   }
-  const std::vector<test::CaseInput> inputs = {{"u_wo", &wo}, {"u_n", &n}, {"u_u", &uu}, {"u_st", &st}, {"u_fabric", &fab}, {"u_q", &q}};
+  const std::vector<test::CaseInput> inputs = {{"u_wo", &wo}, {"u_n", &n}, {"u_u", &uu}, {"u_st", &st}, {"u_fabric", &fab}, {"u_q", &q}, {"u_d", &d}};
   glUniform1i(program.uniform("u_mode"), 0);
   const std::vector<float> ratio = test::shade_cases(program, kW, kH, inputs);
   program.use();
   glUniform1i(program.uniform("u_mode"), 1);
   const std::vector<float> qs = test::shade_cases(program, kW, kH, inputs);
-  int compared = 0, threads = 0;
+  program.use();
+  glUniform1i(program.uniform("u_mode"), 2);
+  const std::vector<float> filtered = test::shade_cases(program, kW, kH, inputs);
+  int compared = 0, threads = 0, filtered_compared = 0, mixed = 0;
   for (int i = 0; i < kCases; ++i) {
     for (int k = 0; k < 4; ++k)
       EXPECT_NEAR(qs[4 * i + k], terms[i].q[k], 2e-3 * (1.0 + terms[i].q[k])) << "case " << i << " SG " << k;
@@ -126,6 +140,23 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     bool edge = false;
     for (double dx : {-1e-4, 1e-4})
       for (double dy : {-1e-4, 1e-4}) edge = edge || layout.at(sts[i].x + dx, sts[i].y + dy).thread != here.thread;
+    // The filtered factor: every sub-sample clear of an edge (the twin's grid is the GLSL's).
+    bool sub_edge = false;
+    std::set<int> present;
+    for (glm::dvec2 g : {glm::dvec2(-0.125, -0.375), glm::dvec2(0.375, -0.125), glm::dvec2(0.125, 0.375), glm::dvec2(-0.375, 0.125)}) {
+      const glm::dvec2 p = sts[i] + g.x * dxs[i] + g.y * dys[i];
+      const WeaveSample w = layout.at(p.x, p.y);
+      present.insert(w.thread);
+      for (double dx : {-1e-4, 1e-4})
+        for (double dy : {-1e-4, 1e-4}) sub_edge = sub_edge || layout.at(p.x + dx, p.y + dy).thread != w.thread;
+    }
+    if (!sub_edge) {
+      const dvec3 expect = weave_ratio_filtered(bsdf, layout, frames[i], wos[i], sts[i], dxs[i], dys[i], terms[i], sgs);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(filtered[4 * i + c], expect[c], 3e-3 * (1.0 + expect[c])) << "filtered case " << i << " channel " << c;
+      ++filtered_compared;
+      mixed += present.size() > 1;
+    }
     if (edge) continue;
     const dvec3 expect = weave_ratio(bsdf, layout, frames[i], wos[i], sts[i], terms[i], sgs);
     for (int c = 0; c < 3; ++c)
@@ -134,6 +165,8 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     threads += here.thread >= 0;
   }
   EXPECT_GT(compared, kCases * 9 / 10);
+  EXPECT_GT(filtered_compared, kCases * 8 / 10);
+  EXPECT_GT(mixed, filtered_compared / 4);  // footprints that straddle an edge are tested too
   EXPECT_GT(threads, compared / 3);
 }
 

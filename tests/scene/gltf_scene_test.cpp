@@ -440,3 +440,31 @@ TEST(GltfScene, EverySampleFileImportsOrIsRefusedWithoutCrashing) {
   EXPECT_GT(loaded, 10);
   EXPECT_GT(refused, 10);
 }
+
+TEST(GltfScene, BlenderCopySuffixMatchesItsPreset) {
+  GltfBuilder b = quad();
+  b.j["materials"][0] = {{"name", "linen_plain.001"}};
+  EXPECT_EQ(parse(b).objects[0].fabric, "linen_plain");
+  for (const std::string name : {"linen_plain.", "linen_plain.a01", ".001", "linen_plain.001.002x"}) {
+    b.j["materials"][0] = {{"name", name}};
+    EXPECT_EQ(parse(b).objects[0].material, Material::lambertian) << name;
+  }
+}
+
+TEST(GltfScene, ExtensionsAreNamedWarnedOrRefused) {
+  GltfBuilder b = quad();
+  EXPECT_TRUE(parse(b).warnings.empty());
+  b.j["extensionsUsed"] = json::array({"KHR_materials_variants"});
+  const Scene s = parse(b);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("KHR_materials_variants"), std::string::npos) << s.warnings[0];
+  b.j["extensionsUsed"] = json::array({"KHR_draco_mesh_compression"});
+  b.j["extensionsRequired"] = json::array({"KHR_draco_mesh_compression"});
+  try {
+    parse(b);
+    FAIL() << "a required extension was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("KHR_draco_mesh_compression"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("test.gltf"), std::string::npos) << e.what();
+  }
+}

@@ -1,4 +1,4 @@
-// The weave layer, step 3: the factor weave_ratio() gives at the pixel's point of the repeat,
+// The weave layer, step 3: the factor weave_ratio_filtered() gives over the pixel's footprint,
 // eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
 // repeats, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
 // with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl.
@@ -14,7 +14,8 @@ in vec4 v_q[Q_GROUPS];
 out vec4 o_factor;
 void main() {
   highp vec2 st = v_uv * u_tiles_per_uv;
-  float footprint = max(length(dFdx(st)), length(dFdy(st)));
+  highp vec2 dx = dFdx(st), dy = dFdy(st);
+  float footprint = max(length(dx), length(dy));
   float coarse = smoothstep(u_lod.x, u_lod.y, footprint);
   if (coarse >= 1.0) {
     o_factor = vec4(1.0);
@@ -26,5 +27,5 @@ void main() {
   vec3 u = normalize(v_warp - dot(v_warp, n) * n);
   vec4 q[Q_GROUPS];
   for (int g = 0; g < Q_GROUPS; ++g) q[g] = v_q[g];
-  o_factor = vec4(mix(weave_ratio(n, u, wo, st, v_fabric, q), vec3(1.0), coarse), 1.0);
+  o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, v_fabric, q), vec3(1.0), coarse), 1.0);
 }

@@ -39,11 +39,21 @@ WeaveVertexTerms weave_vertex_terms(const ClothBsdf& bsdf, const SurfaceFrame& f
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                   glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs);
 
+// R averaged over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the
+// layout at four rotated-grid points; a thread whose samples lie within kWeaveArcSpread of each
+// other along its float is shaded once at their mean, weighted by its share of them, one whose
+// samples spread further at each of them.
+inline constexpr double kWeaveArcSpread = 0.125;  // WEAVE_ARC_SPREAD in weave_ratio.glsl
+dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
+                           glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
+                           std::span<const SphericalGaussian> sgs);
+
 // How much of R a pixel shows, 1 − smoothstep(fine, coarse, footprint): the rest is 1.
 double weave_detail(double footprint);
 
-// The layer's factor as a pixel applies it: mix(R, 1, 1 − weave_detail(footprint)).
+// The layer's factor as a pixel applies it: mix(filtered R, 1, 1 − weave_detail(footprint)), the
+// footprint the longer of dx and dy.
 dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                   glm::dvec2 st, double footprint, std::span<const SphericalGaussian> sgs);
+                   glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs);
 
 }  // namespace weft

@@ -1,0 +1,72 @@
+// The weave layer's factor filtered over a pixel's footprint (methods/weave/weave_ratio.h)
+// against the point factor it averages: the same where the footprint is tiny, the yarn's share
+// of it where it straddles a yarn's edge, and the same mean over the repeat (a box filter moves
+// detail, not light).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/fabric.h"
+#include "methods/weave/weave_ratio.h"
+
+using namespace weft;
+using glm::dvec2;
+using glm::dvec3;
+
+namespace {
+const std::filesystem::path kAssets = WEFT_SOURCE_ASSETS;
+
+struct Swatch {
+  Fabric fabric;
+  ClothBsdf bsdf;
+  WeaveLayout layout;
+  SurfaceFrame frame = SurfaceFrame::from_normal_warp(dvec3(0, 0, 1), dvec3(1, 0, 0));
+  dvec3 wo = glm::normalize(dvec3(0.3, -0.4, 0.85));
+  std::vector<SphericalGaussian> sgs{{glm::normalize(dvec3(-0.45, 0.55, 0.70)), 30.0, {6.0, 6.0, 6.0}},
+                                     {dvec3(0, 0, 1), 3.0, {0.8, 0.8, 0.8}}};
+  WeaveVertexTerms terms;
+  explicit Swatch(const std::string& name)
+      : fabric(load_fabric_preset(name, kAssets / "fabrics")), bsdf(fabric, 16), layout(fabric) {
+    terms = weave_vertex_terms(bsdf, frame, wo, sgs);
+  }
+};
+}  // namespace
+
+TEST(WeaveRatioFiltered, TinyFootprintIsThePointFactor) {
+  const Swatch s("linen_plain");
+  for (double x = 0.013; x < 1.0; x += 0.07)
+    for (double y = 0.021; y < 1.0; y += 0.09) {
+      const dvec3 point = weave_ratio(s.bsdf, s.layout, s.frame, s.wo, {x, y}, s.terms, s.sgs);
+      const dvec3 filtered = weave_ratio_filtered(s.bsdf, s.layout, s.frame, s.wo, {x, y}, {1e-7, 0}, {0, 1e-7}, s.terms, s.sgs);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(filtered[c], point[c], 1e-4 * (1.0 + point[c])) << x << ", " << y;
+    }
+}
+
+TEST(WeaveRatioFiltered, AFootprintAcrossAYarnEdgeShowsTheYarnsShare) {
+  const Swatch s("linen_plain");
+  ASSERT_LT(s.layout.yarn_width(), 0.95);  // the preset has gaps between its yarns
+  // Row 0's warp float: its yarn fills τ within ½ ± w/2 of the row; t = τ/rows at the edge.
+  const double s_mid = 0.5 * s.layout.warp_share() * 0.8, edge_t = (0.5 + 0.5 * s.layout.yarn_width()) / s.layout.rows();
+  const double h = 0.02;  // along t: two sub-samples inside the yarn, two in the gap
+  const dvec3 inside = weave_ratio(s.bsdf, s.layout, s.frame, s.wo, {s_mid, edge_t - 0.1 * h}, s.terms, s.sgs);
+  ASSERT_EQ(s.layout.at(s_mid, edge_t - 0.1 * h).thread, 0);
+  ASSERT_GT(inside.g, 0.0);
+  const dvec3 filtered = weave_ratio_filtered(s.bsdf, s.layout, s.frame, s.wo, {s_mid, edge_t}, {1e-7, 0}, {0, h}, s.terms, s.sgs);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(filtered[c], 0.5 * inside[c], 1e-3 * inside[c]);
+}
+
+TEST(WeaveRatioFiltered, KeepsTheRepeatsMean) {
+  for (const std::string name : {"linen_plain", "polyester_satin_charmeuse"}) {
+    const Swatch s(name);
+    constexpr int kN = 96;
+    dvec3 point(0.0), filtered(0.0);
+    for (int i = 0; i < kN; ++i)
+      for (int j = 0; j < kN; ++j) {
+        const dvec2 st((i + 0.5) / kN, (j + 0.5) / kN);
+        point += weave_ratio(s.bsdf, s.layout, s.frame, s.wo, st, s.terms, s.sgs);
+        filtered += weave_ratio_filtered(s.bsdf, s.layout, s.frame, s.wo, st, {0.21, 0.05}, {-0.04, 0.17}, s.terms, s.sgs);
+      }
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(filtered[c] / point[c], 1.0, 0.01) << name;
+
+  }
+}
