@@ -18,7 +18,7 @@ public:
     std::filesystem::create_directories(dir_);
     file_ = dir_ / (scene + ".weft");
     const std::string cmd = "WEFT_ASSETS=" WEFT_SOURCE_ASSETS " " + std::string(WEFT_BINARY) + " bake --scene " + scene +
-                            " --grid 4 --lambda-levels 2 --samples 1 1 --sdf-resolution 8 --floor-sdf-resolution 8 " +
+                            " --table-grid 4 --lambda-levels 2 --tangent-samples 1 1 --sdf-resolution 8 --floor-sdf-resolution 8 " +
                             extra + " --out " + file_.string() + " >" + (dir_ / "bake.log").string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     exit_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
