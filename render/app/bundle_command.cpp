@@ -51,7 +51,7 @@ int run_verify(const BundleArgs& a) {
 }
 
 void add_file_options(CLI::App* sub, BundleArgs& a, const char* json_help) {
-  sub->add_option("FILE", a.file, "Scene bundle (weft bake --out)")->required();
+  sub->add_option("FILE", a.file, "Scene bundle (as weft bake writes it)")->required();
   sub->add_flag("--json", a.json, json_help);
 }
 
@@ -69,7 +69,7 @@ CommandAction add_bundle_command(CLI::App& app) {
       "verify", "The kiosk's checks on a bundle (every checksum, every section, what the method needs): exit 0 if it "
                 "would show it, 2 with the reason if not");
   add_file_options(verify, *a, "The verdict as JSON: file, ok, method, part, section, message");
-  verify->add_option("--method", a->method, "Check for this method, as weft run --method (auto or a method name)")
+  verify->add_option("--method", a->method, "Check for the method the kiosk is started with (auto or a method name)")
       ->capture_default_str();
   return [a, info] { return info->parsed() ? run_info(*a) : run_verify(*a); };
 }
