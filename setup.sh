@@ -48,7 +48,7 @@ run_default() {
   local scene=assets/scenes/showroom.json
   # Re-baked after every rebuild of weft or edit of the scene, so the bundle matches both.
   { [ "$bundle" -nt "$weft" ] && [ "$bundle" -nt "$scene" ] && [ "$bundle" -nt assets/scenes/armchair.gltf ]; } ||
-    "$weft" bake --scene "$scene" --grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
+    "$weft" bake --scene "$scene" --table-grid 32 --sdf-resolution 64 --floor-sdf-resolution 32 \
       --out "$bundle"  # the default settings, coarser grids: a few minutes of CPU (docs/showroom/README.md)
   mkdir -p "$state"
   # The close-up beside it: the kiosk's zoom all the way in (the scene's closeup_camera), where the

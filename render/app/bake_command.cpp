@@ -7,6 +7,7 @@
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "app/option_spelling.h"
 #include "app/progress_bar.h"
 #include "bake/writers/bundle_fabrics.h"
 #include "bake/scene/scene_bake.h"
@@ -31,7 +32,7 @@ struct BakeArgs {
   int lambertian_sdf_resolution = 32, lambda_levels = 5;
   std::vector<int> samples;
   int subdivide = -1;  // ≥ 0: midpoint subdivision levels of the cloth meshes (the search's choice when < 0)
-  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --grid
+  SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --table-grid
 };
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
@@ -121,25 +122,26 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--scene", a->scene, "Scene: a preset (assets/scenes/NAME.json) or a path to a .json scene or a .gltf/.glb file")->required();
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: each object's own; a glTF naming no cloth: every material)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
-  sub->add_option("--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
+  sub->add_option("--sg-count,--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   auto* no_tables = sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
-  auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--fit-sgs, samples, levels, SVD, SDF, PCA, cloth mesh "
+  auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--sg-count, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));
   auto* no_masks = sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, the *_quadrature rungs), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
   sub->add_flag("--choose-rung", a->choose_rung, "Measure the kiosk's per-vertex rung with the SDF's visibility and with the masks' (iwasaki_vertex_quadrature, iwasaki_vertex_mask_quadrature) on the scene's views against a reference (rendered once, cached: minutes) and record the closer for --method auto")->excludes(no_tables)->excludes(target)->excludes(no_masks);
-  sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) { a->select.views.width = wh[0], a->select.views.height = wh[1]; },
-                  "Size of --choose-rung's (and --target-error's) views, W H (default 160 120: their references cost minutes)")->expected(2)->check(CLI::Range(8, 1024));
+  sub->add_option("--choose-width", a->select.views.width, "Width of --choose-rung's (and --target-error's) views (their references cost minutes)")->check(CLI::Range(8, 1024))->capture_default_str();
+  sub->add_option("--choose-height", a->select.views.height, "Height of those views")->check(CLI::Range(8, 1024))->capture_default_str();
+  old_spelling(sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) { a->select.views.width = wh[0], a->select.views.height = wh[1]; })->expected(2)->check(CLI::Range(8, 1024)));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
   sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
       ->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution, "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
       ->check(CLI::Range(8, 256))->capture_default_str();
-  sub->add_option("--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
+  sub->add_option("--table-grid,--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
-  sub->add_option("--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2)->check(CLI::Range(1, 64));
+  sub->add_option("--tangent-samples,--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2)->check(CLI::Range(1, 64));
   sub->add_option_function<int>("--subdivide", [a](const int& n) { a->subdivide = n, a->select.knobs.subdivisions = {n}; }, "Midpoint subdivision levels of the cloth meshes (each x4 triangles: finer per-vertex shading, more vertices to shade and store; default 0, or with --target-error the search's choice)")->check(CLI::Range(0, kMaxSubdivision));
   return [a] { return run_bake(*a); };
 }

@@ -57,7 +57,7 @@ int run_bake_tables(const BakeTablesArgs& a) {
     rows = sel.rows;
   }
   if (!a.samples.empty()) {
-    if (a.samples.size() != 2) throw UsageError("--samples: give two counts N1,N2");
+    if (a.samples.size() != 2) throw UsageError("--tangent-samples: give two counts N1,N2");
     settings.tangent_samples = {a.samples[0], a.samples[1]};
   }
   if (a.levels > 0) settings.lambda_levels = a.levels;
@@ -127,8 +127,8 @@ CommandAction add_bake_tables_command(CLI::App& app) {
   sub->add_option("--target-error", a->target_error,
                   "Choose tangent samples, λ levels and SVD ranks so each table's relative error stays under E "
                   "(default: the paper's settings)");
-  sub->add_option("--samples", a->samples, "Override tangent samples per thread: N1,N2")->delimiter(',');
-  sub->add_option("--levels", a->levels, "Override the number of λ levels (4..1024, log-spaced)")
+  sub->add_option("--tangent-samples,--samples", a->samples, "Override tangent samples per thread: N1,N2")->delimiter(',');
+  sub->add_option("--lambda-levels,--levels", a->levels, "Override the number of λ levels (4..1024, log-spaced)")
       ->check(CLI::Range(1, 64));
   sub->add_option("--svd-error", a->svd_error, "Override the relative SVD truncation error per table")
       ->check(CLI::Range(1e-6, 0.999));

@@ -20,10 +20,10 @@ CommandAction add_bench_command(CLI::App& app) {
                   "bigger and hazier suns, the bundled maps turned 90 deg; seed 000's rungs (iwasaki, iwasaki_vertex, "
                   "their mask and quadrature variants; --methods narrows them) at 320x240; writes low_sun.csv/.md with the SG fit's irradiance error) or 'sky-smoke' (its smoke version: swatch, linen, 64x48, the reference at a fixed 8 tangent samples)");
   sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
-  sub->add_option("--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
+  sub->add_option("--reference-cache,--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");
   sub->add_option("--scenes", a->scenes, "Scenes: preset names or .json/.gltf/.glb paths")->delimiter(',')->capture_default_str();
   sub->add_option("--fabrics", a->fabrics, "Fabrics: preset names or .json paths ('scene': each scene's own)")->delimiter(',')->capture_default_str();
-  sub->add_option("--envs", a->envs, "Environments: map names or .exr paths, NAME@DEG (rotated about +Z), "
+  sub->add_option("--maps,--envs", a->envs, "Environment maps: names or .exr paths, NAME@DEG (rotated about +Z), "
                   "sky:elev=E,size=S,haze=T,azim=A,albedo=G (procedural; its key=value items may follow "
                   "it in this list) ('scene': each scene's own)")->delimiter(',')->capture_default_str();
   sub->add_option("--methods", a->methods, "GPU methods (default: all available)")->delimiter(',');
@@ -47,7 +47,7 @@ CommandAction add_bench_command(CLI::App& app) {
   sub->add_option("--sweep-sg-counts", a->sweep_sg_counts,
                   "SG counts to sweep on the first scene (e.g. 1,2,5,10,20,40), against its map-lit reference")
       ->delimiter(',');
-  sub->add_option("--bake-grid", a->bake_grid,
+  sub->add_option("--table-grid,--bake-grid", a->bake_grid,
                   "iwasaki tables: xi/omega grids NxN (0: the paper's 48; --quick uses 12)")
       ->capture_default_str();
   sub->add_option("--target-error", a->target_error,
@@ -78,7 +78,7 @@ CommandAction add_bench_command(CLI::App& app) {
       try {
         if (env != "scene") parse_env_spec(env);
       } catch (const EnvSpecError& e) {
-        throw UsageError(std::string("--envs: ") + e.what());
+        throw UsageError(std::string("--maps: ") + e.what());
       }
     }
     try {

@@ -3,12 +3,14 @@
 #include <string>
 
 #include "app/cli_parse.h"
+#include "app/option_spelling.h"
 #include "core/fabric.h"
 #include "journal/journal_log.h"
 
 namespace weft {
 
 CommandLine::CommandLine() : app_{"weft " WEFT_VERSION ": microcylinder cloth rendering for showroom kiosks"} {
+  show_first_names_only(app_);  // before the subcommands, which take the formatter when added
   app_.require_subcommand(1);
   app_.set_version_flag("--version", std::string("weft ") + WEFT_VERSION);
 }

@@ -20,5 +20,6 @@ CommandAction add_probe_command(CLI::App& app);
 CommandAction add_bake_command(CLI::App& app);
 CommandAction add_run_command(CLI::App& app);
 CommandAction add_bench_command(CLI::App& app);
+CommandAction add_bundle_command(CLI::App& app);
 
 }  // namespace weft

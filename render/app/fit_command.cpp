@@ -32,7 +32,7 @@ struct FitArgs {
 };
 
 int run_fit(const FitArgs& a) {
-  if (a.count < 1 || a.count > 64) throw UsageError("--count: must be in [1, 64], got " + std::to_string(a.count));
+  if (a.count < 1 || a.count > 64) throw UsageError("--sg-count: must be in [1, 64], got " + std::to_string(a.count));
   if (a.grid < 16 || a.grid > 1024 || a.grid % 2)
     throw UsageError("--grid: must be even and in [16, 1024], got " + std::to_string(a.grid));
   if (a.iterations < 0 || a.iterations > 1000)
@@ -119,7 +119,7 @@ CommandAction add_fit_command(CLI::App& app) {
   auto a = std::make_shared<FitArgs>();
   CLI::App* sub = app.add_subcommand("fit", "Fit spherical Gaussians to an equirectangular OpenEXR environment map");
   sub->add_option("map", a->map, "Environment map (.exr, equirectangular, +Z up, Blender orientation), NAME@DEG (rotated about +Z) or sky:elev=E,azim=A,size=S,haze=T,albedo=G")->required();
-  sub->add_option("--count,-k", a->count, "Number of SGs K")->capture_default_str();
+  sub->add_option("--sg-count,-k,--count", a->count, "Number of SGs K")->capture_default_str();
   sub->add_flag("--json", a->json, "Print the fit and its error as one JSON object");
   sub->add_option("--preview", a->preview, "Write a PNG: the map (left) and its fit (right), tone mapped");
   sub->add_option("--out", a->out, "Save the SG set as JSON (weft-sg-set)");

@@ -19,5 +19,6 @@ int main(int argc, char** argv) {
   cli.list("bake", offline("bake"));
   cli.add(weft::add_run_command);
   cli.list("bench", offline("bench"));
+  cli.add(weft::add_bundle_command);
   return cli.run(argc, argv);
 }

@@ -32,11 +32,12 @@ CommandAction add_panel_command(CLI::App& app) {
   auto a = std::make_shared<PanelMonitorConfig>();
   CLI::App* sub = app.add_subcommand(
       "panel", "Run the knob panel alone: prints the fabric parameters the renderer would get, one JSON line per change");
-  sub->add_option("--config", a->panel_config, "Panel configuration (JSON: sources, hid ids, gpio lines, state_file)");
+  sub->add_option("--panel-config,--config", a->panel_config, "Panel configuration (JSON: sources, hid ids, gpio lines, state_file)");
   sub->add_option("--source", a->sources,
                   "Knob source: hid, gpio, keyboard, sim:SCRIPT or none (repeatable; overrides the config)");
   sub->add_option("--simulate", a->simulate, "Play a knob script (weft-panel-sim format) through a simulated USB panel");
-  sub->add_option("--speed", a->speed, "Play the --simulate script this many times faster")->capture_default_str();
+  sub->add_option("--sim-speed,--speed", a->speed, "Play the --simulate script this many times faster")
+      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1000.0))->capture_default_str();
   sub->add_option("--state", a->state, "Knob state file to restore and save (overrides the config)");
   sub->add_flag("--no-state", a->no_state, "Neither restore nor save knob state");
   sub->add_option("--fabric", a->fabric, "Fabric preset to start from when no state is saved")->capture_default_str();

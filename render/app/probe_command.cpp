@@ -32,7 +32,7 @@ CommandAction add_probe_command(CLI::App& app) {
   sub->add_option("--mock", o->mock, "Photograph a mirror ball in this EXR map instead of using the camera");
   sub->add_option("--camera", o->camera, "libcamera camera id (default: the first one)");
   sub->add_option("--frames", o->frames, "Updates to run (each is one exposure bracket)")->capture_default_str()->check(CLI::Range(1, 100000));
-  sub->add_option("--size", o->width, "Camera frame width (height = 3/4 of it)")->capture_default_str()->check(CLI::Range(64, 8192));
+  sub->add_option("--width,--size", o->width, "Camera frame width (height = 3/4 of it)")->capture_default_str()->check(CLI::Range(64, 8192));
   sub->add_option("--ball", o->ball, "Mirror ball centre x, y and radius in pixels (default: centred, 95 % of the half height)")->expected(3);
   sub->add_option("--radiance-scale", o->radiance_scale, "Calibration k: linear sensor value per unit radiance per second")->capture_default_str();
   sub->add_option("--reflectance", o->reflectance, "Calibration ρ: the chrome ball's reflectance")->capture_default_str();

@@ -113,7 +113,7 @@ CommandAction add_render_command(CLI::App& app) {
   sub->add_option("--scene", a->scene, "Scene: a name (assets/scenes/NAME.json: swatch, pillow, drape, teapot, curtain) or a path to a .json scene or a .gltf/.glb file")
       ->capture_default_str();
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: the scene's; a glTF naming no cloth: every material)");
-  sub->add_option("--env", a->env, "Environment: a map name (assets/envmaps/NAME.exr) or an .exr path, NAME@DEG (rotated about +Z), or "
+  sub->add_option("--map,--env", a->env, "Environment map: a name (assets/envmaps/NAME.exr) or an .exr path, NAME@DEG (rotated about +Z), or "
                   "sky:elev=E,size=S,haze=T,azim=A,albedo=G (procedural) (default: the scene's)");
   sub->add_option("--method", a->method, "Method: reference (ground truth of docs/design.md §2, CPU) or a GPU method: sgpoint, iwasaki, iwasaki_vertex, mizutani, sheen, mdfrot, thin (mizutani bakes its tables first)")->capture_default_str();
   sub->add_option("--lighting", a->lighting, "sg: spherical Gaussians; map: the environment map itself")

@@ -5,6 +5,7 @@
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "app/option_spelling.h"
 #include "kiosk/kiosk.h"
 #include "kiosk/kiosk_config_error.h"
 
@@ -45,7 +46,10 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--panel-config", a->panel_config, "Panel configuration (JSON: hid ids, gpio lines, sources)");
   sub->add_option("--sim-speed", a->sim_speed, "Play the sim: script this many times faster")->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Write the last frame, tone-mapped, as PNG");
-  sub->add_option("--size", a->size, "Headless frame size WIDTH HEIGHT")->expected(2)->capture_default_str();
+  sub->add_option("--width", a->size[0], "Headless frame width")->check(CLI::Range(8, 8192))->capture_default_str();
+  sub->add_option("--height", a->size[1], "Headless frame height")->check(CLI::Range(8, 8192))->capture_default_str();
+  old_spelling(sub->add_option_function<std::vector<int>>("--size", [a](const std::vector<int>& wh) { a->size[0] = wh[0], a->size[1] = wh[1]; })
+                   ->expected(2));
   sub->add_option("--method", a->method, "Runtime method: auto (with seed 000 tables: sheer_vertex if a cloth object is a sheer, else iwasaki_vertex_quadrature where masks cover the occluded cloth (weft bake writes them unless --no-masks) or none is occluded (iwasaki_vertex_mask_quadrature where weft bake --choose-rung measured it closer), else iwasaki_vertex; iwasaki or iwasaki_quadrature where the bake's --target-error search chose per pixel; sgpoint without tables), iwasaki (per pixel), iwasaki_vertex (per vertex: same tables, a fraction of the cost), iwasaki_mask or iwasaki_vertex_mask (visibility from the bundle's masks), iwasaki_quadrature or iwasaki_vertex_quadrature (the broad sky lobes by quadrature per vertex, visibility from the masks), iwasaki_mask_quadrature or iwasaki_vertex_mask_quadrature (the same, the sharper lobes with the masks' visibility too), sheer, sheer_vertex (a sheer over what lies behind) or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();

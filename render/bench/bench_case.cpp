@@ -34,10 +34,10 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
   try {
     const auto env_file = env_spec_file(c.env, a.assets / "envmaps");
     if (!env_file.empty() && !std::filesystem::exists(env_file))
-      throw InvalidOption("--envs: no environment map " + env_file.string());
+      throw InvalidOption("--maps: no environment map " + env_file.string());
     map = load_env(c.env, a.assets / "envmaps", NonFinitePolicy::clamp, nullptr);
   } catch (const EnvSpecError& e) {
-    throw InvalidOption(std::string("--envs: ") + e.what());
+    throw InvalidOption(std::string("--maps: ") + e.what());
   }
   SgFitOptions fit;
   fit.count = a.sg_count;

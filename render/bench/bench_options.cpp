@@ -50,7 +50,7 @@ void validate(const BenchOptions& a) {
     throw InvalidOption("--reference-tolerance: must be within [0, 1)");
   if (a.sg_count < 1 || a.sg_count > 40) throw InvalidOption("--sg-count: must be within 1..40");
   if (a.stress_points < 0 || a.stress_points > 1000) throw InvalidOption("--stress-points: must be within 0..1000");
-  if (a.bake_grid != 0 && (a.bake_grid < 4 || a.bake_grid > 96)) throw InvalidOption("--bake-grid: must be 0 or within 4..96");
+  if (a.bake_grid != 0 && (a.bake_grid < 4 || a.bake_grid > 96)) throw InvalidOption("--table-grid: must be 0 or within 4..96");
   if (!(a.target_error >= 0.0 && a.target_error < 1.0)) throw InvalidOption("--target-error: must be within [0, 1)");
   for (int k : a.sweep_sg_counts)
     if (k < 1 || k > 40) throw InvalidOption("--sweep-sg-counts: each must be within 1..40");
@@ -72,14 +72,14 @@ std::string command_line(const BenchOptions& a) {
   if (!a.sweep.empty()) c << " --sweep " << a.sweep;
   if (a.quick) c << " --quick";
   else
-    c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --envs " << joined(a.envs)
+    c << " --scenes " << joined(a.scenes) << " --fabrics " << joined(a.fabrics) << " --maps " << joined(a.envs)
       << " --speed-width " << a.speed_width << " --speed-height " << a.speed_height << " --width " << a.width
       << " --height " << a.height << " --sg-grid " << a.sg_grid << " --tangent-samples " << a.tangent_samples
       << " --reference-tolerance " << fmt(a.reference_tolerance, 4) << " --stress-points " << a.stress_points;
   c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
   if (!a.methods.empty()) c << " --methods " << joined(a.methods);
   if (a.no_stability) c << " --no-stability";
-  if (!a.quick && a.bake_grid > 0) c << " --bake-grid " << a.bake_grid;
+  if (!a.quick && a.bake_grid > 0) c << " --table-grid " << a.bake_grid;
   c << " --target-error " << fmt(a.target_error, 4);
   if (!a.subdivide.empty()) c << " --subdivide " << joined_numbers(a.subdivide);
   if (!a.sweep_sg_counts.empty()) c << " --sweep-sg-counts " << joined_numbers(a.sweep_sg_counts);

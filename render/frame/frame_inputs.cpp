@@ -54,10 +54,10 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   try {
     const auto env_file = env_spec_file(in.env, a.assets / "envmaps");
     if (!env_file.empty() && !std::filesystem::exists(env_file))
-      throw FrameInputError("--env: no environment map " + env_file.string());
+      throw FrameInputError("--map: no environment map " + env_file.string());
     in.map = std::make_shared<EnvMap>(load_env(in.env, a.assets / "envmaps", NonFinitePolicy::clamp, &repairs));
   } catch (const EnvSpecError& e) {
-    throw FrameInputError(std::string("--env: ") + e.what());
+    throw FrameInputError(std::string("--map: ") + e.what());
   } catch (const EnvMapError& e) {
     throw FrameInputError(e.what());
   }

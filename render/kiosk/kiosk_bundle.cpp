@@ -32,6 +32,17 @@ const methods::RuntimeMethod& tableless_rung() {
   });
 }
 
+// Every occluded cloth object has a visibility mask (weft bake writes them unless --no-masks), or
+// none is occluded.
+bool masks_cover_occluded_cloth(const KioskBundle& bundle) {
+  if (!bundle.iwasaki) return false;
+  for (const auto& [i, v] : bundle.iwasaki->visibility)
+    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth() &&
+        !bundle.iwasaki->masks.count(i))
+      return false;
+  return true;
+}
+
 // --method auto (header).
 const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   using methods::RuntimeMethod, methods::Shading;
@@ -52,11 +63,7 @@ const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
   // take the quadrature rung, or the rung that reads the masks which `weft bake --choose-rung`
   // measured closer to the scene's reference.
-  bool masks_cover = true;
-  for (const auto& [i, v] : bundle.iwasaki->visibility)
-    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth())
-      masks_cover = masks_cover && bundle.iwasaki->masks.count(i);
-  if (!masks_cover)
+  if (!masks_cover_occluded_cloth(bundle))
     return kiosk_rung([&](const RuntimeMethod& m) {
       return opaque_seed000(m) && m.shading == shading && !m.reads_visibility_masks();
     });
@@ -100,6 +107,10 @@ const methods::RuntimeMethod& kiosk_method(const std::string& method, const Kios
   if (m.needs_seed000_tables() && !bundle.iwasaki)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no seed 000 tables (weft bake without --no-tables)");
+  // The masks' open share replaces the SDF's visibility: an occluded cloth object needs its mask.
+  if (m.masks.open_share && bundle.iwasaki && !masks_cover_occluded_cloth(bundle))
+    throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
+                           " has no visibility mask for its occluded cloth (weft bake without --no-masks)");
   return m;
 }
 

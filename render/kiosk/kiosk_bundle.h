@@ -39,7 +39,8 @@ KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::str
 // none), which where the bundle's masks cover the occluded cloth is the mask-reading rung
 // `weft bake --choose-rung` chose (baked_for), or the one taking the broad lobes by quadrature over
 // the masks, and elsewhere the one reading no masks. Throws KioskConfigError when the method needs
-// tables the bundle lacks.
+// tables or visibility masks the bundle lacks: `weft bundle info` lists the methods a bundle can
+// draw by asking this for each.
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file);
 

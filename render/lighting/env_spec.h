@@ -51,7 +51,7 @@ std::string env_spec_label(const std::string& spec);
 // (exact, and every row's power kept, when the shift is a whole number of texels).
 EnvMap rotate_about_z(const EnvMap& map, double degrees);
 
-// A list split at commas (as --envs is) put back together: items of the form key=value that
+// A list split at commas (as --maps is) put back together: items of the form key=value that
 // follow a sky spec belong to it ("sky:elev=5", "size=1" → "sky:elev=5,size=1").
 std::vector<std::string> join_env_specs(const std::vector<std::string>& items);
 

@@ -33,7 +33,7 @@ TEST(BakeSubdivide, BundleHoldsTheRefinedClothMeshes) {
   const fs::path out = temp("pillow.weftbundle");
   // Tiny tables (grid 4, 2 levels, 1+1 samples) and 8² SDFs: only the meshes and the sections'
   // sizes matter. The pillow is occluded (by itself and the floor): visibility per vertex.
-  ASSERT_EQ(bake("--scene pillow --subdivide 1 --grid 4 --lambda-levels 2 --samples 1 1 --sdf-resolution 8 "
+  ASSERT_EQ(bake("--scene pillow --subdivide 1 --table-grid 4 --lambda-levels 2 --tangent-samples 1 1 --sdf-resolution 8 "
                  "--floor-sdf-resolution 8 --out " + out.string()),
             0);
   const Scene given = load_scene_named("pillow", WEFT_SOURCE_ASSETS);

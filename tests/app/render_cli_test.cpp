@@ -66,7 +66,7 @@ TEST(RenderCli, BadInputExitsWithTwo) {
   const std::string out = " --out " + temp("bad.exr").string();
   EXPECT_EQ(weft("render --scene no_such_scene" + out).code, 2);
   EXPECT_EQ(weft("render --scene swatch --fabric no_such_fabric" + out).code, 2);
-  EXPECT_EQ(weft("render --scene swatch --env no_such_map" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --map no_such_map" + out).code, 2);
   EXPECT_EQ(weft("render --scene swatch --lighting photons" + out).code, 2);
   EXPECT_EQ(weft("render --scene swatch --method photonmap" + out).code, 2);
   EXPECT_EQ(weft("render --scene swatch --width 0" + out).code, 2);
@@ -83,7 +83,7 @@ TEST(RenderCli, GltfSceneFabricFileAndMapByPath) {
   const fs::path fabric = temp("my_velvet.json"), map = temp("my_studio.exr"), exr = temp("gltf.exr");
   fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "fabrics/velvet.json", fabric, fs::copy_options::overwrite_existing);
   fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "envmaps/studio.exr", map, fs::copy_options::overwrite_existing);
-  const CliResult r = weft("render --scene " + gltf.string() + " --fabric " + fabric.string() + " --env " +
+  const CliResult r = weft("render --scene " + gltf.string() + " --fabric " + fabric.string() + " --map " +
                            map.string() + " --lighting map --map-width 16 --width 12 --height 9 --tangent-samples 4 "
                            "--no-convergence-check --out " + exr.string());
   ASSERT_EQ(r.code, 0) << r.out;

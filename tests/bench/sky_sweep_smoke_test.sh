@@ -17,10 +17,10 @@ expect_usage_error() {
   [ "$rc" = 2 ] || fail "$* exited $rc, expected 2"
 }
 expect_usage_error --sweep bogus
-expect_usage_error --sweep sky-smoke --envs sky:elev=95
-expect_usage_error --sweep sky-smoke --envs sky:elev=5,colour=3
+expect_usage_error --sweep sky-smoke --maps sky:elev=95
+expect_usage_error --sweep sky-smoke --maps sky:elev=5,colour=3
 grep -q "unknown sky parameter 'colour'" "$OUT/bad.log" || fail "message should name the unknown key"
-expect_usage_error --sweep sky-smoke --envs nosuchmap@90
+expect_usage_error --sweep sky-smoke --maps nosuchmap@90
 
 "$WEFT" bench --sweep sky-smoke --out "$OUT/s" >/dev/null || fail "sweep run"
 CSV="$OUT/s/low_sun.csv"

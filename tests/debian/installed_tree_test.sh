@@ -42,7 +42,7 @@ if [ "$rc" != 2 ] || ! grep -q "unknown fabric 'only_installed'" "$dir/env.err";
   fail "WEFT_ASSETS=$source_assets did not win (exit $rc): $(cat "$dir/env.err")"
 fi
 
-# The manual and the completion know every subcommand weft --help lists.
+# The manual and the completion know every subcommand weft --help lists, and a subcommand's own.
 commands=$("$root/bin/weft" --help | awk '/^Subcommands:/ { on = 1; next } on && NF { print $1 }')
 [ "$(wc -w <<<"$commands")" -ge 9 ] || fail "weft --help lists only: $commands"
 for c in $commands; do
@@ -51,9 +51,11 @@ done
 completions=$(PATH="$root/bin:$PATH" bash -c '
   source "$1"
   COMP_WORDS=(weft ""); COMP_CWORD=1; _weft; echo "${COMPREPLY[*]}"
-  COMP_WORDS=(weft run --st); COMP_CWORD=2; _weft; echo "${COMPREPLY[*]}"' _ "$root/share/bash-completion/completions/weft")
+  COMP_WORDS=(weft run --st); COMP_CWORD=2; _weft; echo "${COMPREPLY[*]}"
+  COMP_WORDS=(weft bundle ""); COMP_CWORD=2; _weft; echo "${COMPREPLY[*]}"' _ "$root/share/bash-completion/completions/weft")
 for c in $commands; do
   grep -qw -- "$c" <<<"$(head -n 1 <<<"$completions")" || fail "completion does not offer $c: $completions"
 done
-[ "$(tail -n 1 <<<"$completions")" = "--state-dir --stats-every" ] || fail "weft run --st completes to: $(tail -n 1 <<<"$completions")"
+[ "$(sed -n 2p <<<"$completions")" = "--state-dir --stats-every" ] || fail "weft run --st completes to: $(sed -n 2p <<<"$completions")"
+[ "$(sed -n 3p <<<"$completions")" = "info verify" ] || fail "weft bundle completes to: $(sed -n 3p <<<"$completions")"
 echo "installed tree under $prefix: assets from share/weft, $(wc -w <<<"$commands") subcommands in weft(1) and the completion"

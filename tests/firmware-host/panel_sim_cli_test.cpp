@@ -99,7 +99,7 @@ TEST(WeftPanelCommand, SimulatedPanelChangesTheFabric) {
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("--simulate"), std::string::npos);
   const auto script = write_script("weftpanel", "turn 0 +5\nturn 2 +8\nturn 3 +2\n");
-  const auto r = run_program(WEFT_BINARY, "panel --simulate " + script + " --speed 20 --fabric linen_plain");
+  const auto r = run_program(WEFT_BINARY, "panel --simulate " + script + " --sim-speed 20 --fabric linen_plain");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("weft panel: USB knob panel 1209:57ef connected"), std::string::npos) << r.out;
   std::string last_line, line;
@@ -133,7 +133,7 @@ TEST(WeftPanelCommand, StateSurvivesARestartAndCorruptionFallsBack) {
       if (!line.empty() && line[0] == '{') last = line;
     return nlohmann::json::parse(last);
   };
-  const auto first = run_program(WEFT_BINARY, "panel --simulate " + turn + " --speed 20 --state " + state);
+  const auto first = run_program(WEFT_BINARY, "panel --simulate " + turn + " --sim-speed 20 --state " + state);
   ASSERT_EQ(first.status, 0) << first.out;
   EXPECT_NE(first.out.find("no saved knob state"), std::string::npos) << first.out;
   // Brightness −8 steps halves linen's A.

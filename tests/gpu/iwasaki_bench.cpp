@@ -98,7 +98,7 @@ TEST(IwasakiBench, AccuracyAgainstReference) {
     const fs::path ref = refs / (c.scene + "_" + c.fabric + "_" + c.env + ".exr");
     if (!fs::exists(ref)) {
       const std::string cmd = std::string(WEFT_BINARY) + " render --method reference --lighting sg --scene " + c.scene +
-                              " --fabric " + c.fabric + " --env " + c.env + " --width 320 --height 240 --no-convergence-check --out " +
+                              " --fabric " + c.fabric + " --map " + c.env + " --width 320 --height 240 --no-convergence-check --out " +
                               ref.string() + " > /dev/null";
       std::printf("rendering the reference: %s\n", cmd.c_str());
       ASSERT_EQ(std::system(cmd.c_str()), 0);
@@ -171,7 +171,7 @@ TEST(IwasakiBench, SpeedPillowLinen) {
   // Boot to first frame: `weft run` from the bundle, headless 640×480.
   const fs::path state = refs_dir() / "run_state";
   const std::string cmd = std::string(WEFT_BINARY) + " run --bundle " + bundle_for(c).string() + " --state-dir " +
-                          state.string() + " --display headless --panel none --frames 1 --size 640 480 2>&1 | grep 'first frame'";
+                          state.string() + " --display headless --panel none --frames 1 --width 640 --height 480 2>&1 | grep 'first frame'";
   std::printf("boot: ");
   std::fflush(stdout);
   EXPECT_EQ(std::system(cmd.c_str()), 0);

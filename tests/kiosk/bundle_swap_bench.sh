@@ -13,7 +13,7 @@ DIR=$(mktemp -d); trap 'kill "$kiosk" 2>/dev/null || true; rm -rf "$DIR"' EXIT
 "$WEFT" bake --scene drape --fabric silk_shot --out "$DIR/b.weft" >"$DIR/bake_b.log" 2>&1
 echo "bundles: $(du -h "$DIR/a.weft" | cut -f1) pillow/linen_plain, $(du -h "$DIR/b.weft" | cut -f1) drape/silk_shot; ${W}x${H} headless"
 cp "$DIR/a.weft" "$DIR/showroom.weft"
-"$WEFT" run --bundle "$DIR/showroom.weft" --state-dir "$DIR/state" --display headless --size "$W" "$H" \
+"$WEFT" run --bundle "$DIR/showroom.weft" --state-dir "$DIR/state" --display headless --width "$W" --height "$H" \
   --turntable 0 --panel none --frames 0 --stats-every 0 >"$DIR/run.log" 2>&1 &
 kiosk=$!
 until grep -q "first frame after" "$DIR/run.log"; do kill -0 $kiosk || { cat "$DIR/run.log"; exit 1; }; sleep 0.1; done

@@ -84,6 +84,17 @@ TEST(KioskMethod, ASheerOrNoTablesDecideBeforeTheSearchedChoice) {
   EXPECT_THROW(kiosk_method("iwasaki", bare, "x.weft"), KioskConfigError);
 }
 
+TEST(KioskMethod, AMethodReadingTheMasksNeedsOneForEveryOccludedClothObject) {
+  const KioskBundle bare = occluded_without_masks("linen_plain");  // weft bake --no-masks
+  for (const char* m : {"iwasaki_mask", "iwasaki_vertex_mask", "iwasaki_mask_quadrature", "iwasaki_vertex_mask_quadrature"})
+    EXPECT_THROW(kiosk_method(m, bare, "x.weft"), KioskConfigError) << m;
+  // The broad lobes' quadrature draws without a mask (those lobes unoccluded), as does the SDF's rung.
+  EXPECT_EQ(kiosk_method("iwasaki_vertex_quadrature", bare, "x.weft").name, "iwasaki_vertex_quadrature");
+  EXPECT_EQ(kiosk_method("iwasaki_vertex", bare, "x.weft").name, "iwasaki_vertex");
+  KioskBundle open = cloth_bundle("linen_plain", true);  // nothing occluded: nothing to mask
+  EXPECT_EQ(kiosk_method("iwasaki_vertex_mask", open, "x.weft").name, "iwasaki_vertex_mask");
+}
+
 TEST(KioskMethod, SelectedMethodReadsTheSelectionSection) {
   EXPECT_EQ(selected_method(R"({"target_error": 0.05, "method": "iwasaki", "reached": true})"), "iwasaki");
   EXPECT_EQ(selected_method(R"({"target_error": 0.05})"), "");

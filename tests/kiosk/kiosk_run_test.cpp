@@ -104,8 +104,8 @@ protected:
           const std::string& panel = "none", const std::string& frames = "2", const std::string& probe = "none",
           Journal journal = Journal::unset) {
     std::vector<std::string> args{"run", "--bundle", bundle.string(), "--state-dir", state.string(), "--display",
-                                  "headless", "--frames", frames, "--turntable", "0", "--panel", panel, "--size", "96",
-                                  "72", "--screenshot", png.string(), "--probe", probe};
+                                  "headless", "--frames", frames, "--turntable", "0", "--panel", panel, "--width", "96",
+                                  "--height", "72", "--screenshot", png.string(), "--probe", probe};
     const Spawned s = spawn(args, {}, dir_ / "run.log", journal);
     const int rc = wait_exit(s);
     log = read_all(dir_ / "run.log");
@@ -232,7 +232,7 @@ TEST_F(KioskRun, ExposureBiasIsInStopsAndTheMultiplierIsTheSameBias) {
   const auto shot = [&](const std::vector<std::string>& extra, const std::string& name, std::string& log) {
     std::vector<std::string> args{"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / ("st_" + name)).string(),
                                   "--display", "headless", "--frames", "2", "--turntable", "0", "--panel", "none",
-                                  "--size", "96", "72", "--screenshot", (dir_ / (name + ".png")).string()};
+                                  "--width", "96", "--height", "72", "--screenshot", (dir_ / (name + ".png")).string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const int rc = wait_exit(spawn(args, {}, dir_ / (name + ".log")));
     log = read_all(dir_ / (name + ".log"));
@@ -302,8 +302,8 @@ TEST_F(KioskRun, NotifiesReadyAfterTheFirstFrameAndPingsTheWatchdogUntilTheLoopH
   constexpr int kWatchdogMs = 600;
   // The loop hangs after 90 ticks (~1.5 s at 60 Hz); runs otherwise forever.
   const Spawned s = spawn({"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / "wd_state").string(),
-                           "--display", "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--size",
-                           "96", "72"},
+                           "--display", "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--width",
+                           "96", "--height", "72"},
                           {"NOTIFY_SOCKET=" + sd.path.string(), "WATCHDOG_USEC=" + std::to_string(kWatchdogMs * 1000),
                            "WEFT_FAULT_HANG_AFTER_TICKS=90"},
                           dir_ / "wd.log");
@@ -348,7 +348,7 @@ TEST_F(KioskRun, NotifiesReadyAfterTheFirstFrameAndPingsTheWatchdogUntilTheLoopH
 TEST_F(KioskRun, SigtermStopsCleanly) {
   NotifyListener sd(dir_ / "notify2.sock");
   const Spawned s = spawn({"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / "term_state").string(),
-                           "--display", "headless", "--frames", "0", "--panel", "none", "--size", "96", "72"},
+                           "--display", "headless", "--frames", "0", "--panel", "none", "--width", "96", "--height", "72"},
                           {"NOTIFY_SOCKET=" + sd.path.string()}, dir_ / "term.log");
   std::string m;
   while ((m = sd.next(std::chrono::seconds(60))).find("READY=1") == std::string::npos)
@@ -371,7 +371,7 @@ protected:
     bundle_ = folder_ / "showroom.weft";
     fs::copy_file(dir_ / "good.weft", bundle_);
     kiosk_ = spawn({"run", "--bundle", bundle_.string(), "--state-dir", (folder_ / "state").string(), "--display",
-                    "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--size", "96", "72",
+                    "headless", "--frames", "0", "--turntable", "0", "--panel", "none", "--width", "96", "--height", "72",
                     "--stats-every", "0", "--screenshot", (folder_ / "last.png").string()},
                    {}, folder_ / "run.log", Journal::matches_stderr);
     wait_for("first frame after", 1);

@@ -17,7 +17,7 @@ while [ $i -lt $((SECONDS_TOTAL / 4 + 1)) ]; do
   i=$((i + 1))
 done
 # SIGTERM after SECONDS: the clean-exit path prints the final line (report->photon, RSS).
-timeout -s TERM "$SECONDS_TOTAL" "$WEFT" run --bundle "$DIR/pillow.weft" --state-dir "$DIR/state" --display headless --size 96 72 --turntable 3 \
+timeout -s TERM "$SECONDS_TOTAL" "$WEFT" run --bundle "$DIR/pillow.weft" --state-dir "$DIR/state" --display headless --width 96 --height 72 --turntable 3 \
   --panel "sim:$DIR/soak.knobs" --frames 0 --stats-every "$STATS" \
   --probe "mock:$ASSETS/envmaps/studio.exr,$ASSETS/envmaps/interior.exr" --probe-switch 5 2>&1 |
   grep --line-buffered -E "stats:|stopping|first frame" || true

@@ -133,7 +133,7 @@ cat "$work/turn1.knobs" "$work/turn2.knobs" >"$work/turn12.knobs"
 reference() {  # NAME [KNOB_SCRIPT]
   local panel=none
   [ -n "${2:-}" ] && panel="sim:$2"
-  "$weft" run --bundle "$bundle" --state-dir "$work/ref/$1" --display headless --size "$MODE_W" "$MODE_H" \
+  "$weft" run --bundle "$bundle" --state-dir "$work/ref/$1" --display headless --width "$MODE_W" --height "$MODE_H" \
     --turntable 0 --panel "$panel" --sim-speed 10 --frames 200 --stats-every 0 \
     --screenshot "$work/ref/$1.png" >"$work/ref/$1.log" 2>&1 || fail "reference render $1 failed: $(tail -2 "$work/ref/$1.log")"
 }

@@ -386,7 +386,7 @@ TEST(FitCommand, JsonOutputSavedSetPreviewAndErrors) {
   const fs::path out = temp_path("fit.json"), preview = temp_path("preview.png");
   int code = 0;
   const std::string text =
-      run_weft("fit " + map + " --count 6 --json --out " + out.string() + " --preview " + preview.string(), &code);
+      run_weft("fit " + map + " --sg-count 6 --json --out " + out.string() + " --preview " + preview.string(), &code);
   ASSERT_EQ(code, 0) << text;
   const std::string last = text.substr(text.rfind('{', text.find("\"sgs\"")));
   const auto j = nlohmann::json::parse(last);
@@ -404,7 +404,7 @@ TEST(FitCommand, JsonOutputSavedSetPreviewAndErrors) {
   EXPECT_EQ(code, 2);  // the bundled studio map has 3 negative values
   run_weft("fit " + temp_path("missing.exr").string(), &code);
   EXPECT_EQ(code, 2);
-  run_weft("fit " + map + " --count 0", &code);
+  run_weft("fit " + map + " --sg-count 0", &code);
   EXPECT_EQ(code, 2);
   const std::string help = run_weft("fit --help", &code);
   EXPECT_EQ(code, 0);
