@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
+
+#include <unistd.h>
 
 #include "bundle/bundle_fallback.h"
 #include "gl/gl_error.h"
@@ -22,7 +25,6 @@
 #include "kiosk/knob_appearance.h"
 #include "kiosk/knob_presets.h"
 #include "kiosk/turntable.h"
-#include "scene/weave_scale.h"
 #include "methods/registry.h"
 
 namespace weft {
@@ -32,15 +34,6 @@ constexpr auto kTickPeriod = std::chrono::microseconds(16667);
 // Time constant of the exposure easing in after a lighting change (a probe update, the
 // environment knob): quick enough to follow the room, slow enough not to flicker.
 constexpr double kExposureAdaptSeconds = 0.7;
-
-// The scene's close-up for the zoom knob (its closeup_camera, or one where a repeat spans 24 pixels).
-Camera closeup_of(const Scene& scene, const std::vector<Fabric>& cloth, int height) {
-  std::map<std::string, Fabric> fabrics;
-  size_t c = 0;
-  for (const auto& o : scene.objects)
-    if (o.is_cloth() && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
-  return closeup_camera(scene, fabrics, height);
-}
 
 }  // namespace
 
@@ -75,6 +68,7 @@ void Kiosk::check_config() {
   std::error_code ec;
   std::filesystem::create_directories(c.state_dir, ec);
   state_dir_ok_ = !ec;
+  if (!c.status_file.empty()) status_ = std::make_unique<StatusFile>(c.status_file);
   if (ec)
     kiosk_log_warning("cannot create state directory " + c.state_dir + ": " + ec.message() + " (no last-good copy, no knob state)");
 }
@@ -104,6 +98,7 @@ void Kiosk::load_bundle() {
   } catch (const bundle::BundleError& e) {
     kiosk_log_error(std::string("no usable bundle: ") + e.what());
     notifier_.status("no usable bundle (see journal)");
+    write_status("no usable bundle");
     throw;
   }
   if (!read) read = read_kiosk_bundle(opened->bundle, config_.method);
@@ -127,6 +122,7 @@ bool Kiosk::open_display() {
   } catch (const NoDisplayError& e) {
     kiosk_log_error(std::string("no display: ") + e.what());
     notifier_.status(std::string("no display: ") + e.what());
+    write_status("no display");
     return false;
   }
   width_ = display_->width();
@@ -154,13 +150,7 @@ void Kiosk::start_probe() {
                                                [](LogPriority p, const std::string& s) { log_line("weft run", p, "light probe: " + s); });
     kiosk_log_info("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
   }
-  lighting_ = std::make_unique<LatestRequestWorker<LightingRequest, LightingResult>>([this](const LightingRequest& q) {
-    const auto t0 = Clock::now();
-    LightingResult r{q.renderer, q.renderer->prepare_lighting(q.sgs)};
-    last_prepare_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    ++lighting_prepared_;
-    return r;
-  });
+  lighting_ = std::make_unique<KioskLighting>();
 }
 
 void Kiosk::show_first_frame() {
@@ -185,6 +175,7 @@ void Kiosk::show_first_frame() {
                   (shown_.is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);
   if (notifier_.watchdog_enabled())
     kiosk_log_info("watchdog every " + std::to_string(notifier_.watchdog_interval().count() / 1000) + " ms");
+  write_status("running");
 }
 
 void Kiosk::arm_fault_injection() {
@@ -218,7 +209,9 @@ void Kiosk::tick() {
     if (knobs_changed && report_ns != 0)
       latency_ms_.push(double(Clock::now().time_since_epoch().count() - report_ns) / 1e6);
   }
+  knob_changes_ += knobs_changed;
   notifier_.tick();
+  if (status_) status_->update(status("running"), tick_start);
   if (config_.stats_every > 0 && tick_start - last_stats_ >= std::chrono::duration<double>(config_.stats_every))
     log_stats(tick_start);
   wait_for_next_tick(tick_start, redraw);
@@ -259,6 +252,7 @@ void Kiosk::shut_down() {
                 ticks_, drawn_, frame_ms_.median(1), latency_ms_.size(), latency_ms_.median(), latency_ms_.max(),
                 rss_start_kib_, resident_set_kib());
   kiosk_log_info(line);
+  write_status("stopping");
   notifier_.stopping("stopping");
 }
 
@@ -275,22 +269,16 @@ void Kiosk::poll_light() {
 }
 
 bool Kiosk::take_prepared_lighting() {
-  bool uploaded = false;
   try {
-    if (auto prepared = lighting_->take()) {
-      // Requests run in order: once one made for the renderer shown is done, none for a retired one runs.
-      if (prepared->renderer == renderer_.get()) {
-        renderer_->set_lighting(prepared->lighting);
-        retired_.clear();
-        exposure_.request();
-        uploaded = true;
-      }
-    }
+    auto prepared = lighting_->take(renderer_.get());
+    if (!prepared) return false;
+    renderer_->set_lighting(*prepared);
+    exposure_.request();
+    return true;
   } catch (const std::exception& e) {
     kiosk_log_warning(std::string("lighting: ") + e.what() + "; keeping the light shown");
+    return false;
   }
-  if (!retired_.empty() && lighting_->idle()) retired_.clear();
-  return uploaded;
 }
 
 bool Kiosk::poll_bundle() {
@@ -308,7 +296,7 @@ bool Kiosk::poll_bundle() {
 
 void Kiosk::show_swapped(BundleSwap::Ready r) {
   const std::string knobs_differ = knob_reset_reason(preset_looks(knobs_->presets()), knobs_->start_preset(), r.bundle.scene);
-  retired_.push_back(std::move(renderer_));
+  lighting_->retire(std::move(renderer_));
   renderer_ = std::move(r.renderer);
   cloth_fabrics_ = std::move(r.cloth_fabrics);
   method_ = r.method;
@@ -356,7 +344,7 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
 void Kiosk::relight(const SgLighting& sgs) {
   ++light_version_;
   if (first_frame_shown_)
-    lighting_->request({renderer_.get(), sgs});
+    lighting_->request(*renderer_, sgs);
   else
     renderer_->set_lighting(sgs);
 }
@@ -387,11 +375,40 @@ void Kiosk::log_stats(Clock::time_point now) {
                 "stats: %ld ticks, %ld frames drawn, median %.2f ms/frame over the last %zu, RSS %ld KiB, "
                 "%llu light-probe updates, lighting prepared off-thread %ld times (last %.0f ms)",
                 ticks_, drawn_, since_stats_ms_.median(), since_stats_ms_.size(), resident_set_kib(),
-                static_cast<unsigned long long>(probe_ ? probe_->updates() : 0), lighting_prepared_.load(),
-                last_prepare_ms_.load());
+                static_cast<unsigned long long>(probe_ ? probe_->updates() : 0), lighting_->prepared(),
+                lighting_->last_ms());
   kiosk_log_info(line);
   last_stats_ = now;
   since_stats_ms_.clear();
+}
+
+KioskStatus Kiosk::status(const char* state) const {
+  KioskStatus s;
+  s.state = state;
+  s.written = std::time(nullptr);
+  s.uptime_s = std::chrono::duration<double>(Clock::now() - boot_).count();
+  s.pid = long(getpid());
+  s.bundle = shown_.file.empty() ? config_.bundle : shown_.file.string();  // before it is read: the one asked for
+  s.last_good = shown_.is_last_good;
+  if (scene_) s.scene = scene_->scene.name;
+  if (method_) s.method = method_->name;
+  s.display = display_ ? display_->name() : "none";
+  s.ticks = ticks_;
+  s.drawn = drawn_;
+  s.last_frame_ms = frame_ms_.last();
+  s.probe = !probe_ ? "off" : probe_->updates() > 0 ? "fitted" : "waiting";
+  s.probe_updates = probe_ ? probe_->updates() : 0;
+  if (knobs_) s.panel = knobs_->sources();
+  s.knob_changes = knob_changes_;
+  if (swap_ && swap_->last_outcome().when != std::chrono::system_clock::time_point{}) {
+    s.content_update_at = std::chrono::system_clock::to_time_t(swap_->last_outcome().when);
+    s.content_update = swap_->last_outcome().result;
+  }
+  return s;
+}
+
+void Kiosk::write_status(const char* state) {
+  if (status_) status_->write(status(state), Clock::now());
 }
 
 }  // namespace weft

@@ -20,6 +20,9 @@
 //                     changed, WATCHDOG=1, a stats line every stats_every seconds
 //   shut_down         sources stopped, knob state saved, screenshot, the exit line, STOPPING=1
 //
+// The status file, when asked for (--status-file), is written after the first frame, every few
+// seconds and on news from the loop, and at shutdown or when the kiosk cannot start.
+//
 // One tick per display refresh: vsync on KMS, a 60 Hz timer headless. Lighting changes after
 // the first frame are prepared on a worker thread; the frame keeps its light until they are done.
 //
@@ -49,7 +52,8 @@
 #include "kiosk/kiosk_config.h"
 #include "kiosk/kiosk_display.h"
 #include "kiosk/kiosk_knobs.h"
-#include "kiosk/latest_request_worker.h"
+#include "kiosk/kiosk_lighting.h"
+#include "kiosk/kiosk_status_file.h"
 #include "kiosk/service_notifier.h"
 #include "panel/appearance_state.h"
 
@@ -102,6 +106,9 @@ private:
   void meter_as_baked();
   void show_swapped(BundleSwap::Ready ready);  // a new bundle in place of the one shown
   void log_stats(Clock::time_point now);
+  // The status file (kiosk/kiosk_status_file.h): `state` now, or (update) when due or news.
+  KioskStatus status(const char* state) const;
+  void write_status(const char* state);
 
   KioskConfig config_;
   ServiceNotifier notifier_;
@@ -128,26 +135,13 @@ private:
   // The renderer and what it draws into.
   std::vector<Fabric> cloth_fabrics_;  // the fabric of each cloth object
   std::unique_ptr<gpu::SceneRenderer> renderer_;
-  // Renderers of bundles swapped out, kept until no lighting request made for them is running.
-  std::vector<std::unique_ptr<gpu::SceneRenderer>> retired_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
 
   // The light: the bundle's SGs or the probe's latest fit, turned by the environment knob.
   SgLighting room_light_;
   std::unique_ptr<KioskLightProbe> probe_;
   float light_rotation_ = -1;  // degrees; < 0 until the knobs first set it
-  std::atomic<long> lighting_prepared_{0};
-  std::atomic<double> last_prepare_ms_{0};
-  // Requests name the renderer they are for: one that comes back for a renderer swapped out is dropped.
-  struct LightingRequest {
-    const gpu::SceneRenderer* renderer;
-    SgLighting sgs;
-  };
-  struct LightingResult {
-    const gpu::SceneRenderer* renderer;
-    gpu::SceneRenderer::PreparedLighting lighting;
-  };
-  std::unique_ptr<LatestRequestWorker<LightingRequest, LightingResult>> lighting_;
+  std::unique_ptr<KioskLighting> lighting_;  // prepares lighting changes off this thread
   std::uint64_t light_version_ = 0;  // counts relight() calls
   bool first_frame_shown_ = false;
 
@@ -155,6 +149,7 @@ private:
   ExposureMeter exposure_;
   // Content updates; null when the bundle's directory cannot be watched.
   std::unique_ptr<BundleSwap> swap_;
+  std::unique_ptr<StatusFile> status_;  // null: none asked for
 
   // The loop.
   long hang_after_ = -1;
@@ -164,7 +159,7 @@ private:
   Camera closeup_;
   double zoom_target_ = 0, zoom_shown_ = 0, zoom_drawn_ = 0;
   Clock::time_point zoom_step_;
-  long ticks_ = 0, drawn_ = 0;
+  long ticks_ = 0, drawn_ = 0, knob_changes_ = 0;
   long rss_start_kib_ = 0;
   RecentSamples frame_ms_, since_stats_ms_, latency_ms_;
 };

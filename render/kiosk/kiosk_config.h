@@ -32,6 +32,7 @@ struct KioskConfig {
   double stats_every = 300;               // seconds between stats lines; 0: none
   std::string probe = "none";             // none, camera[:ID] or mock:MAP.exr[,MAP.exr...]
   double probe_switch_s = 0;              // mock probe with several maps: seconds between switches
+  std::string status_file;                // the health file (kiosk/kiosk_status_file.h); empty: none
 };
 
 // Throws KioskConfigError (kiosk/kiosk_config_error.h) naming the flag of the first bad value.

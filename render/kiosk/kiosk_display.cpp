@@ -34,6 +34,8 @@ KioskDisplay::~KioskDisplay() = default;
 
 std::string KioskDisplay::description() const { return kms_ ? kms_->description() : "headless"; }
 
+std::string KioskDisplay::name() const { return kms_ ? "drm:" + kms_->connector() : "headless"; }
+
 void KioskDisplay::present(const gpu::OffscreenTarget& target, double exposure) {
   if (kms_) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -33,6 +33,7 @@ public:
   int height() const { return height_; }
   bool vsynced() const { return kms_ != nullptr; }  // present() waits for the display's refresh
   std::string description() const;                  // "card0 Virtual-1 1024x768@60", or "headless"
+  std::string name() const;                         // "drm:Virtual-1", or "headless"
 
   // The frame drawn into `target`, shown at `exposure` (KMS), or finished (headless).
   void present(const gpu::OffscreenTarget& target, double exposure);

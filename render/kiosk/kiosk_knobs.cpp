@@ -6,6 +6,7 @@
 #include "kiosk/knob_appearance.h"
 #include "kiosk/knob_presets.h"
 #include "kiosk/knob_sources.h"
+#include "panel/hid_knob_source.h"
 #include "panel/knob_state_file.h"
 #include "panel/panel_config.h"
 
@@ -49,6 +50,15 @@ void KioskKnobs::make_controller(const SceneBundle& sb) {
   ko.state_file = state_file_;
   ko.default_preset = start_preset_;
   controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_), mapping_), ko, stderr_sink("weft run"));
+}
+
+std::vector<std::string> KioskKnobs::sources() const {
+  std::vector<std::string> out;
+  for (const auto& s : sources_) {
+    const auto* hid = dynamic_cast<const input::HidKnobSource*>(s.get());
+    out.push_back(s->describe() + (hid ? (hid->connected() ? ": connected" : ": not connected") : ""));
+  }
+  return out;
 }
 
 void KioskKnobs::listen() {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "core/fabric.h"
@@ -35,6 +36,7 @@ public:
   void repoll();  // the next poll() reports the state, changed or not
   const input::AppearanceState& state() const { return state_; }
 
+  std::vector<std::string> sources() const;  // each knob source, described (a USB panel: whether connected)
   const std::vector<Fabric>& presets() const { return presets_; }
   std::uint32_t start_preset() const { return start_preset_; }  // where sb's knobs start
   // The newest HID report's arrival (steady_clock ns since its epoch); 0: none yet.

@@ -55,5 +55,5 @@ completions=$(PATH="$root/bin:$PATH" bash -c '
 for c in $commands; do
   grep -qw -- "$c" <<<"$(head -n 1 <<<"$completions")" || fail "completion does not offer $c: $completions"
 done
-[ "$(tail -n 1 <<<"$completions")" = "--state-dir --stats-every" ] || fail "weft run --st completes to: $(tail -n 1 <<<"$completions")"
+[ "$(tail -n 1 <<<"$completions")" = "--state-dir --stats-every --status-file" ] || fail "weft run --st completes to: $(tail -n 1 <<<"$completions")"
 echo "installed tree under $prefix: assets from share/weft, $(wc -w <<<"$commands") subcommands in weft(1) and the completion"
