@@ -29,12 +29,18 @@ The kiosk service's settings (bundle, panel configuration, light probe, exposure
 .I /var/lib/weft
 The kiosk's state: the bundle it shows, its last good copy, the knob positions.
 .TP
+.I /run/weft/status.json
+The running kiosk's health (\fBweft status\fR), rewritten every 2 seconds.
+.TP
 .I /usr/share/weft
 Fabric presets, scenes and environment maps; \fBWEFT_ASSETS\fR names another folder.
 [ENVIRONMENT]
 .TP
 .B WEFT_ASSETS
 Folder of fabrics/, scenes/ and envmaps/ used instead of the installed ones.
+.TP
+.B RUNTIME_DIRECTORY
+Set by systemd from the unit's RuntimeDirectory; \fBweft run\fR writes its status file there.
 .TP
 .B JOURNAL_STREAM
 Set by systemd when standard error is the journal; log lines then carry their priority.

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "files/atomic_file.h"
+#include "hashing/fnv1a_hash.h"
 
 namespace weft::input {
 namespace {
@@ -15,17 +16,6 @@ namespace {
 constexpr int kVersion = 1;
 constexpr int kAbsurd = 100000;  // no knob is ever turned this far
 const char* kSelectionNames[] = {"both", "warp", "weft"};
-
-std::string fnv1a64(const std::string& s) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 0x100000001b3ull;
-  }
-  char out[17];
-  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-  return out;
-}
 
 int steps(const nlohmann::json& j, const char* key) {
   if (!j.contains(key) || !j[key].is_number_integer())
@@ -56,7 +46,7 @@ std::string knob_state_text(const KnobPositions& p, const std::vector<PresetLook
                             {"brightness_steps", p.brightness_steps[t]},
                             {"gloss_steps", p.gloss_steps[t]}});
   j["env_steps"] = p.env_steps;
-  j["checksum"] = fnv1a64(j.dump());
+  j["checksum"] = fnv1a64_hex(j.dump());
   return j.dump(2) + "\n";
 }
 
@@ -73,7 +63,7 @@ KnobPositions parse_knob_state(const std::string& text, const std::vector<Preset
   if (!j.contains("checksum") || !j["checksum"].is_string()) throw KnobStateError("checksum missing");
   const std::string stored = j["checksum"].get<std::string>();
   j.erase("checksum");
-  if (fnv1a64(j.dump()) != stored) throw KnobStateError("checksum mismatch (file damaged)");
+  if (fnv1a64_hex(j.dump()) != stored) throw KnobStateError("checksum mismatch (file damaged)");
 
   KnobPositions p;
   const std::string preset = text_field(j, "preset");

@@ -19,6 +19,7 @@ CommandAction add_bake_tables_command(CLI::App& app);
 CommandAction add_probe_command(CLI::App& app);
 CommandAction add_bake_command(CLI::App& app);
 CommandAction add_run_command(CLI::App& app);
+CommandAction add_status_command(CLI::App& app);
 CommandAction add_bench_command(CLI::App& app);
 CommandAction add_bundle_command(CLI::App& app);
 

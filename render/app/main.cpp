@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   cli.add(weft::add_probe_command);
   cli.list("bake", offline("bake"));
   cli.add(weft::add_run_command);
+  cli.add(weft::add_status_command);
   cli.list("bench", offline("bench"));
   cli.add(weft::add_bundle_command);
   return cli.run(argc, argv);

@@ -2,12 +2,14 @@
 // This file turns the flags into a KioskConfig and runs the kiosk until SIGTERM or SIGINT.
 #include <atomic>
 #include <csignal>
+#include <cstdlib>
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/option_spelling.h"
 #include "kiosk/kiosk.h"
 #include "kiosk/kiosk_config_error.h"
+#include "kiosk/kiosk_status_file.h"
 
 namespace weft {
 namespace {
@@ -60,6 +62,10 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--probe", a->probe, "Light probe: none, camera[:ID] (libcamera) or mock:MAP.exr[,MAP.exr...]")
       ->capture_default_str();
   sub->add_option("--probe-switch", a->probe_switch_s, "Mock probe with several maps: seconds between switching them");
+  // Under systemd the RuntimeDirectory holds it (weft status reads it there); elsewhere none unless asked for.
+  if (std::getenv("RUNTIME_DIRECTORY")) a->status_file = default_status_path().string();
+  sub->add_option("--status-file", a->status_file, "Health file for `weft status` and a fleet (JSON, rewritten every 2 s); empty: none")
+      ->capture_default_str();
   return [a, panel] {
     KioskConfig config = *a;
     if (panel->count() == 0) config.panel.clear();  // the panel config's sources decide

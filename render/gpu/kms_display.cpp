@@ -165,6 +165,8 @@ int KmsDisplay::width() const { return s_->mode.hdisplay; }
 int KmsDisplay::height() const { return s_->mode.vdisplay; }
 EglContext& KmsDisplay::context() { return *s_->egl; }
 
+std::string KmsDisplay::connector() const { return s_->connector_name; }
+
 std::string KmsDisplay::description() const {
   return s_->card + " " + s_->connector_name + " " + std::to_string(width()) + "x" + std::to_string(height()) + "@" +
          std::to_string(s_->mode.vrefresh);

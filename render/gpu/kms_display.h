@@ -21,6 +21,7 @@ public:
   int width() const;
   int height() const;
   std::string description() const;  // "card0 Virtual-1 1024x768@60"
+  std::string connector() const;    // "Virtual-1"
   EglContext& context();
   // Swaps the EGL surface and page-flips to it, waiting for the flip (vsync).
   void present();

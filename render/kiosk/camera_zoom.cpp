@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
+
+#include "scene/weave_scale.h"
 
 namespace weft {
 
@@ -26,6 +30,14 @@ Camera dolly(const Camera& from, const Camera& to, double t) {
 double ease_zoom(double shown, double target, double dt, double tau) {
   const double next = target + (shown - target) * std::exp(-std::max(dt, 0.0) / tau);
   return std::abs(next - target) < 1e-3 ? target : next;
+}
+
+Camera closeup_of(const Scene& scene, const std::vector<Fabric>& cloth, int height) {
+  std::map<std::string, Fabric> fabrics;
+  size_t c = 0;
+  for (const auto& o : scene.objects)
+    if (o.is_cloth() && c < cloth.size()) fabrics.emplace(o.fabric, cloth[c++]);
+  return closeup_camera(scene, fabrics, height);
 }
 
 }  // namespace weft

@@ -16,6 +16,7 @@ public:
   // The median of the samples kept, leaving out the oldest `skip`; 0 when none are left.
   double median(size_t skip = 0) const;
   double max() const;  // 0 when empty
+  double last() const { return values_.empty() ? 0.0 : values_.back(); }  // the newest; 0 when empty
 
 private:
   std::vector<double> values_;

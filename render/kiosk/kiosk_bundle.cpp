@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/input_hash.h"
+#include "hashing/fnv1a_hash.h"
 #include "kiosk/kiosk_config_error.h"
 #include "methods/registry.h"
 #include "scene/scene.h"

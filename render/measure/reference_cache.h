@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/input_hash.h"
+#include "hashing/fnv1a_hash.h"
 #include "image/image.h"
 #include "reference/scene_render.h"
 #include "reference/tangent_convergence.h"

@@ -56,6 +56,6 @@ completions=$(PATH="$root/bin:$PATH" bash -c '
 for c in $commands; do
   grep -qw -- "$c" <<<"$(head -n 1 <<<"$completions")" || fail "completion does not offer $c: $completions"
 done
-[ "$(sed -n 2p <<<"$completions")" = "--state-dir --stats-every" ] || fail "weft run --st completes to: $(sed -n 2p <<<"$completions")"
+[ "$(sed -n 2p <<<"$completions")" = "--state-dir --stats-every --status-file" ] || fail "weft run --st completes to: $(sed -n 2p <<<"$completions")"
 [ "$(sed -n 3p <<<"$completions")" = "info verify" ] || fail "weft bundle completes to: $(sed -n 3p <<<"$completions")"
 echo "installed tree under $prefix: assets from share/weft, $(wc -w <<<"$commands") subcommands in weft(1) and the completion"

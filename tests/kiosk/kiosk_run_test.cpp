@@ -5,8 +5,10 @@
 // with stderr as the journal (JOURNAL_STREAM), lines carry sd-daemon priority prefixes;
 // content updates while the kiosk runs: a bundle renamed into place is shown (the same picture
 // as a fresh start on it), corrupt, truncated and half-copied ones are refused with a journal
-// error and the picture stays, a half copy completed later is shown.
+// error and the picture stays, a half copy completed later is shown; the status file.
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <csignal>
@@ -343,6 +345,42 @@ TEST_F(KioskRun, NotifiesReadyAfterTheFirstFrameAndPingsTheWatchdogUntilTheLoopH
   EXPECT_NE(read_all(s.log).find("FAULT INJECTION"), std::string::npos);
   kill(s.pid, SIGKILL);
   wait_exit(s);
+}
+
+TEST_F(KioskRun, WritesAStatusFileAFleetCanRead) {
+  // --status-file: the last status (written at shutdown) names the bundle, scene, method and
+  // display, and counts every tick; without the flag the service's RuntimeDirectory holds it.
+  const fs::path status = dir_ / "status" / "status.json";
+  fs::create_directories(status.parent_path());
+  const auto run_with = [&](const std::vector<std::string>& extra, const std::vector<std::string>& env) {
+    std::vector<std::string> args{"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", (dir_ / "st_status").string(),
+                                  "--display", "headless", "--frames", "30", "--turntable", "0", "--panel", "none",
+                                  "--size", "96", "72"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return wait_exit(spawn(args, env, dir_ / "status.log"));
+  };
+  ASSERT_EQ(run_with({"--status-file", status.string()}, {}), 0) << read_all(dir_ / "status.log");
+  const auto j = nlohmann::json::parse(read_all(status));
+  EXPECT_EQ(j.at("format"), "weft-status");
+  EXPECT_EQ(j.at("state"), "stopping");
+  EXPECT_EQ(j.at("bundle").at("path"), (dir_ / "good.weft").string());
+  EXPECT_EQ(j.at("bundle").at("last_good"), false);
+  EXPECT_EQ(j.at("bundle").at("scene"), "pillow");
+  EXPECT_EQ(j.at("method"), "sgpoint");
+  EXPECT_EQ(j.at("display"), "headless");
+  EXPECT_EQ(j.at("frames").at("ticks"), 30);
+  EXPECT_GE(j.at("frames").at("drawn").get<long>(), 1);
+  EXPECT_LE(j.at("frames").at("drawn").get<long>(), 31);
+  EXPECT_EQ(j.at("probe").at("state"), "off");
+  EXPECT_TRUE(j.at("content_update").at("at").is_null());
+  struct stat st {};
+  ASSERT_EQ(stat(status.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0644u);  // operators read it, whatever the service's umask
+
+  const fs::path runtime = dir_ / "runtime";
+  fs::create_directories(runtime);
+  ASSERT_EQ(run_with({}, {"RUNTIME_DIRECTORY=" + runtime.string()}), 0) << read_all(dir_ / "status.log");
+  EXPECT_EQ(nlohmann::json::parse(read_all(runtime / "status.json")).at("frames").at("ticks"), 30);
 }
 
 TEST_F(KioskRun, SigtermStopsCleanly) {

@@ -1,21 +1,28 @@
-#include "core/input_hash.h"
+#include "hashing/fnv1a_hash.h"
 
 #include <cstdio>
 
 namespace weft {
 
-void InputHash::mix(const void* p, std::size_t n) {
-  const auto* b = static_cast<const unsigned char*>(p);
+std::uint64_t fnv1a64(const void* bytes, std::size_t n, std::uint64_t h) {
+  const auto* b = static_cast<const unsigned char*>(bytes);
   for (std::size_t i = 0; i < n; ++i) {
-    h_ ^= b[i];
-    h_ *= 0x100000001b3ull;  // the FNV-1a 64 prime (1099511628211)
+    h ^= b[i];
+    h *= kFnv1a64Prime;
   }
+  return h;
+}
+
+std::string hex64(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
 }
 
 InputHash& InputHash::add(std::string_view bytes) {
   const std::uint64_t n = bytes.size();
-  mix(&n, sizeof n);
-  mix(bytes.data(), bytes.size());
+  h_ = fnv1a64(&n, sizeof n, h_);
+  h_ = fnv1a64(bytes.data(), bytes.size(), h_);
   return *this;
 }
 
@@ -27,12 +34,6 @@ InputHash& InputHash::add_number(double x) {
 
 InputHash& InputHash::add_integer(std::uint64_t x) {
   return add(std::string_view(reinterpret_cast<const char*>(&x), sizeof x));
-}
-
-std::string InputHash::hex() const {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-  return buf;
 }
 
 }  // namespace weft

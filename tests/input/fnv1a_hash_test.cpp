@@ -1,11 +1,19 @@
-// InputHash against FNV-1a 64 of the length-prefixed bytes (the length as 8 little-endian
-// bytes, then the bytes), the expected values computed independently (Python, from the FNV
-// reference's offset basis and prime; its published vector: FNV-1a 64("a") = af63dc4c8601ec8c).
+// FNV-1a 64 against independent values: the raw hash against the FNV reference's published
+// vectors (FNV-1a 64 of "" = cbf29ce484222325, "a" = af63dc4c8601ec8c, "foobar" = 85944171f73967e8);
+// InputHash against FNV-1a 64 of the length-prefixed bytes (the length as 8 little-endian bytes,
+// then the bytes), computed in Python from the reference's offset basis and prime.
 #include <gtest/gtest.h>
 
-#include "core/input_hash.h"
+#include "hashing/fnv1a_hash.h"
 
+using weft::fnv1a64_hex;
 using weft::InputHash;
+
+TEST(Fnv1a64, PublishedVectors) {
+  EXPECT_EQ(fnv1a64_hex(""), "cbf29ce484222325");
+  EXPECT_EQ(fnv1a64_hex("a"), "af63dc4c8601ec8c");
+  EXPECT_EQ(fnv1a64_hex("foobar"), "85944171f73967e8");
+}
 
 TEST(InputHash, NothingAddedIsTheOffsetBasis) {
   EXPECT_EQ(InputHash().hex(), "cbf29ce484222325");

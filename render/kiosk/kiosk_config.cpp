@@ -1,0 +1,30 @@
+#include "kiosk/kiosk_config.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kiosk/kiosk_config_error.h"
+#include "methods/registry.h"
+
+namespace weft {
+
+void check_kiosk_config(const KioskConfig& c) {
+  if (c.display != "auto" && c.display != "kms" && c.display != "headless")
+    throw KioskConfigError("--display: expected auto, kms or headless, got '" + c.display + "'");
+  if (c.size.size() != 2 || c.size[0] < 8 || c.size[1] < 8 || c.size[0] > 8192 || c.size[1] > 8192)
+    throw KioskConfigError("--size: expected WIDTH HEIGHT in [8, 8192]");
+  if (!std::isfinite(c.exposure_bias) || std::abs(c.exposure_bias) > 20)
+    throw KioskConfigError("--exposure-bias: EV in [-20, 20]");
+  if (!(c.exposure > 0.0) || !std::isfinite(c.exposure))
+    throw KioskConfigError("--exposure: a multiplier > 0 on the metered exposure (1: none; --exposure-bias takes EV)");
+  if (!std::isfinite(c.turntable) || std::abs(c.turntable) > 360)
+    throw KioskConfigError("--turntable: degrees per second in [-360, 360]");
+  if (!(c.zoom >= 0.0 && c.zoom <= 1.0)) throw KioskConfigError("--zoom: the way to the close-up, in [0, 1]");
+  if (c.method != "auto") try {
+      methods::method(c.method);
+    } catch (const std::invalid_argument& e) {
+      throw KioskConfigError(std::string("--method: ") + e.what() + " or auto");
+    }
+}
+
+}  // namespace weft

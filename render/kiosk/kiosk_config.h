@@ -1,0 +1,41 @@
+#pragma once
+// What `weft run` is asked to do (its flags, weft.conf through the service), and the check of
+// the values that can be checked before anything starts.
+#include <string>
+#include <vector>
+
+namespace weft {
+
+struct KioskConfig {
+  std::string bundle;                     // scene bundle (weft bake)
+  std::string state_dir = "/var/lib/weft";  // knob state and the last good bundle
+  std::string display = "auto";           // auto (KMS, else headless), kms or headless
+  long frames = 0;                        // ticks to run; 0 = until stop
+  double turntable = 6.0;                 // camera turn, degrees per second about the target's +Z
+  double zoom = 0.0;                      // the camera's way to the scene's close-up, 0 … 1, before the zoom knob's
+  // Knob source: hid, gpio, keyboard, sim:SCRIPT or none (kiosk/knob_sources.h); empty: the
+  // panel config's "sources" (default hid).
+  std::string panel = "hid";
+  std::string panel_config;               // JSON: hid ids, gpio lines, sources
+  double sim_speed = 1.0;                 // sim: scripts play this many times faster
+  std::string screenshot;                 // PNG of the last frame, tone-mapped; empty: none
+  std::vector<int> size{640, 480};        // headless frame size
+  // auto: the registry's kiosk rung whose traits fit the bundle (kiosk/kiosk_bundle.h, kiosk_method):
+  // per vertex with seed 000's tables (the same accuracy as per pixel on the showroom meshes at a
+  // tenth to a twentieth of the cost; docs/research/iwasaki.md), see-through for a sheer.
+  std::string method = "auto";
+  // Tone mapping (image/tone_map.h): exposure metered on the cloth whenever the lighting changes
+  // (not on knob edits: a darker fabric shows darker), eased in over kExposureAdaptSeconds, plus
+  // this bias in EV. `exposure` multiplies on top: the same as a bias of log2(exposure) EV.
+  double exposure_bias = 0.0;
+  double exposure = 1.0;
+  double stats_every = 300;               // seconds between stats lines; 0: none
+  std::string probe = "none";             // none, camera[:ID] or mock:MAP.exr[,MAP.exr...]
+  double probe_switch_s = 0;              // mock probe with several maps: seconds between switches
+  std::string status_file;                // the health file (kiosk/kiosk_status_file.h); empty: none
+};
+
+// Throws KioskConfigError (kiosk/kiosk_config_error.h) naming the flag of the first bad value.
+void check_kiosk_config(const KioskConfig& c);
+
+}  // namespace weft

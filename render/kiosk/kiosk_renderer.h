@@ -1,0 +1,24 @@
+#pragma once
+// The scene renderer as the kiosk draws a bundle, at boot and for each content update: the
+// showroom backdrop, and the resolved weave for close-ups where the method can draw it.
+#include <memory>
+#include <vector>
+
+#include "core/fabric.h"
+#include "gpu/scene_renderer.h"
+#include "methods/runtime_method.h"
+#include "runtime/iwasaki_bundle.h"
+#include "runtime/scene_bundle.h"
+
+namespace weft {
+
+// The fabric each cloth object wears, in the scene's order of cloth objects.
+std::vector<Fabric> cloth_fabrics(const SceneBundle& sb);
+
+// Needs the GL context current. A renderer that cannot draw the weave (a see-through method; a
+// cloth mesh without UVs) shows the fabric level up close, with a warning.
+std::unique_ptr<gpu::SceneRenderer> make_kiosk_renderer(const SceneBundle& sb, const std::vector<Fabric>& cloth,
+                                                        const methods::RuntimeMethod& method,
+                                                        std::shared_ptr<const IwasakiBundleData> iwasaki);
+
+}  // namespace weft
