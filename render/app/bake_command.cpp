@@ -1,5 +1,5 @@
 // `weft bake`: writes a kiosk bundle (BUNDLE_FORMAT.md): the scene sections (meshes, materials,
-// fabric parameters, camera, default SGs) and seed 000's tables (T per cloth fabric, per-vertex
+// fabric parameters, camera, default SGs) and the weighting tables (T per cloth fabric, per-vertex
 // visibility PCA for occluded cloth, κ).
 #include <chrono>
 #include <cstdio>
@@ -56,7 +56,7 @@ int run_bake(const BakeArgs& a) {
   } catch (const BundleFabricError& e) {
     throw UsageError(e.what());
   }
-  std::string lighting, tables_line = "no seed 000 tables (--no-tables)";
+  std::string lighting, tables_line = "no weighting tables (--no-tables)";
   if (!a.sgs_file.empty()) {
     progress(3, kSteps, "SGs from " + a.sgs_file);
     in.sgs = as_usage("--sgs", [&] { return load_sg_set(a.sgs_file); });
@@ -73,7 +73,7 @@ int run_bake(const BakeArgs& a) {
   bundle::BundleWriter writer;
   if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
-    progress(4, kSteps, "seed 000 tables (T, visibility, kappa)");
+    progress(4, kSteps, "weighting tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
     opt.progress = open_progress_bar, opt.mask_resolution = a.no_masks ? 0 : kMaskResolution;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
@@ -118,14 +118,14 @@ int run_bake(const BakeArgs& a) {
 
 CommandAction add_bake_command(CLI::App& app) {
   auto a = std::make_shared<BakeArgs>();
-  CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs, seed 000 tables)");
+  CLI::App* sub = app.add_subcommand("bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs, weighting tables)");
   sub->add_option("--scene", a->scene, "Scene: a preset (assets/scenes/NAME.json) or a path to a .json scene or a .gltf/.glb file")->required();
   sub->add_option("--fabric", a->fabric, "Fabric (preset name or .json file) for every cloth object (default: each object's own; a glTF naming no cloth: every material)");
   sub->add_option("--sgs", a->sgs_file, "Default SG lighting from a weft-sg-set file (weft fit --out)");
   sub->add_option("--sg-count,--fit-sgs", a->fit_sgs, "SGs fitted to the scene's environment map when no --sgs is given (default 10)")->check(CLI::Range(1, 64));
   sub->add_flag("--only-scene-fabrics", a->only_scene_fabrics, "Store only the cloth objects' fabrics (no other presets for the fabric knob)");
   sub->add_option("--out", a->out, "Bundle file to write")->required();
-  auto* no_tables = sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no seed 000 tables: enough for sgpoint)");
+  auto* no_tables = sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no weighting tables: enough for sgpoint)");
   auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--sg-count, samples, levels, SVD, SDF, PCA, cloth mesh "
                   "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
       ->check(CLI::Range(0.0, 0.5));

@@ -1,4 +1,4 @@
-// `weft bake-tables`: bakes only the weighting tables T_{t,λ} (seed 000 Eq. 10) of one fabric
+// `weft bake-tables`: bakes only the weighting tables T_{t,λ} of one fabric
 // and prints what was chosen and measured. `weft bake` writes them into the scene bundle;
 // this command exists to measure the table bake on its own.
 #include <chrono>
@@ -80,9 +80,9 @@ int run_bake_tables(const BakeTablesArgs& a) {
       bake_weighting_tables(fabric, settings, [&](double f, std::string_view s) { bar(f, s); }, &timings);
   const double bake_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start).count();
   const auto az_start = std::chrono::steady_clock::now();
-  bar(0.0, "azimuthal table T_m (seed 001 Eq. 14)");
+  bar(0.0, "azimuthal table T_m");
   const AzimuthalTable azimuthal = bake_azimuthal_table();
-  bar(1.0, "azimuthal table T_m (seed 001 Eq. 14)");
+  bar(1.0, "azimuthal table T_m");
   const double az_error = azimuthal_interpolation_error(azimuthal);
   const double az_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - az_start).count();
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

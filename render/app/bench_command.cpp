@@ -17,7 +17,7 @@ CommandAction add_bench_command(CLI::App& app) {
                 "sweeps of tangent samples 1,3 and SVD error 0.1,0.01 unless given");
   sub->add_option("--sweep", a->sweep,
                   "Preset: 'sky' (pillow and drape, linen and satin, procedural skies with the sun at 0-60 deg, "
-                  "bigger and hazier suns, the bundled maps turned 90 deg; seed 000's rungs (iwasaki, iwasaki_vertex, "
+                  "bigger and hazier suns, the bundled maps turned 90 deg; the weighting-table rungs (iwasaki, iwasaki_vertex, "
                   "their mask and quadrature variants; --methods narrows them) at 320x240; writes low_sun.csv/.md with the SG fit's irradiance error) or 'sky-smoke' (its smoke version: swatch, linen, 64x48, the reference at a fixed 8 tangent samples)");
   sub->add_option("--out", a->out, "Output folder (results.csv, chart.png, report.md, images/)")->capture_default_str();
   sub->add_option("--reference-cache,--cache", a->cache, "Reference cache folder (default: OUT/reference-cache)");

@@ -28,7 +28,7 @@ struct EvalArgs {
   double tolerance = 0.002;
 };
 
-// Seed 000's approximation at the swatch: bakes the fabric's weighting tables with the paper's
+// iwasaki's approximation at the swatch: bakes the fabric's weighting tables with the paper's
 // settings (tangent samples of its Table 1), then evaluates Eq. 8–13 unoccluded.
 int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
   BakeSettings settings;
@@ -49,8 +49,8 @@ int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const 
   return 0;
 }
 
-// Seed 001's approximation at the swatch: the same weighting tables as iwasaki (seed 001 Eq. 9 is
-// seed 000 Eq. 10), the azimuthal table T_m (Eq. 14), then Eq. 10–16 without visibility.
+// mizutani's approximation at the swatch: the same weighting tables as iwasaki, the azimuthal
+// table T_m, then the paper's Eq. 10–16 without visibility.
 int run_mizutani(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
   BakeSettings settings;
   settings.tangent_samples = paper_tangent_samples(fabric);
@@ -115,7 +115,7 @@ CommandAction add_eval_command(CLI::App& app) {
   sub->add_option("--fabric", a->fabric, "Fabric: a preset name (assets/fabrics/NAME.json) or a .json file")->capture_default_str();
   sub->add_option("--view", a->view, "Direction toward the viewer, x,y,z (normalised; z > 0)")->required();
   sub->add_option("--sg", a->sgs, "An SG light: axis_x,axis_y,axis_z,lambda,r,g,b (repeatable)")->required();
-  sub->add_option("--method", a->method, "Method: reference (converged quadrature of docs/design.md §2), iwasaki (seed 000) or mizutani (seed 001, no visibility); the last two bake their tables first")
+  sub->add_option("--method", a->method, "Method: reference (converged quadrature of docs/design.md §2), iwasaki (weighting tables) or mizutani (weighting and azimuthal tables, no visibility); the last two bake their tables first")
       ->capture_default_str();
   sub->add_option("--tangent-samples", a->tangent_samples, "Tangent samples per thread N_j")->capture_default_str();
   sub->add_option("--tolerance", a->tolerance, "Convergence: relative change between grid doublings")

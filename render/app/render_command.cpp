@@ -49,7 +49,7 @@ int run_render(const RenderArgs& a) {
     if (!known) throw UsageError("--method: '" + a.method + "' is not available (available: " + all + ")");
   }
   const methods::RuntimeMethod* method = methods::find_method(a.method);  // null: the reference
-  if (!a.bundle.empty() && !(method && method->reads_seed000_tables()))
+  if (!a.bundle.empty() && !(method && method->reads_weighting_tables()))
     throw UsageError("--bundle: only with --method iwasaki, iwasaki_vertex or mizutani");
   if (a.lighting != "sg" && a.lighting != "map") throw UsageError("--lighting: must be 'sg' or 'map'");
   if (a.width < 1 || a.height < 1 || a.width > 8192 || a.height > 8192)
@@ -77,8 +77,8 @@ int run_render(const RenderArgs& a) {
     throw UsageError(e.what());
   }
   if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
-  if (method && method->needs_seed000_tables() && !in.iwasaki) {
-    std::cerr << "weft render: baking seed 000's tables in memory (weft bake stores them in a bundle)\n";
+  if (method && method->needs_weighting_tables() && !in.iwasaki) {
+    std::cerr << "weft render: baking the weighting tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;
     o.progress = open_progress_bar;
     if (method->reads_visibility_masks()) o.mask_resolution = kMaskResolution;
@@ -134,7 +134,7 @@ CommandAction add_render_command(CLI::App& app) {
                   "Convergence check: re-render every Nth pixel (in x and y) at twice the lighting resolution and tangent samples")
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
-  sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex, mizutani: take the scene and seed 000 tables from this bundle (weft bake) instead of baking them");
+  sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex, mizutani: take the scene and weighting tables from this bundle (weft bake) instead of baking them");
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: fixed exposure before the filmic curve and sRGB (0: metered on the cloth)")

@@ -25,7 +25,7 @@ struct Row {
   // sunlit band beside it.
   double shadow_rmse = -1.0, shadow_ratio = -1.0, band_ratio = -1.0;
   size_t shadow_pixels = 0, band_pixels = 0;
-  bool visibility = false;  // the method shades with scene visibility (seed 000's SDF)
+  bool visibility = false;  // the method shades with scene visibility (the baked SDF)
   // Floor and occluders (Lambertian pixels, < 0: none in view): masked_error there.
   double lambert_rmse = -1.0, lambert_ratio = -1.0;
   int sg_count = 0;               // SGs the frame was lit by
@@ -62,7 +62,7 @@ struct StabilityCell {
   StressResult r;
 };
 
-// The method column of a seed 000 method's target-error row: "iwasaki_vertex (target 0.1)".
+// The method column of a weighting-table method's target-error row: "iwasaki_vertex (target 0.1)".
 inline std::string target_label(const std::string& method, double target) {
   return method + " (target " + fmt(target) + ")";
 }

@@ -28,7 +28,7 @@ namespace weft::bench {
 
 namespace {
 
-// The row of a seed 000 method (iwasaki or iwasaki_vertex) with the setting `weft bake
+// The row of a weighting-table method (iwasaki or iwasaki_vertex) with the setting `weft bake
 // --target-error` picks for it (bake/selection/scene_selection.h, the method held fixed), next to the
 // paper-default row of the same case; its views' references cached beside the bench's.
 Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m, RowMeasure& measure,
@@ -87,7 +87,7 @@ void ladder_rows(const BenchOptions& a, const std::vector<LadderEntry>& run, Tab
           if (!m.scenes.empty() && !m.scenes.count(scene_name)) continue;
           res.rows.push_back(measure.measure(c, m, m.name, m.name, bakes.tables_for(m.name, c.scene, c.fabrics)));
           if (const auto& method = methods::method(m.name);
-              method.shading == methods::Shading::per_vertex && method.reads_seed000_tables())
+              method.shading == methods::Shading::per_vertex && method.reads_weighting_tables())
             for (int levels : a.subdivide) res.rows.push_back(subdivided_row(c, m, levels, bakes, measure));
           if ((m.name == "iwasaki" || m.name == "iwasaki_vertex") && a.target_error > 0)
             res.rows.push_back(target_error_row(a, c, m, measure, cache));

@@ -3,7 +3,7 @@
 // name (methods/registry.h). A method is benchmarked when the GPU runtime has it; the rest are
 // reported as missing, and a runtime method the ladder does not list runs after them, on every
 // scene against the opaque reference. `scenes` limits a method to the scenes it is for;
-// `thin_reference`: measured against the reference with cloth as seed 004's thin layer
+// `thin_reference`: measured against the reference with cloth as a thin layer
 // (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.
 #include <set>
 #include <string>

@@ -240,7 +240,7 @@ void thin_occluder_section(std::ostream& md, const BenchOptions& a, const BenchR
     md << "The point-based stress cases above evaluate single surface points with no scene around them, so they test no "
        << "visibility at all. This table comes from the `" << kThinOccluderScene << "` images of the ladder (" << a.width
        << "x" << a.height << ", against the reference): the Utah teapot on cloth under the sharp sun of " << thin_occluder_case
-       << ". Only the methods marked with visibility shade with it (seed 000's linearised SDF per SG, baked for the "
+       << ". Only the methods marked with visibility shade with it (the linearised SDF per SG, baked for the "
        << "scene); every other method has none (each SG lights every cloth point, sgpoint included), so the missing "
        << "shadows of the spout, the handle and the body count as their error here: that is what this case measures. "
        << "Shadow: cloth pixels whose point sees the sun's axis blocked, by the body as well as the spout and the handle "
@@ -252,7 +252,7 @@ void thin_occluder_section(std::ostream& md, const BenchOptions& a, const BenchR
        << "| fabric / env | method | visibility | relative RMSE (whole cloth) | relative RMSE (in the shadow) | "
        << "brightness in the shadow | brightness beside it |\n|---|---|---|---|---|---|---|\n";
     for (const Row* r : thin_rows)
-      md << "| " << r->fabric << " / " << r->env << " | " << r->method << " | " << (r->visibility ? "seed 000 SDF" : "none") << " | " << fmt(r->rmse) << " | "
+      md << "| " << r->fabric << " / " << r->env << " | " << r->method << " | " << (r->visibility ? "baked SDF" : "none") << " | " << fmt(r->rmse) << " | "
          << fmt(r->shadow_rmse) << " | " << fmt(r->shadow_ratio) << " | " << (r->band_ratio >= 0 ? fmt(r->band_ratio) : "n/a")
          << " |\n";
   }

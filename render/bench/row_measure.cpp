@@ -35,7 +35,7 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
     r.bundle_bytes = table_bytes(*bundle) + visibility_bytes(*bundle), r.tables = tables_summary(*bundle);
     if (methods::method(m.name).reads_visibility_masks()) r.bundle_bytes += mask_bytes(*bundle);
   }
-  r.visibility = methods::method(m.name).needs_seed000_tables();
+  r.visibility = methods::method(m.name).needs_weighting_tables();
   r.sg_count = int(c.sgs.size());
   for (const auto& o : scene.cloth_objects()) r.cloth_mesh_bytes += mesh_section_bytes(o.mesh);
   const GpuFrame speed = render_gpu_frame(scene, c.fabrics, c.sgs, m.name, a.speed_width, a.speed_height,

@@ -22,7 +22,7 @@ public:
   RowMeasure(const BenchOptions& o, std::filesystem::path out, ReferenceSet& references)
       : options_(o), out_(std::move(out)), references_(references) {}
 
-  // `label`: the row's method column; `file_id`: its images' names; `bundle`: seed 000 tables
+  // `label`: the row's method column; `file_id`: its images' names; `bundle`: weighting tables
   // for the methods that read them; `drawn`: the scene the frames draw when not the case's own
   // (its cloth refined, scene/mesh_subdivision.h), against the case's reference.
   Row measure(const Case& c, const LadderEntry& m, const std::string& label, const std::string& file_id,

@@ -39,7 +39,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key
                                                           const IwasakiBakeOptions& o) {
   auto& data = bakes_[key];
   if (!data) {
-    std::cerr << "weft bench: baking seed 000 tables for " << key << " ..." << std::flush;
+    std::cerr << "weft bench: baking weighting tables for " << key << " ..." << std::flush;
     const auto t = std::chrono::steady_clock::now();
     data = std::make_shared<IwasakiBundleData>(bake_iwasaki(scene, fabrics, o));
     std::cerr << " " << fmt(seconds_since(t)) << " s\n";
@@ -49,7 +49,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key
 
 std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::string& method, const Scene& scene,
                                                                 const std::map<std::string, Fabric>& fabrics) {
-  if (!methods::method(method).reads_seed000_tables()) return nullptr;
+  if (!methods::method(method).reads_weighting_tables()) return nullptr;
   const std::string k = key(scene, fabrics);
   if (bakes_.count(k)) return bakes_.at(k);
   std::string fabric_set;

@@ -1,5 +1,5 @@
 #pragma once
-// iwasaki draws from seed 000 tables: baked in memory, once per scene, fabric set and setting
+// iwasaki draws from weighting tables: baked in memory, once per scene, fabric set and setting
 // (small grids with --quick; the paper's 48 otherwise, minutes each on two cores; the weighting
 // tables, which depend on the fabrics only, once per fabric set). Every iwasaki variant of the
 // runtime (e.g. iwasaki_vertex) reads the same bundle, and mizutani takes its W tables from it
@@ -26,7 +26,7 @@ public:
   std::shared_ptr<const IwasakiBundleData> bake(const std::string& key, const Scene& scene,
                                                 const std::map<std::string, Fabric>& fabrics,
                                                 const IwasakiBakeOptions& o);
-  // The paper-default bundle for a method that reads seed 000 tables; null for the others.
+  // The paper-default bundle for a method that reads weighting tables; null for the others.
   std::shared_ptr<const IwasakiBundleData> tables_for(const std::string& method, const Scene& scene,
                                                       const std::map<std::string, Fabric>& fabrics);
   // tables_for(method, scene, fabrics) with the cloth objects' visibility replaced by theirs in

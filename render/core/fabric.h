@@ -25,7 +25,7 @@ struct WeaveSpec {
 struct Fabric {
   std::string name;
   std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
-  // Seed 004's optical thickness τ of the cloth as a thin layer (direct transmission e^{−τ/μ}):
+  // The optical thickness τ of the cloth as a thin layer (direct transmission e^{−τ/μ}):
   // > 0 marks a sheer (voile, net) that shows what lies behind it; 0 (the Table II presets) is a
   // fabric with no thickness of its own, which see-through methods draw at their default τ.
   double optical_thickness = 0.0;

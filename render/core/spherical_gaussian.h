@@ -1,6 +1,6 @@
 #pragma once
-// Spherical Gaussians (docs/design.md §3): G(ω) = μ·exp(λ(ω·ξ − 1)), μ RGB radiance, λ = 2/σ² in
-// seed 000's notation. An environment is a small set of them (10 by default).
+// Spherical Gaussians (docs/design.md §3): G(ω) = μ·exp(λ(ω·ξ − 1)), μ RGB radiance, λ = 2/σ²
+// (σ: sg_bandwidth). An environment is a small set of them (10 by default).
 //
 // Integrals of SGs used by the lighting fit, the baker and the runtime methods. Sharpness λ ≥ 0
 // everywhere (λ = 0 is the constant function μ); axes and normals are unit vectors.

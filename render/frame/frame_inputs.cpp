@@ -25,14 +25,14 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
       std::cerr << "weft render: mesh " << in.scene.name << "/" << obj.name << ": dropped "
                 << obj.repair.degenerate_triangles_dropped << " degenerate triangles\n";
   if (!a.bundle.empty()) {
-    // The bundle's scene, fabrics and seed 000 tables; the lighting still comes from the options.
+    // The bundle's scene, fabrics and weighting tables; the lighting still comes from the options.
     try {
       const auto reader = bundle::BundleReader::open(a.bundle);
       SceneBundle sb = read_scene_bundle(reader);
       std::map<size_t, size_t> vertices;
       for (size_t i = 0; i < sb.scene.objects.size(); ++i) vertices[i] = sb.scene.objects[i].mesh.positions.size();
       if (!has_iwasaki_sections(reader))
-        throw FrameInputError("--bundle: " + a.bundle + " has no seed 000 tables (weft bake without --no-tables)");
+        throw FrameInputError("--bundle: " + a.bundle + " has no weighting tables (weft bake without --no-tables)");
       in.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
       in.scene = std::move(sb.scene);
     } catch (const bundle::BundleError& e) {

@@ -1,5 +1,5 @@
 #pragma once
-// What `weft render` draws one frame of: a scene preset (or a bundle's scene with its seed 000
+// What `weft render` draws one frame of: a scene preset (or a bundle's scene with its weighting
 // tables), the fabric of each cloth object, the environment map, and the lighting made of it
 // (the map itself as stratified cells, or SGs from a file or fitted to the map). Repairs
 // (dropped degenerate triangles, clamped map values) are logged on stderr.
@@ -28,7 +28,7 @@ struct FrameInputOptions {
   std::string scene;
   std::string fabric;  // empty: each cloth object's own
   std::string env;     // empty: the scene's
-  std::string bundle;  // non-empty: the scene and seed 000 tables from this bundle
+  std::string bundle;  // non-empty: the scene and weighting tables from this bundle
 };
 
 struct FrameInputs {

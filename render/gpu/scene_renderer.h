@@ -40,7 +40,7 @@ bool is_cloth_alpha(float alpha);
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object. The
-  // method's GPU side gets `iwasaki` (a bundle's seed 000 tables): iwasaki(_vertex) need them,
+  // method's GPU side gets `iwasaki` (a bundle's weighting tables): iwasaki(_vertex) need them,
   // mizutani takes its W tables from there when they were baked for the paper's samples (else
   // from `tables`, which the offline commands fill with a baker and the kiosk leaves empty). The
   // bundle's visibility shades every method's floors.
@@ -57,7 +57,7 @@ public:
   struct PreparedLighting {
     SgLighting sgs;
     std::vector<std::vector<glm::vec3>> irradiance;     // per object; empty for cloth
-    std::vector<std::optional<SgVisibility>> cloth;      // per object; set for occluded seed 000 cloth
+    std::vector<std::optional<SgVisibility>> cloth;      // per object; set for occluded cloth on the tables
   };
   PreparedLighting prepare_lighting(const SgLighting& sgs) const;  // throws GpuError for > 40 SGs
   void set_lighting(const PreparedLighting& lighting);

@@ -86,7 +86,7 @@ void Kiosk::watch_bundle() {
 void Kiosk::load_bundle() {
   notifier_.status("loading bundle " + config_.bundle);
   bundle::FallbackOptions fo;
-  // Seed 000's tables are read in the accept step too: a bundle whose tables do not read (a
+  // The weighting tables are read in the accept step too: a bundle whose tables do not read (a
   // section missing, a shape that does not match the mesh) falls back like a corrupt one.
   std::optional<KioskBundle> read;
   fo.accept = [&](const bundle::BundleReader& r) { read = read_kiosk_bundle(r, config_.method); };

@@ -22,13 +22,13 @@ const methods::RuntimeMethod& kiosk_rung(Fits fits) {
   throw std::logic_error("the method registry has no kiosk rung for this bundle");
 }
 
-// Opaque cloth shaded with seed 000's tables.
-bool opaque_seed000(const methods::RuntimeMethod& m) { return m.needs_seed000_tables() && !m.see_through; }
+// Opaque cloth shaded with the weighting tables.
+bool opaque_with_tables(const methods::RuntimeMethod& m) { return m.needs_weighting_tables() && !m.see_through; }
 
-// Drawn without seed 000's tables: opaque, and nothing the bundle's bake adds.
+// Drawn without the weighting tables: opaque, and nothing the bundle's bake adds.
 const methods::RuntimeMethod& tableless_rung() {
   return kiosk_rung([](const methods::RuntimeMethod& m) {
-    return !m.reads_seed000_tables() && !m.see_through && !m.reads_visibility_masks();
+    return !m.reads_weighting_tables() && !m.see_through && !m.reads_visibility_masks();
   });
 }
 
@@ -52,24 +52,24 @@ const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
     sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
   if (sheer)
     return kiosk_rung([](const RuntimeMethod& m) {
-      return m.see_through && m.needs_seed000_tables() && m.shading == Shading::per_vertex && !m.reads_visibility_masks();
+      return m.see_through && m.needs_weighting_tables() && m.shading == Shading::per_vertex && !m.reads_visibility_masks();
     });
   // The bake's search chose an opaque rung without masks (per pixel or per vertex): its shading;
   // else per vertex.
   const RuntimeMethod* chosen = methods::find_method(bundle.baked_for);
   const Shading shading =
-      chosen && opaque_seed000(*chosen) && !chosen->reads_visibility_masks() ? chosen->shading : Shading::per_vertex;
+      chosen && opaque_with_tables(*chosen) && !chosen->reads_visibility_masks() ? chosen->shading : Shading::per_vertex;
   // The broad sky lobes by quadrature need a cell's visibility wherever the cloth is occluded: with a
   // mask for every occluded cloth object (weft bake writes them unless --no-masks), or none occluded,
   // take the quadrature rung, or the rung that reads the masks which `weft bake --choose-rung`
   // measured closer to the scene's reference.
   if (!masks_cover_occluded_cloth(bundle))
     return kiosk_rung([&](const RuntimeMethod& m) {
-      return opaque_seed000(m) && m.shading == shading && !m.reads_visibility_masks();
+      return opaque_with_tables(m) && m.shading == shading && !m.reads_visibility_masks();
     });
-  if (chosen && opaque_seed000(*chosen) && chosen->reads_visibility_masks()) return *chosen;
+  if (chosen && opaque_with_tables(*chosen) && chosen->reads_visibility_masks()) return *chosen;
   return kiosk_rung([&](const RuntimeMethod& m) {
-    return opaque_seed000(m) && m.shading == shading && m.masks.broad_lobes && !m.masks.open_share;
+    return opaque_with_tables(m) && m.shading == shading && m.masks.broad_lobes && !m.masks.open_share;
   });
 }
 
@@ -104,9 +104,9 @@ std::string selected_method(std::string_view selection_json) {
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file) {
   const methods::RuntimeMethod& m = method != "auto" ? methods::method(method) : auto_method(bundle);
-  if (m.needs_seed000_tables() && !bundle.iwasaki)
+  if (m.needs_weighting_tables() && !bundle.iwasaki)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
-                           " has no seed 000 tables (weft bake without --no-tables)");
+                           " has no weighting tables (weft bake without --no-tables)");
   // The masks' open share replaces the SDF's visibility: an occluded cloth object needs its mask.
   if (m.masks.open_share && bundle.iwasaki && !masks_cover_occluded_cloth(bundle))
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +

@@ -1,6 +1,6 @@
 #pragma once
 // A scene bundle as the kiosk shows it: what it reads from a verified bundle (the scene, every
-// fabric preset, and seed 000's tables unless it draws with the kiosk's rung that needs none),
+// fabric preset, and the weighting tables unless it draws with the kiosk's rung that needs none),
 // the runtime method it draws with, and a fingerprint of the content. Read at boot (through the last-good fallback)
 // and for each content update (kiosk/bundle_watcher.h), the same way both times.
 #include <cstdint>
@@ -18,7 +18,7 @@ namespace weft {
 
 struct KioskBundle {
   SceneBundle scene;
-  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no seed 000 tables (or the tableless rung asked for)
+  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no weighting tables (or the tableless rung asked for)
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
   // The method `weft bake --target-error` or `--choose-rung` measured (bake/selection); empty: none.
   std::string baked_for;
@@ -33,7 +33,7 @@ std::string selected_method(std::string_view selection_json);
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
 // The method for a bundle: --method, or for auto the first of the registry's kiosk rungs
-// (RuntimeMethod::kiosk_rung) whose traits fit the bundle: without seed 000 tables, one that needs
+// (RuntimeMethod::kiosk_rung) whose traits fit the bundle: without weighting tables, one that needs
 // none; with them, a see-through per-vertex rung if a cloth object is a sheer; else an opaque rung
 // with the shading (per pixel or per vertex) of the one the bake's search chose (per vertex when
 // none), which where the bundle's masks cover the occluded cloth is the mask-reading rung

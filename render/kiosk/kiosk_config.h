@@ -21,7 +21,7 @@ struct KioskConfig {
   std::string screenshot;                 // PNG of the last frame, tone-mapped; empty: none
   std::vector<int> size{640, 480};        // headless frame size
   // auto: the registry's kiosk rung whose traits fit the bundle (kiosk/kiosk_bundle.h, kiosk_method):
-  // per vertex with seed 000's tables (the same accuracy as per pixel on the showroom meshes at a
+  // per vertex with the weighting tables (the same accuracy as per pixel on the showroom meshes at a
   // tenth to a twentieth of the cost; docs/research/iwasaki.md), see-through for a sheer.
   std::string method = "auto";
   // Tone mapping (image/tone_map.h): exposure metered on the cloth whenever the lighting changes

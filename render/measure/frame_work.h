@@ -1,5 +1,5 @@
 #pragma once
-// The frame cost the setting search (bake/selection/scene_selection.h) ranks seed 000's two shadings by,
+// The frame cost the setting search (bake/selection/scene_selection.h) ranks iwasaki's two shadings by,
 // modelled at the kiosk's resolution (docs/design.md §6: speed at 640×480) so that per-pixel and
 // per-vertex settings compete on one scale. Unit: one per-pixel shading step, one cloth pixel ×
 // one SG × one tangent sample (the runtime's loops, methods/iwasaki/iwasaki.glsl).

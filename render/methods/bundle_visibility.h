@@ -1,5 +1,5 @@
 #pragma once
-// The bundle's visibility of one scene object, checked before a GPU side reads it: seed 000's
+// The bundle's visibility of one scene object, checked before a GPU side reads it: iwasaki's
 // cloth (iwasaki_cloth.h) and the scene renderer's floors and occluders both take theirs here.
 #include "runtime/iwasaki_bundle.h"
 #include "scene/mesh.h"

@@ -19,7 +19,7 @@ namespace weft::gpu {
 // What a method's GPU side is made with.
 struct ClothMethodSetup {
   int tangent_samples = 16;  // per thread, where the method samples the curves at will
-  // A bundle's seed 000 tables (null without); methods that need them throw GpuError without.
+  // A bundle's weighting tables (null without); methods that need them throw GpuError without.
   std::shared_ptr<const IwasakiBundleData> bundle;
   // Tables no bundle holds (mizutani's): the offline commands' baker; empty in the kiosk.
   TableSource tables;

@@ -1,6 +1,6 @@
 #pragma once
-// Floors and occluders: Lambertian surfaces under the SGs, shadowed with seed 000's visibility
-// (§3.2) like the cloth — the same baked SDF per vertex (bake/visibility/scene_visibility.h), read at the
+// Floors and occluders: Lambertian surfaces under the SGs, shadowed like the cloth
+// (seed 000 §3.2) — the same baked SDF per vertex (bake/visibility/scene_visibility.h), read at the
 // SG axes when the lighting changes (SgVisibility), and the same visibility ratio H of Eq. 12–14.
 //
 // Per vertex and SG G_k: E_k = irradiance(G_k, n) · min(1, H_sdf / H_horizon), where

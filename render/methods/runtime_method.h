@@ -15,8 +15,8 @@
 
 namespace weft::methods {
 
-// How a method uses seed 000's tables (a bundle's IwasakiBundleData).
-enum class Seed000Tables {
+// How a method uses the weighting tables (a bundle's IwasakiBundleData: W, visibility, κ).
+enum class WeightingTablesUse {
   unused,
   read_when_given,  // reads their W tables when the bundle has them for its samples, else bakes its own
   required,         // cannot draw without them
@@ -52,7 +52,7 @@ struct RuntimeMethod {
   std::string name;
   // The cloth shows what lies behind it: drawn last, blended dst·α + src, over the SG environment.
   bool see_through = false;
-  Seed000Tables seed000 = Seed000Tables::unused;
+  WeightingTablesUse weighting_tables = WeightingTablesUse::unused;
   Shading shading = Shading::per_pixel;
   MaskUse masks;
   // `weft run --method auto` may choose it: the kiosk takes the first such method, in the
@@ -64,8 +64,8 @@ struct RuntimeMethod {
   GpuFactory make_gpu;
   CpuEvaluation cpu;  // empty: no C++ evaluation of its own
 
-  bool needs_seed000_tables() const { return seed000 == Seed000Tables::required; }
-  bool reads_seed000_tables() const { return seed000 != Seed000Tables::unused; }
+  bool needs_weighting_tables() const { return weighting_tables == WeightingTablesUse::required; }
+  bool reads_weighting_tables() const { return weighting_tables != WeightingTablesUse::unused; }
   bool reads_visibility_masks() const { return masks.any(); }
 };
 

@@ -52,7 +52,7 @@ struct ReferenceRenderOptions {
   // Convergence check: every `check_stride`-th pixel (in both x and y) re-rendered at level+1.
   int check_stride = 4;
   bool check_convergence = true;
-  // Cloth as seed 004's optically thin layer (methods/thin/thin.h, parameters thin_params(fabric)):
+  // Cloth as an optically thin layer (methods/thin/thin.h, parameters thin_params(fabric)):
   // L = (1 − α)·reflection + single scattering (reference/thin_quadrature.h on the SG grid,
   // with visibility from either side) + α·(what the ray continues to), α = e^{−τ/|n·ω_o|}.
   // SG lighting only. Shadow rays still treat cloth as opaque.

@@ -1,11 +1,11 @@
 #pragma once
-// Seed 001's azimuthal table for the shadow-free `mizutani` method (seed 001 Eq. 14):
+// The azimuthal table for the shadow-free `mizutani` method (seed 001 Eq. 14):
 //
 //   T_m(φ_o, φ_k, σ') = ∫_{−π/2}^{π/2} g^c(φ_i; φ_k, σ') · cos^m((φ_i − φ_o)/2) dφ_i,
 //   g^c(x; μ, σ') = exp(2(cos(x − μ) − 1)/σ'²) = exp(λ'(cos(x − μ) − 1)),  λ' = 2/σ'².
 //
 // φ_i is the azimuth of ω_i around the tangent sample (φ = atan2(ω·b, ω·n'), docs/design.md §2);
-// the range ±π/2 is where the masking term's max(cos φ_i, 0) is non-zero. Seed 001 expands
+// the range ±π/2 is where the masking term's max(cos φ_i, 0) is non-zero. The paper expands
 // Schlick's F_r = F_0 + (1 − F_0)(1 − cosθ_d·cos(φ_d/2))⁵ as Σ_{l=0..5} C_l(θ_d) cos^l(φ_d/2),
 // and the surface lobe carries one more cos(φ_d/2): the paper's T_l is T_{m = l+1}. The volume
 // lobe has no cos(φ_d/2) of its own but F = (1 − F_r)², a polynomial of degree 10 in

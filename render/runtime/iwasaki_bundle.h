@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000's baked data in a bundle (BUNDLE_FORMAT.md, "Seed 000 sections"): the weighting
+// The baked weighting-table data of a bundle (BUNDLE_FORMAT.md, "Weighting-table sections"): the weighting
 // tables T of each baked fabric (SVD factors), the per-vertex visibility SDF of each occluded
 // object (cloth, floor, occluder) as PCA (mean, basis, coefficients), the sigmoid gain table κ,
 // and each occluded cloth object's per-vertex visibility mask (runtime/visibility_mask.h). Written by
@@ -37,7 +37,7 @@ struct IwasakiBundleData {
   std::map<size_t, VisibilityMask> masks;            // cloth objects' bit masks (iwasaki_vertex_mask); absent: unoccluded
 };
 
-// True when the bundle holds seed 000 tables (the `bake/T` index).
+// True when the bundle holds weighting tables (the `bake/T` index).
 bool has_iwasaki_sections(const bundle::BundleReader& reader);
 
 // Reads them back. Throws bundle::BundleError naming the section when one is missing, has the

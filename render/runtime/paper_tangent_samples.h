@@ -1,5 +1,5 @@
 #pragma once
-// How many tangent samples per thread seed 000's tables are baked for by default; mizutani
+// How many tangent samples per thread the weighting tables are baked for by default; mizutani
 // (GPU and C++) runs with the same counts, so the runtime needs this rule too.
 #include <array>
 

@@ -1,5 +1,5 @@
 // `weft bake --subdivide N` end to end: the bundle's cloth meshes are the scene's refined N
-// levels (scene/mesh_subdivision.h; floors and occluders as they were), with the seed 000
+// levels (scene/mesh_subdivision.h; floors and occluders as they were), with the weighting-table
 // sections sized for them; a level outside 0..kMaxSubdivision is bad usage (exit 2).
 #include <gtest/gtest.h>
 

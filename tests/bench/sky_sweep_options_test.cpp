@@ -8,7 +8,7 @@
 
 using namespace weft;
 
-TEST(SkySweepOptions, PresetRunsSeed000RungsOnThePillowAndDrape) {
+TEST(SkySweepOptions, PresetRunsWeightingTableRungsOnThePillowAndDrape) {
   bench::BenchOptions o;
   o.sweep = "sky";
   bench::apply_sweep(o);
@@ -16,7 +16,7 @@ TEST(SkySweepOptions, PresetRunsSeed000RungsOnThePillowAndDrape) {
   EXPECT_EQ(o.envs, bench::sky_sweep_envs(false));
   EXPECT_EQ(o.target_error, 0.0);
   EXPECT_TRUE(o.no_stability);
-  // Every rung drawn from seed 000's tables is measured, and each is a registered method.
+  // Every rung drawn from the weighting tables is measured, and each is a registered method.
   for (const char* m : {"iwasaki", "iwasaki_vertex", "iwasaki_mask", "iwasaki_vertex_mask", "iwasaki_quadrature",
                         "iwasaki_vertex_quadrature", "iwasaki_mask_quadrature", "iwasaki_vertex_mask_quadrature"})
     EXPECT_NE(std::find(o.methods.begin(), o.methods.end(), m), o.methods.end()) << m;

@@ -1,4 +1,4 @@
-// Benchmark (label bench, not run in CI): seed 000 on the GPU against the reference.
+// Benchmark (label bench, not run in CI): iwasaki on the GPU against the reference.
 //  - accuracy: relative RMSE sqrt(mean((x−r)²))/mean(r) over the cloth pixels (docs/design.md §6) of
 //    `weft render --method iwasaki` (in-process: same SG fit, GPU frame read back) against
 //    `weft render --method reference --lighting sg` at 320×240, same 10 SGs fitted to the map.

@@ -1,4 +1,4 @@
-// Parity: methods/sheer/sheer.glsl (seed 004's layer over iwasaki.glsl), drawn by the sheer
+// Parity: methods/sheer/sheer.glsl (the thin layer over iwasaki.glsl), drawn by the sheer
 // methods' GPU side (per pixel `sheer`, and `sheer_vertex` per vertex, interpolated) on the GL
 // driver (llvmpipe here) and read back as premultiplied source and alpha, agrees with the C++
 // evaluation (methods/sheer/sheer.cpp over iwasaki.cpp, iwasaki_visibility.cpp's SDF lookup and the

@@ -80,9 +80,9 @@ TEST(BundleReport, ABundleWithoutTablesDrawsOnlyWhatNeedsNone) {
   EXPECT_EQ(r.auto_method, "sgpoint");
   EXPECT_TRUE(r.bake.empty());
   for (const auto& m : r.methods) {
-    EXPECT_EQ(m.drawable, !methods::method(m.name).needs_seed000_tables()) << m.name;
+    EXPECT_EQ(m.drawable, !methods::method(m.name).needs_weighting_tables()) << m.name;
     if (!m.drawable) {
-      EXPECT_NE(m.refusal.find("no seed 000 tables"), std::string::npos) << m.refusal;
+      EXPECT_NE(m.refusal.find("no weighting tables"), std::string::npos) << m.refusal;
     }
   }
   const BundleVerdict v = verify_bundle(b.file(), "iwasaki");

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Content updates of a running kiosk: bakes two showroom bundles (with seed 000's tables, as a
+# Content updates of a running kiosk: bakes two showroom bundles (with the weighting tables, as a
 # showroom ships them), starts `weft run` headless on one, then renames the other over it ROUNDS
 # times, alternating, as rsync or systemd-sysupdate would. For each update it reports the kiosk's
 # own figure (the log line "shown N ms after it changed": from the first inotify event read to the

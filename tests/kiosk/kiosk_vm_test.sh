@@ -122,7 +122,7 @@ say "package $(basename "$deb") ($(du -k "$deb" | cut -f1) KiB, $(wc -l <"$work/
 shots="$work/shots"
 rm -rf "$shots" "$work/ref" && mkdir -p "$shots" "$work/ref"
 bundle="$work/showroom.weft"
-# The scene alone (no seed 000 tables): the VM proves the device paths; sgpoint keeps TCG frames short.
+# The scene alone (no weighting tables): the VM proves the device paths; sgpoint keeps TCG frames short.
 "$weft" bake --scene pillow --fabric linen_plain --no-tables --out "$bundle" >"$work/bake.log" 2>&1 || fail "weft bake failed: $(tail -3 "$work/bake.log")"
 cat >"$work/panel.json" <<JSON
 {"sources": ["hid"], "hid": {"vendor_id": "0x1209", "product_id": "0x57ef"}}

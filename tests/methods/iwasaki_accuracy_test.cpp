@@ -1,4 +1,4 @@
-// Seed 000's approximation (render/methods/iwasaki) against the converged reference on the
+// iwasaki's approximation (render/methods/iwasaki) against the converged reference on the
 // unoccluded swatch: the factorisation of Eq. 9, the circular-Gaussian lobes of Eq. 11–13 and
 // the SVD tables together stay within a few percent where the paper says they work.
 #include <gtest/gtest.h>

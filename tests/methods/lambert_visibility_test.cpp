@@ -1,4 +1,4 @@
-// Floors and occluders get seed 000's visibility (methods/lambert_visibility.h): a graded floor
+// Floors and occluders get the cloth's baked visibility (methods/lambert_visibility.h): a graded floor
 // under a Lambertian pillow, its visibility baked as the cloth's is, shaded per vertex from the
 // PCA's SDF at the SG axes. Independent expectation: E(v) = Σ_k ∫ G_k(ω) max(ω·n, 0) V(ω) dω by
 // ray-cast quadrature over the hemisphere (one Embree shadow ray per direction, equal-area cells).

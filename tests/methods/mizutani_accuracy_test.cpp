@@ -1,4 +1,4 @@
-// Seed 001's approximation (render/methods/mizutani) against the converged reference of
+// mizutani's approximation (render/methods/mizutani) against the converged reference of
 // docs/design.md §2 on the unoccluded swatch, where the paper says it works (SGs from broad to
 // moderately sharp, views off grazing), and its stability where it does not (λ = 10⁴, 89° views).
 #include <gtest/gtest.h>
@@ -151,7 +151,7 @@ TEST(MizutaniShading, MatchesQuadratureForBroadLights) {
     }
   }
   std::printf("shading factor: worst surface %.1f%% (where lit), worst volume %.1f%%\n", 100 * worst_s, 100 * worst_v);
-  // Measured 20.6 % and 11.5 %: the 6-segment θ integral and the g^c → g steps (seed 001's own
+  // Measured 20.6 % and 11.5 %: the 6-segment θ integral and the g^c → g steps (the paper's own
   // settings) dominate; Schlick and the T_m table add < 1 %.
   EXPECT_LT(worst_s, 0.25);
   EXPECT_LT(worst_v, 0.15);

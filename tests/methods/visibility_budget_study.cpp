@@ -99,7 +99,7 @@ double facet_share(const SphericalGaussian& g, const dvec3& shade, const dvec3& 
   return above ? double(both) / above : 1.0;
 }
 
-// The seed 000 bundle of `scene` at the bench's settings, cached as a bundle file; `tables`: the
+// The weighting-table bundle of `scene` at the bench's settings, cached as a bundle file; `tables`: the
 // fabric's tables when another scene's bundle holds them (then only the visibility is baked).
 IwasakiBundleData bundle_for(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                              std::map<std::string, WeightingTables>& tables) {

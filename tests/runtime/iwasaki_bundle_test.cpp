@@ -1,4 +1,4 @@
-// Seed 000's sections of a bundle (render/bake/iwasaki_bundle): what add_iwasaki_sections writes
+// The weighting-table sections of a bundle (render/bake/iwasaki_bundle): what add_iwasaki_sections writes
 // reads back bit for bit, and a bundle with a section missing or of the wrong size is refused
 // with a BundleError naming that section (visibility masks included).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Weighting tables (seed 000 Eq. 10) against an independent quadrature of ∫G·W / ∫G, the SVD
+// Weighting tables against an independent quadrature of ∫G·W / ∫G, the SVD
 // compression against its own reported error, and the rank choice against the error target.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Small, fast seed 000 bake settings for the GLSL↔C++ parity tests: parity needs the same
+// Small, fast weighting-table bake settings for the GLSL↔C++ parity tests: parity needs the same
 // tables on both sides, not converged ones.
 #pragma once
 

@@ -71,7 +71,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 
   t0 = std::chrono::steady_clock::now();
   for (size_t i = 0; i < scene.objects.size() && opt.bake_visibility; ++i) {
-    // Every object: the cloth's for seed 000, the floor's and occluders' for their Lambertian
+    // Every object: the cloth's for its own shading, the floor's and occluders' for their Lambertian
     // shading under the same visibility (methods/lambert_visibility.h).
     auto bar = open_stage(opt, "visibility " + scene.objects[i].name);
     SceneVisibilityStats st;

@@ -1,5 +1,5 @@
 #pragma once
-// The seed 000 stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
+// The weighting-table stage of `weft bake` (and of `weft render --method iwasaki` without a bundle):
 // weighting tables for each cloth fabric, per-vertex visibility PCA for each occluded object
 // (cloth, floor, occluders), and κ when any object is occluded. Progress goes to the caller's
 // display per stage; a summary of each stage on stderr unless quiet.
@@ -46,7 +46,7 @@ struct IwasakiBakeReport {
 IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                                const IwasakiBakeOptions& options, IwasakiBakeReport* report = nullptr);
 
-// `weft bake`'s seed 000 sections: bakes for the scene's cloth fabrics (parsed from the fabric
+// `weft bake`'s weighting-table sections: bakes for the scene's cloth fabrics (parsed from the fabric
 // texts the bundle stores, preset → JSON) and adds the sections to `writer`. Returns the
 // summary line: "tables for N fabric(s) T s, visibility for M object(s) V s, kappa K s".
 // `baked`: also gets the data written (for measuring what the bundle will draw).

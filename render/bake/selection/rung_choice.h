@@ -1,5 +1,5 @@
 #pragma once
-// "No more model than the scene needs", for which of seed 000's rungs the kiosk draws: the SDF's
+// "No more model than the scene needs", for which of the weighting-table rungs the kiosk draws: the SDF's
 // linearised visibility or the masks' exact per-vertex share V_k for the sharper SGs. Neither wins
 // everywhere (docs/bench/low_sun/narrow_by_mask/): the masks' V_k is exact at the vertices where the
 // SDF's one linear boundary fails (thin occluders such as a teapot's spout, crevices, folds that

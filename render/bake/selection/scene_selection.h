@@ -1,6 +1,6 @@
 #pragma once
 // "Model no more than the scene needs" (docs/design.md §4) for a whole scene: the setting of every
-// cost knob of seed 000's method (SG count of the map's fit, tangent samples per thread, λ
+// cost knob of the weighting-table method (SG count of the map's fit, tangent samples per thread, λ
 // levels, SVD error, SDF resolution, PCA error, the cloth mesh's density for per-vertex shading,
 // per-vertex or per-pixel shading) is chosen so
 // that the image error — relative RMSE over the cloth pixels (measure/image_metrics.h) of the GPU

@@ -1,5 +1,5 @@
 #pragma once
-// A scene-level selection in the bundle (and `weft bake --choose-rung`'s record, the same section): the chosen setting's seed 000 sections (exactly the
+// A scene-level selection in the bundle (and `weft bake --choose-rung`'s record, the same section): the chosen setting's weighting-table sections (exactly the
 // tables and visibility that were measured) and its record, the `bake/selection` JSON section
 // (BUNDLE_FORMAT.md): target, whether it was reached, the measured error per view, frame time,
 // bytes, the runtime method and every knob's value.

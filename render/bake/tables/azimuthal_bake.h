@@ -1,5 +1,5 @@
 #pragma once
-// Computes seed 001's azimuthal table T_m (runtime/azimuthal_table.h holds its definition and
+// Computes the azimuthal table T_m (runtime/azimuthal_table.h holds its definition and
 // lookup) by quadrature, and measures how well its nodes interpolate.
 #include "runtime/azimuthal_table.h"
 

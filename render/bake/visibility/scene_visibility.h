@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000 §3.2's visibility bake for a whole scene: for every vertex of an object (cloth, floor,
+// The visibility bake (seed 000 §3.2) for a whole scene: for every vertex of an object (cloth, floor,
 // occluder), binary
 // visibility over its hemisphere by ray casting against the scene (Embree), the signed distance
 // function d(θ, φ) (visibility_sdf.h), and PCA over the object's vertices (visibility_pca.h).

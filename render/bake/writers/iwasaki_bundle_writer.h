@@ -1,5 +1,5 @@
 #pragma once
-// Writes seed 000's sections (runtime/iwasaki_bundle.h: names, data, reader) into a bundle.
+// Writes the weighting-table sections (runtime/iwasaki_bundle.h: names, data, reader) into a bundle.
 #include "bundle/bundle_writer.h"
 #include "runtime/iwasaki_bundle.h"
 

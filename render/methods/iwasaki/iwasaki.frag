@@ -1,4 +1,4 @@
-// Method `iwasaki`: seed 000 per pixel (iwasaki.glsl), the SDF of the triangle's three vertices
+// Method `iwasaki`: iwasaki_radiance per pixel (iwasaki.glsl), the SDF of the triangle's three vertices
 // blended by the interpolated one-hot barycentric (seed 000 §3.2 "SDF is interpolated at each pixel"),
 // and each SG cut by the triangle's own plane as well (facet_horizon_factor).
 in vec3 v_position;

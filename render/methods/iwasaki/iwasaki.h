@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000's approximation (Iwasaki et al. 2014, §3) of L_o at one cloth point under SGs:
+// The weighting-table approximation of seed 000 (Iwasaki et al. 2014, §3) of L_o at one cloth point under SGs:
 //   L_o = Σ_k μ_k Σ_j (1/N_j) Σ_{t∈C_j} T_{t,λ_k}(ξ_k, ω_o) · ∫ G_k V f_s cos θ_i dω_i      (Eq. 8–10)
 // with T for the longitudinal lobes read at the surface lobe's peak instead of ξ_k (SGs with
 // λ ≥ 8; blended down to ξ_k at λ = 2): a narrow lobe keeps only a band of the SG (iwasaki.cpp).

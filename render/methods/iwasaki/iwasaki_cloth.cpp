@@ -95,7 +95,7 @@ IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evalua
   } else if (shaders_.broad_lobe_quadrature) {
     broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
   }
-  if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs seed 000 tables (bake the bundle with `weft bake`)");
+  if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs weighting tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Methods iwasaki and iwasaki_vertex's GPU side: cloth drawn with seed 000's method (iwasaki.glsl,
+// Methods iwasaki and iwasaki_vertex's GPU side: cloth drawn with the weighting tables (iwasaki.glsl,
 // called from iwasaki.frag or iwasaki_vertex_pass.frag) from a bundle's baked
 // data: per fabric the weighting-table textures, per occluded object the per-SG visibility
 // (and, per pixel, a de-indexed mesh), κ once. Knob edits (A, γ) are uniforms; a fabric preset without baked tables
@@ -31,13 +31,13 @@
 
 namespace weft::gpu {
 
-// The programs a method drawn on seed 000's data runs (embedded shader names, in link order),
-// and the uniforms it adds: seed 000's own (iwasaki_shaders()), or a layer over it (sheer).
+// The programs a method drawn on the weighting tables runs (embedded shader names, in link order),
+// and the uniforms it adds: iwasaki's own (iwasaki_shaders()), or a layer over it (sheer).
 struct IwasakiShaders {
   std::vector<std::string_view> pixel_vs, pixel_fs;    // per pixel: the cloth's draw
   std::vector<std::string_view> pass_fs;               // per vertex: the pass (on fullscreen_triangle_vs())
   std::vector<std::string_view> vertex_vs, vertex_fs;  // per vertex: the draw interpolating the pass's results
-  // Uniforms of one object's draw beyond seed 000's, on the program in use (per pixel: the draw;
+  // Uniforms of one object's draw beyond iwasaki's, on the program in use (per pixel: the draw;
   // per vertex: the pass), given its fabric and the SGs drawn (zero-amplitude lobes left out).
   std::function<void(const GlProgram&, const Fabric&, const SgLighting&)> upload;
   // SgVisibility::compute's `above_horizon`: d looked up where iwasaki.glsl shades a lobe whose
@@ -56,7 +56,7 @@ struct IwasakiShaders {
   // (iwasaki_vertex.vert and .frag); false: one value per vertex, the draw interpolates it.
   bool facet_per_sg = false;
 };
-// Seed 000's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):
+// iwasaki's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):
 // what every program on its data links before its own parts, and what the parity tests compile.
 const std::vector<std::string_view>& iwasaki_glsl();
 IwasakiShaders iwasaki_shaders();

@@ -19,12 +19,12 @@ constexpr Rung kRungs[] = {{"", {}},
                            {"_quadrature", {.broad_lobes = true}},
                            {"_mask_quadrature", {.open_share = true, .broad_lobes = true}}};
 
-RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Rung rung) {
+RuntimeMethod weighting_table_rung(gpu::IwasakiCloth::Evaluation evaluation, Rung rung) {
   const bool per_vertex = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex;
   const MaskUse masks = rung.masks;
   RuntimeMethod m;
   m.name = std::string(per_vertex ? "iwasaki_vertex" : "iwasaki") + rung.suffix;
-  m.seed000 = Seed000Tables::required;
+  m.weighting_tables = WeightingTablesUse::required;
   m.shading = per_vertex ? Shading::per_vertex : Shading::per_pixel;
   m.masks = masks;
   m.kiosk_rung = true;
@@ -41,7 +41,7 @@ RuntimeMethod seed000_method(gpu::IwasakiCloth::Evaluation evaluation, Rung rung
 std::vector<RuntimeMethod> iwasaki_methods() {
   std::vector<RuntimeMethod> out;
   for (const auto evaluation : {gpu::IwasakiCloth::Evaluation::per_pixel, gpu::IwasakiCloth::Evaluation::per_vertex})
-    for (const Rung& rung : kRungs) out.push_back(seed000_method(evaluation, rung));
+    for (const Rung& rung : kRungs) out.push_back(weighting_table_rung(evaluation, rung));
   // iwasaki's C++ evaluation (without visibility) stands for the family in the stability table.
   out.front().cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,
                        const TableSource& tables) {

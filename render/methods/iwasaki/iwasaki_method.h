@@ -1,5 +1,5 @@
 #pragma once
-// Registry entries of seed 000's method, drawn from a bundle's seed 000 tables (iwasaki_cloth.h)
+// Registry entries of the iwasaki family, drawn from a bundle's weighting tables (iwasaki_cloth.h)
 // and sharing one C++ twin (iwasaki.h); the bench's C++ evaluation is iwasaki's, without
 // visibility, on small tables baked in memory. Eight rungs: evaluated per pixel (`iwasaki`) or
 // per vertex and interpolated (`iwasaki_vertex`: same tables, a fraction of the cost), each with

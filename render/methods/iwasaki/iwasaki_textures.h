@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000's baked data as GLES textures for methods/iwasaki/iwasaki.glsl: one fabric's weighting-table
+// The baked weighting-table data as GLES textures for methods/iwasaki/iwasaki.glsl: one fabric's weighting-table
 // factors (two RGBA32F array textures, four SVD ranks per layer), one object's visibility per
 // (vertex, SG) (RGBA32F, refilled when the lighting changes) and the sigmoid gain table κ (R32F 3D).
 // Linear filtering of float textures needs GL_OES_texture_float_linear (llvmpipe and desktop

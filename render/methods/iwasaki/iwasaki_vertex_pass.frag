@@ -1,5 +1,5 @@
-// Methods `iwasaki_vertex` and `iwasaki_vertex_mask`, step 1 (methods/iwasaki/vertex_pass.h): seed 000
-// (iwasaki.glsl) at every mesh vertex and SG, one fragment per (vertex i, SG k) at texel
+// Methods `iwasaki_vertex` and `iwasaki_vertex_mask`, step 1 (methods/iwasaki/vertex_pass.h):
+// iwasaki_radiance (iwasaki.glsl) at every mesh vertex and SG, one fragment per (vertex i, SG k) at texel
 // (i mod W, i div W + k·rows), with the vertex's own SDF values (weight 1). iwasaki_vertex.vert then
 // reads the vertex's SGs by gl_VertexID, and iwasaki_vertex.frag cuts each by the facet's plane.
 out vec4 o_radiance;

@@ -1,5 +1,5 @@
 #pragma once
-// The runtime side of seed 000's visibility (§3.2): the bundle's per-vertex PCA of the SDF
+// The runtime side of the baked SDF visibility (seed 000 §3.2): the bundle's per-vertex PCA of the SDF
 // d(θ', φ'), read where the lighting needs it. The lookup directions are the SG axes, which
 // change only with the lighting, so d and ∇d are reconstructed per (vertex, SG) on the CPU when
 // the lighting changes (SgVisibility), at the bundle's full SDF resolution, instead of

@@ -1,4 +1,4 @@
-// Method `mdfrot` (docs/design.md §4, seed 002).
+// Method `mdfrot` (docs/design.md §4).
 in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;

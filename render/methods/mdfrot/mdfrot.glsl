@@ -1,4 +1,4 @@
-// Method `mdfrot` (seed 002): alternating Ashikhmin–Shirley anisotropy per thread,
+// Method `mdfrot`: alternating Ashikhmin–Shirley anisotropy per thread,
 // tangent-curve + cross-section yarn normals, approximate MDF rotation (Eq. 9–11), averaged
 // over the weave repeat. Mirrors methods/mdfrot/mdfrot.cpp; needs sg_lighting.glsl.
 #define MDF_MAX_SAMPLES 16

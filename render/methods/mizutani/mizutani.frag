@@ -1,4 +1,4 @@
-// Method `mizutani` (seed 001, docs/design.md §4) on a scene's cloth: mizutani.glsl per pixel.
+// Method `mizutani` (docs/design.md §4) on a scene's cloth: mizutani.glsl per pixel.
 in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;

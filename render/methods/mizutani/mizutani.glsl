@@ -1,4 +1,4 @@
-// Method `mizutani` (seed 001, docs/design.md §4) in GLSL ES 3.0: the twin of
+// Method `mizutani` (docs/design.md §4) in GLSL ES 3.0: the twin of
 // render/methods/mizutani/mizutani.cpp, term by term (the comments there give the equations);
 // tests/gpu/mizutani_parity_test.cpp pins the two together. Needs microcylinder.glsl and
 // hemisphere_grid.glsl first (threads, tilts, fiber_angles; the table grids) and MAX_SGS defined.

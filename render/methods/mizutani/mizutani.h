@@ -1,5 +1,5 @@
 #pragma once
-// Seed 001's approximation (Mizutani et al., "Interactive Cloth Rendering and Appearance Editing
+// The approximation of seed 001 (Mizutani et al., "Interactive Cloth Rendering and Appearance Editing
 // under Environment Lighting", §3) of L_o at one cloth point under SGs, without visibility:
 //
 //   L_o = Σ_k μ_k Σ_j (1/N_j) Σ_{t∈C_j} T_{t,λ_k}(ξ_k, ω_o) · ∫ G_k f_s cos θ_i dω_i          (Eq. 8–9)

@@ -26,7 +26,7 @@ public:
         tables_(std::move(tables)),
         azimuthal_(checked(tables_).azimuthal()) {}
   size_t add_object(size_t, const TriangleMesh& mesh, const Fabric& fabric) override {
-    // Seed 001's W is seed 000's: a bundle's tables serve when baked for the same samples.
+    // mizutani's W is iwasaki's: a bundle's tables serve when baked for the same samples.
     const auto samples = paper_tangent_samples(fabric);
     const WeightingTables* from_bundle = nullptr;
     if (bundle_)
@@ -58,7 +58,7 @@ private:
     o.textures->bind(program);
     gpu::upload_mizutani_lights(program, sgs);
   }
-  // Seed 001's azimuthal table is in no bundle, so mizutani draws only where tables can be baked.
+  // The azimuthal table is in no bundle, so mizutani draws only where tables can be baked.
   static const TableSource& checked(const TableSource& t) {
     if (!t) throw gpu::GpuError("method mizutani bakes its tables as it starts: only the offline commands (weft render, weft bench) can show it");
     return t;
@@ -73,7 +73,7 @@ private:
 RuntimeMethod mizutani_method() {
   RuntimeMethod m;
   m.name = "mizutani";
-  m.seed000 = Seed000Tables::read_when_given;
+  m.weighting_tables = WeightingTablesUse::read_when_given;
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup& s) { return std::make_unique<MizutaniCloth>(s.bundle, s.tables); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

@@ -47,7 +47,7 @@ private:
 RuntimeMethod sgpoint_method() {
   RuntimeMethod m;
   m.name = "sgpoint";
-  m.kiosk_rung = true;  // the kiosk's method for a bundle without seed 000 tables
+  m.kiosk_rung = true;  // the kiosk's method for a bundle without weighting tables
   m.glsl = kGlsl;
   m.make_gpu = [](const gpu::ClothMethodSetup& s) { return std::make_unique<SgpointCloth>(s.tangent_samples); };
   m.cpu = [](const ClothBsdf& b, const SurfaceFrame& f, const dvec3& wo, std::span<const SphericalGaussian> sgs,

@@ -1,4 +1,4 @@
-// Method `sheer`: seed 004's layer over seed 000 per pixel (sheer.glsl), the SDF of the
+// Method `sheer`: the thin layer over iwasaki per pixel (sheer.glsl), the SDF of the
 // triangle's three vertices blended as iwasaki.frag does; premultiplied source and alpha, blended
 // over what lies behind as dst·α + src.
 in vec3 v_position;

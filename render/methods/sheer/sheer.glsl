@@ -1,5 +1,5 @@
-// Methods `sheer` and `sheer_vertex` (methods/sheer/sheer.h): seed 004's thin layer (thin.glsl)
-// over seed 000 (iwasaki.glsl): this file gives thin.glsl its thin_reflection() (iwasaki_radiance
+// Methods `sheer` and `sheer_vertex` (methods/sheer/sheer.h): the thin layer (thin.glsl)
+// over iwasaki (iwasaki.glsl): this file gives thin.glsl its thin_reflection() (iwasaki_radiance
 // with its visibility) and thin_light_visibility() (the baked SDF's share of each SG on the mesh
 // normal's side, 1 on the other). Mirrors methods/sheer/sheer.cpp. Needs microcylinder.glsl,
 // erf.glsl, sg_lighting.glsl, hemisphere_grid.glsl, iwasaki.glsl and thin.glsl before it; the

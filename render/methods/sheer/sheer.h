@@ -1,9 +1,9 @@
 #pragma once
-// Methods `sheer` and `sheer_vertex`: seed 004's optically thin layer (methods/thin/thin.h) over
-// seed 000 (methods/iwasaki/iwasaki.h) with seed 000's visibility, for sheer fabrics (a fabric's
+// Methods `sheer` and `sheer_vertex`: the optically thin layer (methods/thin/thin.h) over
+// iwasaki (methods/iwasaki/iwasaki.h) with its baked visibility, for sheer fabrics (a fabric's
 // optical_thickness τ) in the kiosk:
 //   source = (1 − α)·L_iwasaki + Σ_k [V⁺_k·E_k(n)·K_r + V⁻_k·E_k(−n)·K_t],   α = e^{−τ/μ},
-// drawn over what lies behind as dst·α + source (premultiplied). L_iwasaki is seed 000's radiance
+// drawn over what lies behind as dst·α + source (premultiplied). L_iwasaki is iwasaki's radiance
 // with its SDF-gradient visibility (per SG lobe, the side facing the eye). The single-scatter
 // terms take one share per SG and side: on the mesh normal's side, the side the bake cast its
 // visibility from, the sigmoid H of the whole SG lobe against the baked SDF at the SG axis (the
@@ -32,7 +32,7 @@ namespace weft {
 double sheer_sdf_share(const SphericalGaussian& g, const SurfaceFrame& mesh_frame, const dvec3& sdf,
                        const SigmoidGainTable* kappa);
 
-// One cloth point: `mesh_frame` as above; `visibility` (or null) is seed 000's for the reflection
+// One cloth point: `mesh_frame` as above; `visibility` (or null) is iwasaki's for the reflection
 // (built on the frame turned to face ω_o, as iwasaki_radiance's callers do) and `mesh_side`
 // one sheer_sdf_share per SG (empty: unoccluded).
 ThinShade sheer_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const ThinParams& layer,

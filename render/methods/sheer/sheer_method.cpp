@@ -10,7 +10,7 @@
 namespace weft::methods {
 
 namespace {
-// Seed 000's parts, then the layer's.
+// iwasaki's parts, then the layer's.
 std::vector<std::string_view> sheer_glsl() {
   std::vector<std::string_view> parts = gpu::iwasaki_glsl();
   parts.insert(parts.end(), {"thin.glsl", "sheer.glsl"});
@@ -45,7 +45,7 @@ gpu::IwasakiShaders sheer_shaders() {
 RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
   RuntimeMethod m;
   m.see_through = true;
-  m.seed000 = Seed000Tables::required;
+  m.weighting_tables = WeightingTablesUse::required;
   m.shading = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex ? Shading::per_vertex : Shading::per_pixel;
   m.glsl = sheer_glsl();
   m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) {

@@ -1,7 +1,7 @@
 #pragma once
 // Registry entries of the sheer methods (sheer.h): `sheer` (per pixel) and `sheer_vertex` (per
-// vertex, source and alpha interpolated), seed 004's thin layer over seed 000 with its visibility,
-// drawn from a bundle's seed 000 tables by iwasaki's GPU side (iwasaki_cloth.h) with the sheer's
+// vertex, source and alpha interpolated), the thin layer over iwasaki with its visibility,
+// drawn from a bundle's weighting tables by iwasaki's GPU side (iwasaki_cloth.h) with the sheer's
 // shaders; see-through, measured against the thin-layer reference on the curtain scenes.
 #include <string_view>
 #include <vector>

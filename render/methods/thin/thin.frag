@@ -1,4 +1,4 @@
-// Method `thin` (docs/design.md §4, seed 004): drawn last, blended dst·α + src (GL_ONE, GL_SRC_ALPHA).
+// Method `thin` (docs/design.md §4): drawn last, blended dst·α + src (GL_ONE, GL_SRC_ALPHA).
 in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;

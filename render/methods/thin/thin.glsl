@@ -1,7 +1,7 @@
-// Method `thin` (seed 004): optically thin layer — alpha e^{−τ/μ}, single-scatter diffuse
+// Method `thin`: optically thin layer — alpha e^{−τ/μ}, single-scatter diffuse
 // reflection/transmission from the SG irradiance on both sides, composed over a reflection
 // method: the program links one definition of thin_reflection() and of thin_light_visibility()
-// (thin_over_sgpoint.glsl for `thin`; methods/sheer/sheer.glsl for seed 000 with its visibility).
+// (thin_over_sgpoint.glsl for `thin`; methods/sheer/sheer.glsl for iwasaki with its visibility).
 // Mirrors methods/thin/thin.cpp; needs sg_lighting.glsl.
 // Radiance reflected by the cloth's own reflection method, n facing the viewer.
 vec3 thin_reflection(vec3 n, vec3 u, vec3 wo);

@@ -12,7 +12,7 @@
 //    Runtime: per SG and side, E_k from the SG irradiance and μ₀ the lobe's G-weighted mean
 //    cosine on that side (sg_effective_cosine, methods/sg_lights.h). Reference (reference/thin_quadrature.h): ∫ G(ω)·μ₀·K(μ₀) dω exactly.
 //  - Composition: source = (1 − α)·L_reflection + L_scatter, the reflection method's radiance
-//    scaled by the layer's coverage of the pixel (sgpoint for `thin`; seed 000 with its
+//    scaled by the layer's coverage of the pixel (sgpoint for `thin`; iwasaki with its
 //    visibility for `sheer`, methods/sheer/sheer.h).
 // Parameters: τ is the fabric's optical_thickness (a sheer preset such as polyester_voile, or a
 // scene's override); the Table II presets carry none and get τ = 0.5 (seed 004: within 1 % of

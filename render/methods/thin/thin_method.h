@@ -1,5 +1,5 @@
 #pragma once
-// Method `thin`'s registry entry and uniforms: seed 004's thin see-through layer over sgpoint's
+// Method `thin`'s registry entry and uniforms: the thin see-through layer over sgpoint's
 // microcylinder shading (thin.glsl, thin_over_sgpoint.glsl; C++ twin thin.h, fed by the same
 // ThinParams). The bench measures it against the thin-layer reference, on the curtain only.
 #include "gl/gl_program.h"

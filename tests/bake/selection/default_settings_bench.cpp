@@ -1,7 +1,7 @@
 // The default bake's image error against the paper setting's (label bench; never in CI): on the
 // showroom scenes, the worst of the scene's views (measure/selection_views.h: 3 views at 160×120)
 // for three settings measured exactly as `weft bake --target-error` measures one:
-//   paper      seed 000's setting: 9 λ levels over 4..1024, SVD 0.01, SDF 128² (floors too), PCA 0.01 rad
+//   paper      the paper's setting: 9 λ levels over 4..1024, SVD 0.01, SDF 128² (floors too), PCA 0.01 rad
 //   full       the T tables' whole range: 15 levels over 1/16..1024, otherwise the paper's
 //   default    what `weft bake` writes with no flag (render/app/bake_command.cpp): 5 levels over
 //              1/16..1024, floors and occluders at SDF 32²

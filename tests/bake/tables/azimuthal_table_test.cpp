@@ -1,4 +1,4 @@
-// Seed 001's T_m(φ_o, φ_k, λ') table against a direct adaptive quadrature of its integral.
+// The azimuthal table T_m(φ_o, φ_k, λ') against a direct adaptive quadrature of its integral.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The circular-Gaussian triple product of seed 000 §3.2: H by quadrature against brute
+// The circular-Gaussian triple product against the linear visibility: H by quadrature against brute
 // force, the sigmoid of Eq. 14 within 0.01 of H, and the paper's error table for Eq. 12.
 #include <gtest/gtest.h>
 

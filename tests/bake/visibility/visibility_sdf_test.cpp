@@ -1,4 +1,4 @@
-// SDF of binary visibility (seed 000 §3.2): the exact distance transform against brute force,
+// SDF of binary visibility: the exact distance transform against brute force,
 // the paper's signed-distance formula, gradients, and the per-vertex pipeline.
 #include <gtest/gtest.h>
 
