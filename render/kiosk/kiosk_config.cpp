@@ -12,7 +12,7 @@ void check_kiosk_config(const KioskConfig& c) {
   if (c.display != "auto" && c.display != "kms" && c.display != "headless")
     throw KioskConfigError("--display: expected auto, kms or headless, got '" + c.display + "'");
   if (c.size.size() != 2 || c.size[0] < 8 || c.size[1] < 8 || c.size[0] > 8192 || c.size[1] > 8192)
-    throw KioskConfigError("--size: expected WIDTH HEIGHT in [8, 8192]");
+    throw KioskConfigError("--width/--height: expected a frame size in [8, 8192]");
   if (!std::isfinite(c.exposure_bias) || std::abs(c.exposure_bias) > 20)
     throw KioskConfigError("--exposure-bias: EV in [-20, 20]");
   if (!(c.exposure > 0.0) || !std::isfinite(c.exposure))

@@ -27,7 +27,7 @@ KnobSources make_knob_sources(const std::vector<std::string>& names, const input
   for (const std::string& name : names) {
     if (name.rfind("sim:", 0) == 0) {
       if (!(options.sim_speed > 0 && options.sim_speed <= 1000))
-        throw KioskConfigError(options.speed_flag + ": must be in (0, 1000]");
+        throw KioskConfigError("--sim-speed: must be in (0, 1000]");
       input::SimulatedPanel sim;
       try {
         sim = input::make_simulated_panel(read_config_file(name.substr(4), options.script_flag), options.sim_speed);

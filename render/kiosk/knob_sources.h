@@ -21,7 +21,6 @@ namespace weft {
 
 struct KnobSourceOptions {
   double sim_speed = 1.0;                  // sim: scripts play this many times faster, in (0, 1000]
-  std::string speed_flag = "--sim-speed";  // the flags messages name
   std::string script_flag = "--panel sim";
   // When set, HID sources (sim: included) store each report's arrival time here
   // (steady_clock ns): the start of the kiosk's report→photon latency.

@@ -45,7 +45,7 @@ input::PanelConfig read_panel_config(const PanelMonitorConfig& c) {
   input::PanelConfig config;
   if (!c.panel_config.empty()) {
     try {
-      config = input::parse_panel_config(read_config_file(c.panel_config, "--config"), c.panel_config);
+      config = input::parse_panel_config(read_config_file(c.panel_config, "--panel-config"), c.panel_config);
     } catch (const input::PanelConfigError& e) {
       throw KioskConfigError(e.what());
     }
@@ -62,7 +62,7 @@ input::PanelConfig read_panel_config(const PanelMonitorConfig& c) {
 
 int run_panel_monitor(const PanelMonitorConfig& c, const std::atomic<bool>& stop, std::ostream& out) {
   const input::PanelConfig config = read_panel_config(c);
-  if (!(c.speed > 0 && c.speed <= 1000)) throw KioskConfigError("--speed: must be in (0, 1000]");
+  if (!(c.speed > 0 && c.speed <= 1000)) throw KioskConfigError("--sim-speed: must be in (0, 1000]");
 
   std::vector<Fabric> presets;
   for (const auto& name : list_fabric_presets(c.fabrics_dir)) presets.push_back(load_fabric_preset(name, c.fabrics_dir));
@@ -81,7 +81,6 @@ int run_panel_monitor(const PanelMonitorConfig& c, const std::atomic<bool>& stop
 
   KnobSourceOptions so;
   so.sim_speed = c.speed;
-  so.speed_flag = "--speed";
   so.script_flag = c.simulate.empty() ? "--source sim" : "--simulate";
   so.log = log;
   KnobSources made;
