@@ -11,6 +11,7 @@
 #include <string>
 
 #include "kiosk/kiosk_status.h"
+#include "support/file_text.h"
 
 namespace weft {
 namespace {
@@ -22,12 +23,7 @@ struct Ran {
   std::string out, err;
 };
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_all;
 
 class StatusCli : public ::testing::Test {
 protected:

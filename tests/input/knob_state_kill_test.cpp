@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "panel/knob_state_file.h"
+#include "support/file_text.h"
 
 namespace fs = std::filesystem;
 using namespace weft::input;
@@ -36,12 +37,7 @@ KnobPositions state_number(int k) {
   return s;
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using weft::test::read_all;
 
 int rounds() {
   if (const char* r = std::getenv("WEFT_KILL_ROUNDS")) return std::atoi(r);

@@ -13,6 +13,7 @@
 
 #include "kiosk/kiosk_status.h"
 #include "kiosk/kiosk_status_file.h"
+#include "support/file_text.h"
 
 namespace weft {
 namespace {
@@ -42,12 +43,7 @@ KioskStatus sample() {
   return s;
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_all;
 
 TEST(KioskStatus, ReadsBackAsWritten) {
   const KioskStatus s = sample();

@@ -7,18 +7,14 @@
 
 #include "bake/writers/scene_bundle_writer.h"
 #include "bundle/bundle_error.h"
+#include "support/file_text.h"
 
 using namespace weft;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using weft::test::read_all;
 
 SceneBundleInput pillow_input() {
   SceneBundleInput in;
