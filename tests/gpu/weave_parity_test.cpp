@@ -143,7 +143,7 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     // The filtered factor: every sub-sample clear of an edge (the twin's grid is the GLSL's).
     bool sub_edge = false;
     std::set<int> present;
-    for (glm::dvec2 g : {glm::dvec2(-0.125, -0.375), glm::dvec2(0.375, -0.125), glm::dvec2(0.125, 0.375), glm::dvec2(-0.375, 0.125)}) {
+    for (const glm::dvec2& g : kWeaveFootprintGrid) {
       const glm::dvec2 p = sts[i] + g.x * dxs[i] + g.y * dys[i];
       const WeaveSample w = layout.at(p.x, p.y);
       present.insert(w.thread);

@@ -67,14 +67,13 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
                            std::span<const SphericalGaussian> sgs) {
-  static constexpr glm::dvec2 kGrid[4] = {{-0.125, -0.375}, {0.375, -0.125}, {0.125, 0.375}, {-0.375, 0.125}};
   WeaveSample samples[4];
   struct Share {
     int count = 0;
     double sum = 0.0, lo = 1.0, hi = 0.0;
   } share[2];
   for (int i = 0; i < 4; ++i) {
-    const glm::dvec2 p = st + kGrid[i].x * dx + kGrid[i].y * dy;
+    const glm::dvec2 p = st + kWeaveFootprintGrid[i].x * dx + kWeaveFootprintGrid[i].y * dy;
     samples[i] = layout.at(p.x, p.y);
     if (samples[i].thread < 0) continue;
     Share& s = share[samples[i].thread];

@@ -44,6 +44,8 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
 // other along its float is shaded once at their mean, weighted by its share of them, one whose
 // samples spread further at each of them.
 inline constexpr double kWeaveArcSpread = 0.125;  // WEAVE_ARC_SPREAD in weave_ratio.glsl
+// The four rotated-grid points, in units of dx and dy (the `grid` of weave_ratio.glsl).
+inline constexpr glm::dvec2 kWeaveFootprintGrid[4] = {{-0.125, -0.375}, {0.375, -0.125}, {0.125, 0.375}, {-0.375, 0.125}};
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
                            std::span<const SphericalGaussian> sgs);
