@@ -161,4 +161,17 @@ bool EglContext::has_gl_extension(const char* name) const {
   return false;
 }
 
+TimerQueryFunctions timer_query_functions() {
+  GLint n = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+  bool has = false;
+  for (GLint i = 0; i < n && !has; ++i)
+    has = std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i)), "GL_EXT_disjoint_timer_query") == 0;
+  if (!has) return {};
+  TimerQueryFunctions f;
+  f.query_counter = reinterpret_cast<void (*)(GLuint, GLenum)>(eglGetProcAddress("glQueryCounterEXT"));
+  f.get_query_object_ui64 = reinterpret_cast<void (*)(GLuint, GLenum, GLuint64*)>(eglGetProcAddress("glGetQueryObjectui64vEXT"));
+  return f;
+}
+
 }  // namespace weft::gpu

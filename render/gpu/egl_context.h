@@ -7,6 +7,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include "gl/frame_profile.h"
 #include "gl/gl_error.h"
 
 struct gbm_device;
@@ -41,5 +42,8 @@ private:
   EGLContext context_ = EGL_NO_CONTEXT;
   EGLSurface surface_ = EGL_NO_SURFACE;
 };
+
+// The current context's timer queries (EXT_disjoint_timer_query), all null where it has none.
+TimerQueryFunctions timer_query_functions();
 
 }  // namespace weft::gpu

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "gl/frame_profile.h"
 #include "gpu/egl_context.h"
 #include "image/tone_map.h"
 #include "methods/fabric_uniforms.h"
@@ -151,6 +152,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
   // Only cloth writes alpha (is_cloth_alpha): the backdrop and Lambertian surfaces leave it 0.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   if (see_through || backdrop_ == Backdrop::showroom) {
+    const StageScope stage(Stage::backdrop);
     background_program_->use();
     upload_sg_lighting(*background_program_, backdrop_ == Backdrop::showroom ? backdrop_sgs_ : sgs_);
     const glm::mat4 inv = glm::inverse(vp);
@@ -173,8 +175,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
         glDepthMask(GL_FALSE);
       }
       if (o->cloth) {
+        const StageScope stage(Stage::cloth);
         cloth_->draw(o->handle, vp, glm::vec3(camera.position), sgs_);
       } else {
+        const StageScope stage(Stage::surfaces);
         lambert_program_->use();
         glUniformMatrix4fv(lambert_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
         const glm::dvec3 a = o->source->albedo;
@@ -188,8 +192,10 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     }
     if (pass == 0 && weave_on_ && !see_through)
       for (auto& o : objects_)
-        if (o->cloth && weave_->resolves(o->weave_handle, camera, height))
+        if (o->cloth && weave_->resolves(o->weave_handle, camera, height)) {
+          const StageScope stage(Stage::weave);
           weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), sgs_);
+        }
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

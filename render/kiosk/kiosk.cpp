@@ -13,6 +13,7 @@
 
 #include "bundle/bundle_fallback.h"
 #include "gl/gl_error.h"
+#include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "image/image.h"
 #include "image/tone_map.h"
@@ -141,6 +142,13 @@ void Kiosk::start_renderer() {
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
+  if (config_.profile != "off" && !profile_) {
+    const gpu::TimerQueryFunctions timers = config_.profile == "cpu" ? gpu::TimerQueryFunctions{} : gpu::timer_query_functions();
+    if (config_.profile == "gpu" && !timers.available())
+      kiosk_log_warning("--profile gpu: the driver has no GPU timer queries (EXT_disjoint_timer_query); timing on the CPU");
+    profile_ = std::make_unique<gpu::FrameProfile>(timers);
+    kiosk_log_info(std::string("frame profile by ") + profile_->clock_name());
+  }
 }
 
 void Kiosk::start_probe() {
@@ -252,6 +260,7 @@ void Kiosk::shut_down() {
                 ticks_, drawn_, frame_ms_.median(1), latency_ms_.size(), latency_ms_.median(), latency_ms_.max(),
                 rss_start_kib_, resident_set_kib());
   kiosk_log_info(line);
+  if (profile_ && profile_->frames() > 0) kiosk_log_info("frame profile: " + profile_->summary());
   write_status("stopping");
   notifier_.stopping("stopping");
 }
@@ -351,11 +360,19 @@ void Kiosk::relight(const SgLighting& sgs) {
 
 void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
+  if (profile_) profile_->begin_frame();
   target_->bind();
   renderer_->draw(turned_about_z(dolly(scene_->scene.camera, closeup_, zoom_shown_), turn_deg), width_, height_);
-  if (exposure_.requested()) exposure_.meter_bound_framebuffer(width_, height_);
+  if (exposure_.requested()) {
+    const gpu::StageScope stage(gpu::Stage::metering);
+    exposure_.meter_bound_framebuffer(width_, height_);
+  }
   exposure_.ease(Clock::now());
-  display_->present(*target_, exposure_.shown());
+  {
+    const gpu::StageScope stage(gpu::Stage::present);
+    display_->present(*target_, exposure_.shown());
+  }
+  if (profile_) profile_->end_frame();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   frame_ms_.push(ms);
   since_stats_ms_.push(ms);
@@ -378,6 +395,10 @@ void Kiosk::log_stats(Clock::time_point now) {
                 static_cast<unsigned long long>(probe_ ? probe_->updates() : 0), lighting_->prepared(),
                 lighting_->last_ms());
   kiosk_log_info(line);
+  if (profile_ && profile_->frames() > 0) {
+    kiosk_log_info("frame profile: " + profile_->summary());
+    profile_->reset();
+  }
   last_stats_ = now;
   since_stats_ms_.clear();
 }

@@ -45,6 +45,7 @@
 #include "runtime/iwasaki_bundle.h"
 #include "runtime/scene_bundle.h"
 #include "core/fabric.h"
+#include "gl/frame_profile.h"
 #include "gpu/scene_renderer.h"
 #include "kiosk/bundle_swap.h"
 #include "kiosk/exposure_meter.h"
@@ -136,6 +137,7 @@ private:
   std::vector<Fabric> cloth_fabrics_;  // the fabric of each cloth object
   std::unique_ptr<gpu::SceneRenderer> renderer_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
+  std::unique_ptr<gpu::FrameProfile> profile_;  // --profile: null when off
 
   // The light: the bundle's SGs or the probe's latest fit, turned by the environment knob.
   SgLighting room_light_;

@@ -30,6 +30,9 @@ struct KioskConfig {
   double exposure_bias = 0.0;
   double exposure = 1.0;
   double stats_every = 300;               // seconds between stats lines; 0: none
+  // The per-stage frame profile (gl/frame_profile.h) in the stats lines and the last line:
+  // off, auto (GPU timestamps where the driver has them), gpu or cpu.
+  std::string profile = "off";
   std::string probe = "none";             // none, camera[:ID] or mock:MAP.exr[,MAP.exr...]
   double probe_switch_s = 0;              // mock probe with several maps: seconds between switches
   std::string status_file;                // the health file (kiosk/kiosk_status_file.h); empty: none

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/frame_profile.h"
 #include "gl/gl_error.h"
 
 namespace weft::gpu {
@@ -40,6 +41,7 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
+  const StageScope stage(Stage::vertex_pass);
   // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
