@@ -55,6 +55,10 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--method", a->method, "Runtime method: auto (with weighting tables: sheer_vertex if a cloth object is a sheer, else iwasaki_vertex_quadrature where masks cover the occluded cloth (weft bake writes them unless --no-masks) or none is occluded (iwasaki_vertex_mask_quadrature where weft bake --choose-rung measured it closer), else iwasaki_vertex; iwasaki or iwasaki_quadrature where the bake's --target-error search chose per pixel; sgpoint without tables), iwasaki (per pixel), iwasaki_vertex (per vertex: same tables, a fraction of the cost), iwasaki_mask or iwasaki_vertex_mask (visibility from the bundle's masks), iwasaki_quadrature or iwasaki_vertex_quadrature (the broad sky lobes by quadrature per vertex, visibility from the masks), iwasaki_mask_quadrature or iwasaki_vertex_mask_quadrature (the same, the sharper lobes with the masks' visibility too), sheer, sheer_vertex (a sheer over what lies behind) or sgpoint")->capture_default_str();
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
+  sub->add_option("--vertex-refresh", a->vertex_refresh,
+                  "While only the turntable moves, recompute the cloth's per-vertex shading over this many frames "
+                  "(each frame a share; knob, light and zoom changes recompute all at once); 1: every vertex every frame")
+      ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "
                   "metering, present): off, auto (GPU timer queries where the driver has them, else CPU time), gpu or cpu")

@@ -57,9 +57,12 @@ double sg_sphere_integral(double sharpness) { return 4.0 * kPi * one_minus_exp_o
 
 namespace {
 // Tokuyoshi 2022's lerp factor between the c = −1 and c = +1 ends, with its fitted steepness.
-double hemisphere_lerp_factor(double lambda, double c) {
+double hemisphere_steepness(double lambda) {
   constexpr double A = 0.6517328826907056, B = 1.3418280033141288, C = 7.2216687798956709;
-  const double t = lambda * std::sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
+  return lambda * std::sqrt((0.5 * lambda + A) / ((lambda + B) * lambda + C));
+}
+double hemisphere_lerp_factor(double lambda, double c) {
+  const double t = hemisphere_steepness(lambda);
   return t < kSmallSteepness ? 0.5 + 0.5 * c : 0.5 + 0.5 * std::erf(t * c) / std::erf(t);
 }
 }  // namespace
@@ -73,9 +76,18 @@ double sg_hemisphere_integral(double sharpness, double cos_axis_normal) {
 }
 
 double sg_hemisphere_fraction(double sharpness, double cos_axis_normal) {
-  const double lambda = sharpness, c = glm::clamp(cos_axis_normal, -1.0, 1.0);
-  const double e = std::exp(-lambda);
-  return (e + (1.0 - e) * hemisphere_lerp_factor(lambda, c)) / (1.0 + e);
+  return sg_hemisphere_fraction(sg_hemisphere_terms(sharpness), cos_axis_normal);
+}
+
+SgHemisphereTerms sg_hemisphere_terms(double sharpness) {
+  const double lambda = sharpness, t = hemisphere_steepness(lambda);
+  return {t, t < kSmallSteepness ? 0.0 : 1.0 / std::erf(t), std::exp(-lambda)};
+}
+
+double sg_hemisphere_fraction(const SgHemisphereTerms& terms, double cos_axis_normal) {
+  const double c = glm::clamp(cos_axis_normal, -1.0, 1.0), e = terms.exp_minus_lambda;
+  const double lerp = terms.inverse_erf == 0.0 ? 0.5 + 0.5 * c : 0.5 + 0.5 * std::erf(terms.steepness * c) * terms.inverse_erf;
+  return (e + (1.0 - e) * lerp) / (1.0 + e);
 }
 
 double sg_clamped_cosine_integral(double sharpness, double cos_axis_normal) {

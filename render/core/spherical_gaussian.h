@@ -49,6 +49,14 @@ double sg_hemisphere_integral(double sharpness, double cos_axis_normal);
 // sg_sphere_integral, = (e^{−λ} + (1 − e^{−λ})·factor)/(1 + e^{−λ}) with the same fitted factor.
 // 1/(1 + e^{λ}) at c = −1, ½ at c = 0, 1/(1 + e^{−λ}) at c = 1; → ½erfc(−c√(λ/2)) for sharp lobes.
 double sg_hemisphere_fraction(double sharpness, double cos_axis_normal);
+// sg_hemisphere_fraction's factors that depend on λ alone: the lerp's steepness t, 1/erf(t) (0
+// where t is so small the lerp is linear) and e^{−λ}. A shader that evaluates the fraction of one
+// lobe at many points takes them once per lobe (iwasaki_vertex.frag's u_sg_hemisphere_terms).
+struct SgHemisphereTerms {
+  double steepness = 0.0, inverse_erf = 0.0, exp_minus_lambda = 1.0;
+};
+SgHemisphereTerms sg_hemisphere_terms(double sharpness);
+double sg_hemisphere_fraction(const SgHemisphereTerms& terms, double cos_axis_normal);
 
 // ∫_{S²} exp(λ(ω·ξ−1)) max(ω·n, 0) dω with c = ξ·n: the clamped-cosine (irradiance) convolution.
 // Tokuyoshi et al. 2024 ("Hierarchical Light Sampling with Accurate Spherical Gaussian Lighting"):

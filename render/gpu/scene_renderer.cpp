@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gl/frame_profile.h"
+#include "gpu/backdrop_cube.h"
 #include "gpu/egl_context.h"
 #include "image/tone_map.h"
 #include "methods/fabric_uniforms.h"
@@ -113,6 +114,7 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
     throw GpuError("lighting prepared for another scene");
   sgs_ = lighting.sgs;
   backdrop_sgs_ = softened_environment(sgs_);
+  if (backdrop_cube_) backdrop_cube_->fill(backdrop_sgs_);
   for (size_t k = 0; k < objects_.size(); ++k) {
     Object& o = *objects_[k];
     if (!o.cloth)
@@ -123,6 +125,14 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
 }
 
 void SceneRenderer::set_lighting(const SgLighting& sgs) { set_lighting(prepare_lighting(sgs)); }
+
+void SceneRenderer::set_backdrop(Backdrop backdrop) {
+  backdrop_ = backdrop;
+  if (backdrop_ == Backdrop::showroom && !backdrop_cube_) {
+    backdrop_cube_ = std::make_unique<BackdropCube>();
+    backdrop_cube_->fill(backdrop_sgs_);
+  }
+}
 
 void SceneRenderer::set_weave(bool on) {
   if (on && !weave_) {
@@ -151,17 +161,32 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // Only cloth writes alpha (is_cloth_alpha): the backdrop and Lambertian surfaces leave it 0.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-  if (see_through || backdrop_ == Backdrop::showroom) {
-    const StageScope stage(Stage::backdrop);
-    background_program_->use();
-    upload_sg_lighting(*background_program_, backdrop_ == Backdrop::showroom ? backdrop_sgs_ : sgs_);
-    const glm::mat4 inv = glm::inverse(vp);
-    glUniformMatrix4fv(background_program_->uniform("u_inverse_view_projection"), 1, GL_FALSE, glm::value_ptr(inv));
-    glUniform2f(background_program_->uniform("u_viewport"), float(width), float(height));
-    glDisable(GL_DEPTH_TEST);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
   glEnable(GL_DEPTH_TEST);
+
+  // The backdrop after the opaque surfaces, at the far plane behind them (depth test ≤ 1 against
+  // the cleared depth): only the pixels nothing covers pay for it; see-through cloth blends over it.
+  auto draw_backdrop = [&] {
+    if (backdrop_ != Backdrop::showroom && !see_through) return;
+    const StageScope stage(Stage::backdrop);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthRangef(1.0f, 1.0f);
+    glDepthMask(GL_FALSE);
+    if (backdrop_ == Backdrop::showroom) {
+      backdrop_cube_->draw(glm::inverse(vp), width, height);
+    } else {  // the environment exactly, as the reference sees it
+      background_program_->use();
+      upload_sg_lighting(*background_program_, sgs_);
+      const glm::mat4 inv = glm::inverse(vp);
+      glUniformMatrix4fv(background_program_->uniform("u_inverse_view_projection"), 1, GL_FALSE, glm::value_ptr(inv));
+      glUniform2f(background_program_->uniform("u_viewport"), float(width), float(height));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthRangef(0.0f, 1.0f);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_DEPTH_TEST);
+  };
 
   // Opaque surfaces first; see-through cloth last, blended over them without writing depth.
   for (int pass = 0; pass < 2; ++pass) {
@@ -196,6 +221,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
           const StageScope stage(Stage::weave);
           weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), sgs_);
         }
+    if (pass == 0) draw_backdrop();
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

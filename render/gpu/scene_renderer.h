@@ -19,6 +19,7 @@
 
 namespace weft::gpu {
 
+class BackdropCube;
 class WeaveLayer;
 
 // What is drawn behind the scene. `measure`: nothing (black) except behind see-through cloth,
@@ -66,7 +67,12 @@ public:
   size_t shadowed_lambertian_objects() const;
   // Knob edits: new thread albedo / gloss for a cloth object, no re-bake.
   void set_fabric(size_t cloth_index, const Fabric& fabric);
-  void set_backdrop(Backdrop backdrop) { backdrop_ = backdrop; }  // default: measure
+  void set_backdrop(Backdrop backdrop);  // default: measure
+  // Temporal reuse of the cloth's per-vertex work (ClothMethod::set_vertex_refresh): each draw
+  // recomputes 1/shares of the vertices; refresh_all(): every vertex on the next draw (the eye
+  // jumped). Default 1: all, every draw.
+  void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
+  void refresh_all() { cloth_->refresh_all(); }
   // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
   // than about a repeat, each point shows the thread that lies there. Off by default; a
   // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
@@ -84,6 +90,7 @@ private:
   std::unique_ptr<ClothMethod> cloth_;  // the method's GPU side: draws every cloth object
   std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
   SgLighting sgs_, backdrop_sgs_;
+  std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
   bool weave_on_ = false;
   Backdrop backdrop_ = Backdrop::measure;

@@ -140,6 +140,7 @@ void Kiosk::start_renderer() {
   const SceneBundle& sb = *scene_;
   cloth_fabrics_ = cloth_fabrics(sb);
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
+  pivot_ = turntable_pivot(sb.scene);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (config_.profile != "off" && !profile_) {
@@ -313,6 +314,7 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   room_light_ = r.room_light;
   scene_ = std::move(r.bundle.scene);
   closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
+  pivot_ = turntable_pivot(scene_->scene);
   shown_ = {config_.bundle, false, ""};
   if (knobs_differ.empty())
     kiosk_log_info("knob state carried over (the same fabric presets and the same fabric on the cloth)");
@@ -361,8 +363,12 @@ void Kiosk::relight(const SgLighting& sgs) {
 void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
   if (profile_) profile_->begin_frame();
+  if (zoom_shown_ != zoom_drawn_) renderer_->refresh_all();  // the dolly moves the eye far in a frame
+  renderer_->set_vertex_refresh(config_.vertex_refresh);
   target_->bind();
-  renderer_->draw(turned_about_z(dolly(scene_->scene.camera, closeup_, zoom_shown_), turn_deg), width_, height_);
+  // Far away the camera circles the product; all the way in, the point it looks at up close.
+  const Camera camera = dolly(scene_->scene.camera, closeup_, zoom_shown_);
+  renderer_->draw(turned_about_z(camera, turn_deg, glm::mix(pivot_, camera.target, zoom_shown_)), width_, height_);
   if (exposure_.requested()) {
     const gpu::StageScope stage(gpu::Stage::metering);
     exposure_.meter_bound_framebuffer(width_, height_);
@@ -381,7 +387,9 @@ void Kiosk::draw_frame(double turn_deg) {
 void Kiosk::meter_as_baked() {
   target_->bind();
   const int mw = std::max(8, width_ / 4), mh = std::max(8, height_ / 4);
+  renderer_->set_vertex_refresh(1);
   renderer_->draw(scene_->scene.camera, mw, mh);
+  renderer_->refresh_all();  // kept per-vertex values are for this camera, not the next frame's
   exposure_.restart();  // shown at once, not eased in from another scene's
   exposure_.meter_bound_framebuffer(mw, mh);
 }

@@ -159,6 +159,7 @@ private:
   double shown_turn_ = 0;
   // The zoom knob: the close-up of the scene shown, the knobs' zoom, the zoom shown (eased).
   Camera closeup_;
+  glm::dvec3 pivot_{0.0};  // the turntable's (turntable.h)
   double zoom_target_ = 0, zoom_shown_ = 0, zoom_drawn_ = 0;
   Clock::time_point zoom_step_;
   long ticks_ = 0, drawn_ = 0, knob_changes_ = 0;

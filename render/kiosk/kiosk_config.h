@@ -29,6 +29,10 @@ struct KioskConfig {
   // this bias in EV. `exposure` multiplies on top: the same as a bias of log2(exposure) EV.
   double exposure_bias = 0.0;
   double exposure = 1.0;
+  // Temporal reuse of the per-vertex passes while only the turntable moves the camera
+  // (gpu::SceneRenderer::set_vertex_refresh): each frame recomputes 1/vertex_refresh of the cloth's
+  // vertices; a knob, lighting or zoom change recomputes all at once. 1: all, every frame.
+  int vertex_refresh = 1;
   double stats_every = 300;               // seconds between stats lines; 0: none
   // The per-stage frame profile (gl/frame_profile.h) in the stats lines and the last line:
   // off, auto (GPU timestamps where the driver has them), gpu or cpu.

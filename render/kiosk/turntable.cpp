@@ -1,6 +1,7 @@
 #include "kiosk/turntable.h"
 
 #include <cmath>
+#include <limits>
 
 namespace weft {
 
@@ -11,11 +12,25 @@ SgLighting rotated_about_z(const SgLighting& sgs, double deg) {
   return out;
 }
 
-Camera turned_about_z(const Camera& camera, double deg) {
+glm::dvec3 turntable_pivot(const Scene& scene) {
+  const bool any_cloth = !scene.cloth_objects().empty();
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const SceneObject& o : scene.objects)
+    if (o.is_cloth() || !any_cloth)
+      for (const glm::dvec3& p : o.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+}
+
+Camera turned_about_z(const Camera& camera, double deg, const glm::dvec3& pivot) {
   const double a = glm::radians(deg), c = std::cos(a), s = std::sin(a);
+  auto turn = [&](const glm::dvec3& p) {
+    const glm::dvec3 d = p - pivot;
+    return pivot + glm::dvec3(c * d.x - s * d.y, s * d.x + c * d.y, d.z);
+  };
   Camera out = camera;
-  const glm::dvec3 d = camera.position - camera.target;
-  out.position = camera.target + glm::dvec3(c * d.x - s * d.y, s * d.x + c * d.y, d.z);
+  out.position = turn(camera.position);
+  out.target = turn(camera.target);
+  out.up = glm::dvec3(c * camera.up.x - s * camera.up.y, s * camera.up.x + c * camera.up.y, camera.up.z);  // no roll
   return out;
 }
 

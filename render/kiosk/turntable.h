@@ -8,7 +8,12 @@ namespace weft {
 
 // Every SG's axis turned by `deg` degrees about +Z.
 SgLighting rotated_about_z(const SgLighting& sgs, double deg);
-// The camera's position turned by `deg` degrees about the vertical through its target.
-Camera turned_about_z(const Camera& camera, double deg);
+// What the turntable turns about: the centre of the cloth objects' bounds (the product), of every
+// object's where the scene has no cloth; the origin for an empty scene.
+glm::dvec3 turntable_pivot(const Scene& scene);
+// The camera's position and target turned by `deg` degrees about the vertical through `pivot`:
+// the camera circles the product and keeps looking at it as it did (a glTF camera's target is
+// only a point ahead of it, not the product).
+Camera turned_about_z(const Camera& camera, double deg, const glm::dvec3& pivot);
 
 }  // namespace weft

@@ -44,6 +44,14 @@ public:
   virtual void set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& prepared) {
     (void)handle, (void)sgs, (void)prepared;
   }
+  // Temporal reuse of per-vertex work: each draw recomputes 1/shares of each object's vertices
+  // (the next share each time) and keeps the others' values from earlier draws, so a camera
+  // moving slowly (the turntable) costs a share of the pass per frame. A change of fabric or
+  // lighting recomputes every vertex on the next draw; refresh_all() asks the same after the eye
+  // jumped. shares = 1 (the default): every vertex every draw. A method without per-vertex
+  // work ignores both.
+  virtual void set_vertex_refresh(int shares) { (void)shares; }
+  virtual void refresh_all() {}
   // Draws the object into the bound framebuffer; blending and depth writes are the caller's.
   virtual void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) = 0;
 };

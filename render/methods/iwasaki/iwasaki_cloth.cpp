@@ -32,6 +32,12 @@ SgLighting shaded(const SgLighting& sgs) {
   return out;
 }
 
+bool identical_lighting(const SgLighting& a, const SgLighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness || a[i].amplitude != b[i].amplitude) return false;
+  return true;
+}
 bool same_lighting(const SgLighting& a, const SgLighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
@@ -85,6 +91,7 @@ struct IwasakiCloth::Object {
   const TriangleMesh* source = nullptr;
   std::unique_ptr<SgVisibilityTexture> sg_visibility;
   SgLighting computed_for;
+  SgLighting passed_for;  // the lighting the per-vertex pass's kept values were computed under
 };
 
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation, IwasakiShaders shaders)
@@ -207,6 +214,12 @@ void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
         throw GpuError("method iwasaki: the tables of fabric '" + fabric.name + "' were baked for other tangent samples");
   o.bsdf = std::move(bsdf);
   o.tables = &t;
+  if (o.pass) o.pass->invalidate();
+}
+
+void IwasakiCloth::refresh_all() {
+  for (auto& o : objects_)
+    if (o->pass) o->pass->invalidate();
 }
 
 void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
@@ -218,6 +231,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     o.sg_visibility->upload(values);
     if (o.broad_mask) o.broad_bits->upload(values.broad);
     o.computed_for = drawn;
+  }
+  if (o.pass && !identical_lighting(o.passed_for, drawn)) {
+    o.pass->invalidate();
+    o.passed_for = drawn;
   }
   const WeightingTables& t = o.tables->tables();
   // Lighting-only work, once per draw on the CPU: σ_k and the λ levels of each SG.
@@ -271,7 +288,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   if (broad_pass_) {  // per pixel: the broad lobes' part per vertex first (units 4–6: the pass's inputs)
     set_up(*broad_pass_);
     glUniform1i(broad_pass_->uniform("u_pass_narrow"), 0);
-    o.pass->run(*broad_pass_, 4);
+    o.pass->run_share(*broad_pass_, 4, 1, vertex_shares_);
   }
   set_up(program_);
   if (!o.pass) {
@@ -285,7 +302,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   }
   glUniform1i(program_.uniform("u_pass_narrow"), 1);
   if (!shaders_.facet_per_sg) {
-    o.pass->run(program_, 4);
+    o.pass->run_share(program_, 4, 1, vertex_shares_);
     draw_program_->use();
     glUniformMatrix4fv(draw_program_->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
     o.pass->bind_result(*draw_program_, 0);
@@ -293,7 +310,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     return;
   }
   // One block of the pass per SG; the draw sums them, each cut by the facet's plane.
-  o.pass->run(program_, 4, count);
+  o.pass->run_share(program_, 4, count, vertex_shares_);
   const GlProgram& d = facet_draw(count);
   d.use();
   glUniformMatrix4fv(d.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
@@ -302,6 +319,12 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   if (count > 0) {
     glUniform3fv(d.uniform("u_sg_axis"), count, axes.data());
     glUniform1fv(d.uniform("u_sg_sharpness"), count, sharpness.data());
+    std::vector<float> terms;
+    for (const auto& g : drawn) {
+      const SgHemisphereTerms h = sg_hemisphere_terms(g.sharpness);
+      terms.insert(terms.end(), {float(h.steepness), float(h.inverse_erf), float(h.exp_minus_lambda)});
+    }
+    glUniform3fv(d.uniform("u_sg_hemisphere_terms"), count, terms.data());
     glUniform1iv(d.uniform("u_sg_broad"), count, broad.data());
   }
   o.pass->bind_result(d, 0);

@@ -78,6 +78,8 @@ public:
   std::optional<SgVisibility> prepare_lighting(size_t handle, const SgLighting& sgs) const override;  // empty: unoccluded
   void set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) override;
   bool has_visibility(size_t handle) const;
+  void set_vertex_refresh(int shares) override { vertex_shares_ = shares < 1 ? 1 : shares; }
+  void refresh_all() override;
 
 private:
   struct Object;
@@ -94,6 +96,7 @@ private:
   std::unique_ptr<KappaTexture> kappa_;
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;
+  int vertex_shares_ = 1;
 };
 
 }  // namespace weft::gpu

@@ -5,6 +5,7 @@
 // as it is: its mask bits hold the horizon. Needs erf.glsl, sg_lighting.glsl and
 // facet_horizon.glsl before it; C++ twin: iwasaki.h's facet_interpolated_radiance.
 uniform vec3 u_eye;
+uniform vec3 u_sg_hemisphere_terms[MAX_SGS];  // sg_hemisphere_terms(λ_k), once per draw
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_sg_red[SG_GROUPS];
@@ -21,7 +22,7 @@ void main() {
     for (int c = 0; c < 4; ++c) {
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
-      f[c] = u_sg_broad[k] != 0 ? 1.0 : facet_horizon_factor(u_sg_sharpness[k], u_sg_axis[k], ns, ng);
+      f[c] = u_sg_broad[k] != 0 ? 1.0 : facet_horizon_factor_terms(u_sg_hemisphere_terms[k], u_sg_axis[k], ns, ng);
     }
     sum += vec3(dot(v_sg_red[g], f), dot(v_sg_green[g], f), dot(v_sg_blue[g], f));
   }

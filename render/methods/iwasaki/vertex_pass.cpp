@@ -41,6 +41,28 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
+  blocks = std::max(blocks, 1);
+  draw_blocks(program, first_unit, blocks, 0, count_);
+  valid_blocks_ = blocks;
+  next_share_ = 0;
+  last_share_ = {0, count_};
+}
+
+void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks, int shares) {
+  blocks = std::max(blocks, 1);
+  if (shares <= 1 || valid_blocks_ != blocks) {
+    run(program, first_unit, blocks);
+    return;
+  }
+  shares = std::min(shares, count_);
+  const int s = next_share_ % shares;
+  const int begin = int(long(count_) * s / shares), end = int(long(count_) * (s + 1) / shares);
+  draw_blocks(program, first_unit, blocks, begin, end);
+  next_share_ = (s + 1) % shares;
+  last_share_ = {begin, end};
+}
+
+void VertexPass::draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end) {
   const StageScope stage(Stage::vertex_pass);
   // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
@@ -56,6 +78,8 @@ void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
                      std::to_string(max_size));
     target_ = std::make_unique<OffscreenTarget>(width_, height_ * blocks, /*full_float=*/true);
     target_blocks_ = blocks;
+    valid_blocks_ = 0;
+    begin = 0, end = count_;  // a new target holds nothing to keep
   }
   const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
   const GlTexture* inputs[3] = {&position_, &normal_, &warp_};
@@ -72,7 +96,30 @@ void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
   glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (begin == 0 && end >= count_) {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    // Vertices [begin, end) are texels of whole rows between a partial first and last row: up to
+    // three rectangles in each block.
+    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
+    auto rect = [&](int x0, int x1, int y0, int y1) {
+      if (x1 <= x0 || y1 <= y0) return;
+      for (int b = 0; b < blocks; ++b) {
+        glScissor(x0, b * height_ + y0, x1 - x0, y1 - y0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+    };
+    if (r0 == r1) {
+      rect(c0, c1, r0, r0 + 1);
+    } else {
+      rect(c0, width_, r0, r0 + 1);
+      rect(0, width_, r0 + 1, r1);
+      rect(0, c1, r1, r1 + 1);
+    }
+    if (!scissor) glDisable(GL_SCISSOR_TEST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   if (depth) glEnable(GL_DEPTH_TEST);

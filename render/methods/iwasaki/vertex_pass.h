@@ -6,6 +6,7 @@
 // vertex stage, but llvmpipe shades vertices on one thread and fragments on all of them, and a
 // GPU shades each vertex once instead of once per cached batch.
 #include <memory>
+#include <utility>
 
 #include "gl/gl_program.h"
 #include "methods/iwasaki/iwasaki_textures.h"
@@ -23,6 +24,16 @@ public:
   // caller's framebuffer, viewport, depth test and blending are restored afterwards. Throws
   // GpuError where the blocks do not fit the GL's largest texture.
   void run(const GlProgram& program, int first_unit, int blocks = 1);
+  // Temporal reuse: the same pass over one share of the vertices, the next share each call, so
+  // every vertex is recomputed once every `shares` calls and the others keep their last values
+  // (a slowly moving camera changes them little; methods/cloth_method.h's set_vertex_refresh). The
+  // whole pass runs instead when nothing valid is kept: the first run, a larger target, a run
+  // with other blocks, or after invalidate(). shares ≤ 1: run().
+  void run_share(const GlProgram& program, int first_unit, int blocks, int shares);
+  // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
+  void invalidate() { valid_blocks_ = 0; }
+  // The vertices [begin, end) the last run_share recomputed (all after a whole pass).
+  std::pair<int, int> last_share() const { return last_share_; }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
 
@@ -31,6 +42,10 @@ private:
   GlTexture position_, normal_, warp_;
   std::unique_ptr<OffscreenTarget> target_;
   int target_blocks_ = 0;
+  int valid_blocks_ = 0;  // blocks holding values from a whole pass (0: none)
+  int next_share_ = 0;
+  std::pair<int, int> last_share_{0, 0};
+  void draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end);
 };
 
 }  // namespace weft::gpu

@@ -1,0 +1,180 @@
+// Benchmark (label bench, not run in CI but for its smoke case): the kiosk's frame on baked
+// bundles, the way `weft run` draws it (kiosk renderer: showroom backdrop, weave layer armed), on
+// a turntable at 6°/s sampled at 15 frames per second (0.4° a frame), 640×480 headless.
+//  - per rung: the median frame and its stages (gl/frame_profile.h, CPU clock on llvmpipe);
+//  - per rung with per-vertex passes: the same with the passes' temporal reuse over R frames
+//    (gpu::SceneRenderer::set_vertex_refresh), and what reuse costs in accuracy: each frame
+//    against a frame with every vertex recomputed at the same angle, relative RMSE over the
+//    cloth pixels (mean and worst over the timed frames);
+//  - the first frame (renderer made, lighting set, drawn) and a still scene's cost (nothing moved:
+//    the kiosk draws nothing; here the cost of a frame with no pass work left is not measured).
+// WEFT_KIOSK_BUNDLES: "name=FILE,name=FILE" (default: the showroom and the pillow, baked here with
+// the showroom's coarse grids);
+// WEFT_KIOSK_METHODS: rungs ("auto,iwasaki_vertex,sheen"); WEFT_KIOSK_REFRESH: shares ("1,4,8,16");
+// WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include <unistd.h>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "bundle/bundle_reader.h"
+#include "gl/frame_profile.h"
+#include "gl/offscreen_target.h"
+#include "gpu/egl_context.h"
+#include "kiosk/kiosk_bundle.h"
+#include "kiosk/kiosk_renderer.h"
+#include "kiosk/turntable.h"
+
+using namespace weft;
+
+namespace {
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+std::string env_or(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? v : fallback;
+}
+
+// Relative RMSE of `a` against `b` over the pixels both drew cloth on (alpha > 0).
+double cloth_rmse(const std::vector<float>& a, const std::vector<float>& b) {
+  double d2 = 0.0, sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i + 3 < a.size(); i += 4)
+    if (gpu::is_cloth_alpha(a[i + 3]) && gpu::is_cloth_alpha(b[i + 3])) {
+      for (int c = 0; c < 3; ++c) {
+        const double d = double(a[i + c]) - double(b[i + c]);
+        d2 += d * d / 3.0;
+        sum += double(b[i + c]) / 3.0;
+      }
+      ++n;
+    }
+  return n && sum > 0.0 ? std::sqrt(d2 / double(n)) / (sum / double(n)) : 0.0;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+}  // namespace
+
+// The showroom's coarse grids, as ./setup.sh run bakes it.
+constexpr const char* kShowroomGrids = "--table-grid 32 --sdf-resolution 64 --floor-sdf-resolution 32";
+
+// Bakes `scene` with `weft bake` and `flags` into `dir`; "name=FILE".
+std::string baked(const std::string& scene, const std::filesystem::path& dir, const std::string& flags) {
+  const std::filesystem::path out = dir / (scene + ".weft");
+  const std::string cmd = std::string(WEFT_BINARY) + " bake --scene " + scene + " " + flags + " --out " + out.string() + " > " +
+                          (dir / (scene + ".log")).string() + " 2>&1";
+  if (std::system(cmd.c_str()) != 0) throw std::runtime_error("bake failed: " + cmd);
+  return scene + "=" + out.string();
+}
+
+TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
+  // WEFT_KIOSK_SMOKE: CI's small version (a swatch on coarse tables, 64×48, a few frames).
+  const bool smoke = std::getenv("WEFT_KIOSK_SMOKE") != nullptr;
+  std::string bundles = env_or("WEFT_KIOSK_BUNDLES", "");
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("weft_kiosk_bench_" + std::to_string(getpid()));
+  if (bundles.empty()) {
+    std::filesystem::create_directories(dir);
+    bundles = smoke ? baked("swatch", dir, "--table-grid 8 --lambda-levels 4 --sdf-resolution 16")
+                    : baked("showroom", dir, kShowroomGrids) + "," + baked("pillow", dir, kShowroomGrids);
+  }
+  const std::vector<std::string> methods = split(env_or("WEFT_KIOSK_METHODS", smoke ? "auto" : "auto,iwasaki_vertex,sheen"), ',');
+  std::vector<int> shares;
+  for (const std::string& s : split(env_or("WEFT_KIOSK_REFRESH", smoke ? "1,4" : "1,4,8,16"), ',')) shares.push_back(std::stoi(s));
+  const int frames = std::stoi(env_or("WEFT_KIOSK_FRAMES", smoke ? "3" : "24"));
+  const std::vector<std::string> size = split(env_or("WEFT_KIOSK_SIZE", smoke ? "64x48" : "640x480"), 'x');
+  const int w = std::stoi(size.at(0)), h = std::stoi(size.at(1));
+  const double kDegPerFrame = std::stod(env_or("WEFT_KIOSK_DEG_PER_FRAME", "0.4"));  // 6°/s at 15 frames/s
+  // Frames before timing: the reuse reaches its steady state within R of them.
+  const int kWarm = std::max(smoke ? 4 : 16, *std::max_element(shares.begin(), shares.end()));
+
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  std::ostringstream table;
+  table << "Machine: " << ctx.renderer() << "; " << w << "×" << h << ", turntable " << kDegPerFrame << "°/frame (6°/s at 15 frames/s: 0.4), " << frames
+        << " timed frames after " << kWarm << " warm ones.\n\n"
+        << "| bundle | rung | reuse R | ms/frame | backdrop | surfaces | vertex passes | cloth | weave | other | first frame ms | "
+           "error vs R = 1 mean | worst |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& item : split(bundles, ',')) {
+    const auto eq = item.find('=');
+    ASSERT_NE(eq, std::string::npos) << item;
+    const std::string name = item.substr(0, eq), file = item.substr(eq + 1);
+    for (const std::string& method_name : methods) {
+      const auto t_first = std::chrono::steady_clock::now();
+      const bundle::BundleReader reader = bundle::BundleReader::open(file);
+      const KioskBundle kb = read_kiosk_bundle(reader, method_name);
+      const methods::RuntimeMethod& method = kiosk_method(method_name, kb, file);
+      const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
+      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      r->set_lighting(kb.scene.sgs);
+      // The same frames with every vertex recomputed, for the reuse's error.
+      std::unique_ptr<gpu::SceneRenderer> full = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      full->set_lighting(kb.scene.sgs);
+      gpu::OffscreenTarget target(w, h), truth(w, h);
+      const glm::dvec3 pivot = turntable_pivot(kb.scene.scene);
+      auto camera_at = [&](int k) { return turned_about_z(kb.scene.scene.camera, k * kDegPerFrame, pivot); };
+      target.bind();
+      r->draw(camera_at(0), w, h);
+      glFinish();
+      const double first_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_first).count();
+      const bool per_vertex = method.shading == methods::Shading::per_vertex;
+      for (int share : shares) {
+        if (share > 1 && !per_vertex) continue;
+        r->refresh_all();
+        r->set_vertex_refresh(share);
+        gpu::FrameProfile profile(gpu::TimerQueryFunctions{});  // CPU clock: llvmpipe's timestamps are not its work
+        std::vector<double> ms, errors;
+        for (int k = 1; k <= kWarm + frames; ++k) {
+          const bool timed = k > kWarm;
+          if (timed) profile.begin_frame();
+          const auto t0 = std::chrono::steady_clock::now();
+          target.bind();
+          r->draw(camera_at(k), w, h);
+          glFinish();
+          if (timed) {
+            profile.end_frame();
+            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+          }
+          if (timed && share > 1) {
+            truth.bind();
+            full->draw(camera_at(k), w, h);
+            errors.push_back(cloth_rmse(target.read_rgba(), truth.read_rgba()));
+          }
+        }
+        const auto st = profile.median_ms();
+        auto stage = [&](gpu::Stage s) { return st[size_t(s)]; };
+        double mean_err = 0.0, worst = 0.0;
+        for (double e : errors) mean_err += e / double(errors.size()), worst = std::max(worst, e);
+        char row[512];
+        std::snprintf(row, sizeof row, "| %s | %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |\n", name.c_str(),
+                      (method_name == "auto" ? "auto: " + method.name : method.name).c_str(), share, median(ms),
+                      stage(gpu::Stage::backdrop), stage(gpu::Stage::surfaces), stage(gpu::Stage::vertex_pass), stage(gpu::Stage::cloth),
+                      stage(gpu::Stage::weave), stage(gpu::Stage::other), first_ms,
+                      share > 1 ? (std::to_string(mean_err * 100.0).substr(0, 5) + " %").c_str() : "",
+                      share > 1 ? (std::to_string(worst * 100.0).substr(0, 5) + " %").c_str() : "");
+        table << row;
+        std::cout << row << std::flush;
+        if (share > 1) EXPECT_LT(worst, 0.05) << name << " " << method.name << " R=" << share << ": reuse drifted from the full frame";
+      }
+    }
+  }
+  std::cout << "\n" << table.str();
+  if (const char* out = std::getenv("WEFT_KIOSK_OUT")) std::ofstream(out) << table.str();
+  std::filesystem::remove_all(dir);
+}
