@@ -497,7 +497,7 @@ TEST(KnobStateFile, TheColourwayWornIsSavedAndRestoredByName) {
   EXPECT_EQ(s.colourway, 1u);
   EXPECT_EQ(s.preset_index, preset_index(presets, "velvet"));
   EXPECT_EQ(again->positions().gloss_steps[0], 3);
-  // A colourway the bundle no longer has: back to the first colourway's start, saying why.
+  // A colourway the bundle does not have: the first colourway's start, saying why.
   const auto r = restore_knob_state(options.state_file, presets, options.default_preset, {"Ocean", "Sand"});
   EXPECT_TRUE(r.unusable);
   EXPECT_NE(r.message.find("colourway 'Moss' is not in the bundle"), std::string::npos) << r.message;
