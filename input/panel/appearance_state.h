@@ -17,7 +17,8 @@ struct ThreadAppearance {
 enum class ThreadSelection : uint8_t { both = 0, warp = 1, weft = 2 };
 
 struct AppearanceState {
-  uint32_t preset_index = 0;       // into the preset list the mapper was given
+  uint32_t preset_index = 0;       // into the preset list the mapper was given (the colourway's, with colourways)
+  uint32_t colourway = 0;          // into the colourways the mapper was given (0 without any)
   ThreadAppearance thread[2];      // [0] warp (thread 1), [1] weft (thread 2)
   float env_rotation_deg = 0.0f;   // [0, 360)
   float zoom = 0.0f;               // 0: the scene's camera … 1: its close-up

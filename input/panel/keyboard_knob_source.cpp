@@ -28,6 +28,12 @@ std::vector<KnobEvent> keyboard_events(char key, uint32_t time_ms) {
     e.time_ms = time_ms;
     return {e};
   }
+  if (lower == 'c') {  // the next colourway
+    KnobEvent e;
+    e.colourway = 1;
+    e.time_ms = time_ms;
+    return {e};
+  }
   int button = -1;
   if (key >= '1' && key <= '4') button = key - '1';
   if (key == '0' || key == ' ') button = 4;

@@ -27,7 +27,7 @@ void KnobController::restore() {
     p.preset = options_.default_preset;
     mapper_.set_positions(p);
   } else {
-    const auto r = restore_knob_state(options_.state_file, mapper_.presets(), options_.default_preset);
+    const auto r = restore_knob_state(options_.state_file, mapper_.presets(), options_.default_preset, mapper_.colourway_names());
     log_(r.unusable ? LogPriority::warning : LogPriority::info, r.message);
     mapper_.set_positions(r.positions);
   }
@@ -65,7 +65,7 @@ void KnobController::flush() {
 
 void KnobController::save_locked(std::unique_lock<std::mutex>& lock) {
   if (!dirty_ || options_.state_file.empty()) return;
-  const std::string text = knob_state_text(mapper_.positions(), mapper_.presets());
+  const std::string text = knob_state_text(mapper_.positions(), mapper_.presets(), mapper_.colourway_names());
   dirty_ = false;
   // Disk I/O outside the lock: a slow SD card must not hold up knob events.
   lock.unlock();

@@ -41,10 +41,31 @@ int KnobMapper::accelerated(int dial, int detents, uint32_t time_ms) {
   return detents * factor;
 }
 
+void KnobMapper::set_colourways(std::vector<ColourwayPresets> colourways) {
+  for (const auto& c : colourways)
+    if (c.presets.size() != presets_.size()) throw std::invalid_argument("colourway '" + c.name + "': its presets differ in number");
+  colourways_ = std::move(colourways);
+  if (!colourways_.empty()) wear_colourway(0);
+}
+
+std::vector<std::string> KnobMapper::colourway_names() const {
+  std::vector<std::string> names;
+  for (const auto& c : colourways_) names.push_back(c.name);
+  return names;
+}
+
+void KnobMapper::wear_colourway(uint32_t index) {
+  positions_.colourway = index;
+  presets_ = colourways_.at(index).presets;
+  select_preset(colourways_[index].start_preset);
+}
+
 void KnobMapper::select_preset(uint32_t index) {
   const ThreadSelection keep = positions_.selection;
   const int zoom = positions_.zoom_steps;
+  const uint32_t colourway = positions_.colourway;
   positions_ = KnobPositions{};
+  positions_.colourway = colourway;
   positions_.preset = index;
   positions_.selection = keep;
   positions_.zoom_steps = zoom;
@@ -52,6 +73,12 @@ void KnobMapper::select_preset(uint32_t index) {
 
 void KnobMapper::clamp() {
   auto& p = positions_;
+  if (colourways_.empty()) {
+    p.colourway = 0;
+  } else {
+    if (p.colourway >= colourways_.size()) p.colourway = 0;
+    presets_ = colourways_[p.colourway].presets;
+  }
   if (p.preset >= presets_.size()) p.preset = 0;
   if (static_cast<uint8_t>(p.selection) > 2) p.selection = ThreadSelection::both;
   const int hue_period = static_cast<int>(std::lround(360.0 / config_.hue_deg_per_step));
@@ -84,8 +111,17 @@ bool KnobMapper::apply(const KnobEvent& event) {
     }
     if (d == 3) p.env_steps += steps;
   }
-  const uint8_t pressed = static_cast<uint8_t>(event.buttons & ~buttons_);  // act on press, not hold
+  uint8_t pressed = static_cast<uint8_t>(event.buttons & ~buttons_);  // act on press, not hold
   buttons_ = event.buttons;
+  int next_colourway = event.colourway;
+  if (config_.colourway_button >= 0 && (pressed & (1u << config_.colourway_button))) {
+    pressed = static_cast<uint8_t>(pressed & ~(1u << config_.colourway_button));  // instead of its own job
+    ++next_colourway;
+  }
+  if (next_colourway > 0 && !colourways_.empty()) {
+    const auto count = static_cast<uint32_t>(colourways_.size());
+    wear_colourway((p.colourway + static_cast<uint32_t>(next_colourway)) % count);
+  }
   const auto n = static_cast<uint32_t>(presets_.size());
   if (pressed & 1u) p.selection = static_cast<ThreadSelection>((static_cast<int>(p.selection) + 1) % 3);
   if (pressed & 2u) select_preset((p.preset + n - 1) % n);
@@ -105,6 +141,7 @@ AppearanceState KnobMapper::appearance() const {
   const auto& p = positions_;
   AppearanceState s;
   s.preset_index = p.preset;
+  s.colourway = p.colourway;
   s.selection = p.selection;
   s.env_rotation_deg = static_cast<float>(p.env_steps * config_.env_deg_per_step);
   s.zoom = config_.zoom_steps > 0 ? static_cast<float>(p.zoom_steps) / static_cast<float>(config_.zoom_steps) : 0.0f;

@@ -20,6 +20,7 @@ struct KnobEvent {
   uint8_t buttons = 0;                 // buttons held now (bit i = button i)
   uint32_t time_ms = 0;                // the source's clock; used for turn acceleration
   int zoom = 0;                        // detents of the zoom control (keyboard t/g), + = closer
+  int colourway = 0;                   // presses of the colourway control (keyboard c): next colourway
 };
 
 using KnobSink = std::function<void(const KnobEvent&)>;

@@ -1,5 +1,6 @@
 #include "panel/knob_state_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -34,7 +35,8 @@ std::string text_field(const nlohmann::ordered_json& j, const char* key) {
 
 }  // namespace
 
-std::string knob_state_text(const KnobPositions& p, const std::vector<PresetLook>& presets) {
+std::string knob_state_text(const KnobPositions& p, const std::vector<PresetLook>& presets,
+                            const std::vector<std::string>& colourways) {
   nlohmann::ordered_json j;
   j["format"] = "weft-knobs";
   j["version"] = kVersion;
@@ -46,11 +48,13 @@ std::string knob_state_text(const KnobPositions& p, const std::vector<PresetLook
                             {"brightness_steps", p.brightness_steps[t]},
                             {"gloss_steps", p.gloss_steps[t]}});
   j["env_steps"] = p.env_steps;
+  if (!colourways.empty()) j["colourway"] = colourways.at(p.colourway);
   j["checksum"] = fnv1a64_hex(j.dump());
   return j.dump(2) + "\n";
 }
 
-KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets) {
+KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets,
+                               const std::vector<std::string>& colourways) {
   nlohmann::ordered_json j;
   try {
     j = nlohmann::ordered_json::parse(text);
@@ -86,6 +90,12 @@ KnobPositions parse_knob_state(const std::string& text, const std::vector<Preset
     p.gloss_steps[t] = steps(th, "gloss_steps");
   }
   p.env_steps = steps(j, "env_steps");
+  if (j.contains("colourway") && !colourways.empty()) {
+    const std::string worn = text_field(j, "colourway");
+    const auto it = std::find(colourways.begin(), colourways.end(), worn);
+    if (it == colourways.end()) throw KnobStateError("colourway '" + worn + "' is not in the bundle");
+    p.colourway = static_cast<uint32_t>(it - colourways.begin());
+  }
   return p;
 }
 
@@ -100,7 +110,7 @@ bool write_file_atomically(const std::filesystem::path& file, const std::string&
 }
 
 RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::vector<PresetLook>& presets,
-                                 uint32_t default_preset) {
+                                 uint32_t default_preset, const std::vector<std::string>& colourways) {
   RestoredKnobs r;
   r.positions.preset = default_preset < presets.size() ? default_preset : 0;
   const std::string preset_name = presets.at(r.positions.preset).name;
@@ -112,9 +122,10 @@ RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::v
   std::stringstream text;
   text << in.rdbuf();
   try {
-    r.positions = parse_knob_state(text.str(), presets);
+    r.positions = parse_knob_state(text.str(), presets, colourways);
     r.from_file = true;
-    r.message = "restored knob state from " + file.string() + " (preset '" + presets[r.positions.preset].name + "')";
+    r.message = "restored knob state from " + file.string() + " (preset '" + presets[r.positions.preset].name + "'" +
+                (colourways.empty() ? "" : ", colourway '" + colourways[r.positions.colourway] + "'") + ")";
   } catch (const KnobStateError& e) {
     r.unusable = true;
     r.message = "saved knob state " + file.string() + " is unusable (" + e.what() +

@@ -6,7 +6,9 @@
 //
 // Format (JSON): {"format":"weft-knobs","version":1,"preset":"linen_plain","selection":"both",
 //   "threads":[{"hue_steps":0,"brightness_steps":0,"gloss_steps":0},{…}],"env_steps":0,
-//   "checksum":"<FNV-1a 64 of the same object without this member, compact dump, hex>"}
+//   ["colourway":"Ocean",] "checksum":"<FNV-1a 64 of the same object without this member, compact dump, hex>"}
+// "colourway" names the colourway worn when the bundle has colourways; a file without it wears
+// the first.
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -21,9 +23,12 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-std::string knob_state_text(const KnobPositions& positions, const std::vector<PresetLook>& presets);
+// `colourways`: the bundle's colourway names (KnobMapper::colourway_names), empty without any.
+std::string knob_state_text(const KnobPositions& positions, const std::vector<PresetLook>& presets,
+                            const std::vector<std::string>& colourways = {});
 // Throws KnobStateError saying what is wrong.
-KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets);
+KnobPositions parse_knob_state(const std::string& text, const std::vector<PresetLook>& presets,
+                               const std::vector<std::string>& colourways = {});
 
 // Replaces `file` with `text` so that after a crash or power cut it holds either the old or the
 // new content, never a mix (files/atomic_file.h). Returns false and `why` on failure.
@@ -36,6 +41,6 @@ struct RestoredKnobs {
   std::string message;  // operator-readable: what was restored, or why the preset was used
 };
 RestoredKnobs restore_knob_state(const std::filesystem::path& file, const std::vector<PresetLook>& presets,
-                                 uint32_t default_preset);
+                                 uint32_t default_preset, const std::vector<std::string>& colourways = {});
 
 }  // namespace weft::input

@@ -94,6 +94,12 @@ PanelConfig parse_panel_config(const std::string& text, const std::string& origi
       fail(origin, "zoom_dial must be a dial 0..3 (or -1: none), got " + z.dump());
     c.zoom_dial = z.get<int>();
   }
+  if (j.contains("colourway_button")) {
+    const auto& b = j["colourway_button"];
+    if (!b.is_number_integer() || b.get<long>() < -1 || b.get<long>() >= kButtonCount)
+      fail(origin, "colourway_button must be a button 0..4 (or -1: none), got " + b.dump());
+    c.colourway_button = b.get<int>();
+  }
   return c;
 }
 

@@ -29,6 +29,7 @@ void add_scene_inputs(InputHash& h, const std::filesystem::path& assets, const s
     h.add(o.name).add(o.fabric).add_number(o.is_cloth() ? 1 : 0);
     if (o.optical_thickness > 0.0) h.add_number(o.optical_thickness);  // only a sheer's: other keys stay
     h.add_number(o.albedo.r).add_number(o.albedo.g).add_number(o.albedo.b);
+    if (o.colour) h.add("colour").add_number(o.colour->r).add_number(o.colour->g).add_number(o.colour->b);  // only a coloured object's: other keys stay
     add_mesh(h, o.mesh);
   }
 }

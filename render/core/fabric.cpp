@@ -54,13 +54,14 @@ std::vector<double> number_list(const json& obj, const std::string& key, const s
   return out;
 }
 
-ThreadParams parse_thread(const json& t, const std::string& origin, const std::string& path) {
+ThreadParams parse_thread(const json& t, const std::string& origin, const std::string& path, double* albedo_scale) {
   ThreadParams p;
   p.eta = number(t, "eta", origin, path, 1.0, 4.0, true);
   const auto colour = number_list(t, "albedo", origin, path, 0.0, 1e6);
   if (colour.size() != 3) fail(origin, path + "albedo", "needs 3 values (r, g, b), got " + std::to_string(colour.size()));
   const double scale = number(t, "albedo_scale", origin, path, 0.0, 1e6);
   p.albedo = dvec3(colour[0], colour[1], colour[2]) * scale;
+  *albedo_scale = scale;
   p.kd = number(t, "kd", origin, path, 0.0, 1.0);
   p.gamma_s = glm::radians(number(t, "gamma_s_deg", origin, path, 0.0, 90.0, true));
   p.gamma_v = glm::radians(number(t, "gamma_v_deg", origin, path, 0.0, 90.0, true));
@@ -118,7 +119,8 @@ Fabric parse_fabric(const std::string& text, const std::string& origin) {
   const json& threads = require(doc, "threads", origin, "");
   if (!threads.is_array() || threads.size() != 2)
     fail(origin, "threads", "needs exactly 2 threads (warp, weft), got " + show(threads).substr(0, 40));
-  for (int j = 0; j < 2; ++j) f.threads[j] = parse_thread(threads[j], origin, "threads[" + std::to_string(j) + "].");
+  for (int j = 0; j < 2; ++j)
+    f.threads[j] = parse_thread(threads[j], origin, "threads[" + std::to_string(j) + "].", &f.albedo_scale[j]);
   const double a = f.threads[0].coverage + f.threads[1].coverage;
   if (a > 1.0 + 1e-9) {
     std::ostringstream s;
@@ -128,7 +130,17 @@ Fabric parse_fabric(const std::string& text, const std::string& origin) {
   if (doc.contains("optical_thickness"))
     f.optical_thickness = number(doc, "optical_thickness", origin, "", 0.0, kMaxOpticalThickness, true);
   if (doc.contains("weave")) f.weave = parse_weave(doc.at("weave"), origin);
+  if (doc.contains("pin_colour")) {
+    if (!doc.at("pin_colour").is_boolean()) fail(origin, "pin_colour", "value " + show(doc.at("pin_colour")) + " is not true or false");
+    f.pin_colour = doc.at("pin_colour").get<bool>();
+  }
   return f;
+}
+
+Fabric product_coloured(Fabric fabric, const dvec3& colour) {
+  if (fabric.pin_colour) return fabric;
+  for (int j = 0; j < 2; ++j) fabric.threads[j].albedo = colour * fabric.albedo_scale[j];
+  return fabric;
 }
 
 Fabric load_fabric(const std::filesystem::path& file) {

@@ -30,7 +30,17 @@ struct Fabric {
   // fabric with no thickness of its own, which see-through methods draw at their default τ.
   double optical_thickness = 0.0;
   WeaveSpec weave;
+  // Each thread's `albedo_scale` from the file: a product colour given in place of the file's
+  // `albedo` (product_coloured) is scaled by it, so the fabric keeps its brightness per thread.
+  std::array<double, 2> albedo_scale{1.0, 1.0};
+  // The file's `pin_colour`: its threads keep their own colour whatever the product asks for.
+  bool pin_colour = false;
 };
+
+// `fabric` with a product's colour (linear RGB in [0, 1], e.g. glTF's baseColorFactor) on both
+// threads, each at its own albedo_scale: the fabric gives the weave, gloss and thread structure,
+// the product the colour. A fabric that pins its colour is returned as it is.
+Fabric product_coloured(Fabric fabric, const dvec3& colour);
 
 // Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.
 inline constexpr double kMaxOpticalThickness = 20.0;

@@ -16,7 +16,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
                           std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
-  for (const auto& o : scene.cloth_objects()) cloth.push_back(fabrics.at(o.fabric));
+  for (const auto& o : scene.cloth_objects()) cloth.push_back(object_base_fabric(o, fabrics));
   gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(iwasaki), table_baker());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);

@@ -29,6 +29,7 @@ ObjectReport object_report(const SceneObject& o, const SceneBundle& scene) {
   if (o.is_cloth()) {
     r.fabric = o.fabric;
     r.optical_thickness = object_fabric(o, scene.fabrics.at(o.fabric)).optical_thickness;
+    if (o.colour) r.colour = std::array<double, 3>{o.colour->r, o.colour->g, o.colour->b};
   }
   r.vertices = o.mesh.positions.size();
   r.triangles = o.mesh.triangles.size();
@@ -70,6 +71,16 @@ BundleReport bundle_report(const std::filesystem::path& file) {
   r.environment = scene.environment;
   for (const auto& o : scene.objects) r.objects.push_back(object_report(o, b.scene));
   for (const auto& [preset, fabric] : b.scene.fabrics) r.fabrics.push_back(preset);
+  for (const Colourway& c : b.scene.scene.colourways) {
+    ColourwayReport cr;
+    cr.name = c.name;
+    for (const auto& [object, look] : c.objects) {
+      ColourwayReport::Look l{object, look.fabric, std::nullopt};
+      if (look.colour) l.colour = std::array<double, 3>{look.colour->r, look.colour->g, look.colour->b};
+      cr.looks.push_back(l);
+    }
+    r.colourways.push_back(std::move(cr));
+  }
   r.sgs = b.scene.sgs.size();
   r.auto_method = kiosk_method("auto", b, file).name;
   for (const auto& m : methods::registry()) {

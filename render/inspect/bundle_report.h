@@ -7,7 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,7 +35,18 @@ struct ObjectReport {
   std::string material;           // "cloth" or "lambertian"
   std::string fabric;             // cloth: its preset
   double optical_thickness = 0;   // cloth: > 0 when shown as a sheer (its own or its fabric's)
+  std::optional<std::array<double, 3>> colour;  // cloth: the product's colour on its fabric, when it has one
   std::size_t vertices = 0, triangles = 0;
+};
+
+// One colourway: the look it gives each cloth object it names (object → fabric, colour).
+struct ColourwayReport {
+  std::string name;
+  struct Look {
+    std::string object, fabric;
+    std::optional<std::array<double, 3>> colour;
+  };
+  std::vector<Look> looks;
 };
 
 // One runtime method of the registry and whether the kiosk can draw this bundle with it.
@@ -51,7 +64,7 @@ struct BundleReport {
   std::string scene, description, environment;
   std::vector<ObjectReport> objects;
   std::vector<std::string> fabrics;     // the presets the bundle stores (the fabric knob's choices)
-  std::vector<std::string> colourways;  // no bundle stores colourways yet: empty
+  std::vector<ColourwayReport> colourways;  // in the bundle's order; the kiosk's colourway button cycles them
   std::size_t sgs = 0;                  // default lighting
   std::string auto_method;              // what `weft run --method auto` draws
   std::vector<MethodReport> methods;    // the registry's order

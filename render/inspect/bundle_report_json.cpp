@@ -15,6 +15,7 @@ nlohmann::json object_json(const ObjectReport& o, std::size_t index) {
           {"material", o.material},
           {"fabric", cloth ? nlohmann::json(o.fabric) : nlohmann::json()},
           {"optical_thickness", cloth ? nlohmann::json(o.optical_thickness) : nlohmann::json()},
+          {"colour", o.colour ? nlohmann::json(*o.colour) : nlohmann::json()},
           {"vertices", o.vertices},
           {"triangles", o.triangles}};
 }
@@ -38,6 +39,12 @@ nlohmann::json to_json(const BundleReport& r) {
     methods.push_back({{"name", m.name}, {"kiosk_rung", m.kiosk_rung}, {"drawable", m.drawable},
                        {"refusal", text_or_null(m.refusal)}});
   for (const auto& s : r.sections) sections.push_back(section_json(s));
+  nlohmann::json colourways = nlohmann::json::array();
+  for (const auto& c : r.colourways) {
+    nlohmann::json looks = nlohmann::json::object();
+    for (const auto& l : c.looks) looks[l.object] = {{"fabric", l.fabric}, {"colour", l.colour ? nlohmann::json(*l.colour) : nlohmann::json()}};
+    colourways.push_back({{"name", c.name}, {"objects", looks}});
+  }
   for (const auto& [stage, j] : r.bake) bake[stage] = j;
   return {{"file", r.file},
           {"bytes", r.bytes},
@@ -45,7 +52,7 @@ nlohmann::json to_json(const BundleReport& r) {
           {"scene", {{"name", r.scene}, {"description", r.description}, {"environment", r.environment}}},
           {"objects", objects},
           {"fabrics", r.fabrics},
-          {"colourways", r.colourways},
+          {"colourways", colourways},
           {"sgs", r.sgs},
           {"auto_method", r.auto_method},
           {"methods", methods},

@@ -59,6 +59,12 @@ void write_bake_stage(const std::string& stage, const nlohmann::json& j, const B
   }
 }
 
+std::string colour_text(const std::array<double, 3>& c) {
+  char s[64];
+  std::snprintf(s, sizeof s, "[%.3g, %.3g, %.3g]", c[0], c[1], c[2]);
+  return s;
+}
+
 std::string shape_text(const std::vector<std::uint64_t>& shape) {
   std::string s;
   for (auto e : shape) s += (s.empty() ? "" : ", ") + std::to_string(e);
@@ -76,11 +82,18 @@ void write_report_text(const BundleReport& r, std::ostream& out) {
     const ObjectReport& o = r.objects[i];
     out << "  " << i << " " << o.name << ": " << o.material;
     if (o.material == "cloth") out << " " << o.fabric;
+    if (o.colour) out << " in " << colour_text(*o.colour);
     if (o.optical_thickness > 0) out << " (sheer, optical thickness " << o.optical_thickness << ")";
     out << ", " << o.vertices << " vertices, " << o.triangles << " triangles\n";
   }
   out << "fabrics (" << r.fabrics.size() << "): " << joined(r.fabrics) << "\n";
-  out << "colourways (" << r.colourways.size() << "): " << joined(r.colourways) << "\n";
+  out << "colourways (" << r.colourways.size() << ")" << (r.colourways.empty() ? ": none" : ":") << "\n";
+  for (const auto& c : r.colourways) {
+    out << "  " << c.name << ":";
+    for (const auto& l : c.looks)
+      out << " " << l.object << " " << l.fabric << (l.colour ? " in " + colour_text(*l.colour) : std::string()) << ";";
+    out << "\n";
+  }
   out << "lighting: " << r.sgs << " SGs\n";
   std::vector<std::string> drawable;
   for (const auto& m : r.methods)

@@ -142,6 +142,7 @@ void Kiosk::start_renderer() {
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(sb.scene);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
+  colourways_ = std::make_unique<KioskColourways>(sb);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (config_.profile != "off" && !profile_) {
     const gpu::TimerQueryFunctions timers = config_.profile == "cpu" ? gpu::TimerQueryFunctions{} : gpu::timer_query_functions();
@@ -305,7 +306,8 @@ bool Kiosk::poll_bundle() {
 }
 
 void Kiosk::show_swapped(BundleSwap::Ready r) {
-  const std::string knobs_differ = knob_reset_reason(preset_looks(knobs_->presets()), knobs_->start_preset(), r.bundle.scene);
+  const std::string knobs_differ =
+      knob_reset_reason(preset_looks(knobs_->presets()), knobs_->start_preset(), r.bundle.scene, knobs_->colourway_names());
   lighting_->retire(std::move(renderer_));
   renderer_ = std::move(r.renderer);
   cloth_fabrics_ = std::move(r.cloth_fabrics);
@@ -313,6 +315,7 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   iwasaki_ = r.bundle.iwasaki;
   room_light_ = r.room_light;
   scene_ = std::move(r.bundle.scene);
+  colourways_ = std::make_unique<KioskColourways>(*scene_);
   closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(scene_->scene);
   shown_ = {config_.bundle, false, ""};
@@ -329,13 +332,13 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
 }
 
 void Kiosk::apply_knob_state(const input::AppearanceState& s) {
-  const std::vector<Fabric>& presets = knobs_->presets();
+  colourways_->wear(*scene_, *renderer_, cloth_fabrics_, s.colourway);
+  const std::vector<Fabric>& presets = knobs_->presets(s.colourway);
   const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
   try {
-    const std::string dressed = knob_fabric(*scene_);
     size_t c = 0;
     for (const auto& o : scene_->scene.cloth_objects()) {
-      if (o.fabric == dressed) renderer_->set_fabric(c, f);
+      if (knobs_dress(*scene_, o)) renderer_->set_fabric(c, f);
       ++c;
     }
   } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for

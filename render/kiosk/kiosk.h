@@ -48,6 +48,7 @@
 #include "gl/frame_profile.h"
 #include "gpu/scene_renderer.h"
 #include "kiosk/bundle_swap.h"
+#include "kiosk/kiosk_colourways.h"
 #include "kiosk/exposure_meter.h"
 #include "kiosk/frame_stats.h"
 #include "kiosk/kiosk_config.h"
@@ -134,7 +135,8 @@ private:
   std::unique_ptr<KioskKnobs> knobs_;
 
   // The renderer and what it draws into.
-  std::vector<Fabric> cloth_fabrics_;  // the fabric of each cloth object
+  std::vector<Fabric> cloth_fabrics_;  // the base fabric of each cloth object, in the colourway worn
+  std::unique_ptr<KioskColourways> colourways_;  // the colourway the knob state names, worn
   std::unique_ptr<gpu::SceneRenderer> renderer_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
   std::unique_ptr<gpu::FrameProfile> profile_;  // --profile: null when off

@@ -23,6 +23,7 @@ KioskKnobs::KioskKnobs(const KioskConfig& config, std::filesystem::path state_fi
     }
   }
   mapping_.zoom_dial = panel.zoom_dial;
+  mapping_.colourway_button = panel.colourway_button;
   make_controller(sb);
   controller_->restore();
 
@@ -46,10 +47,24 @@ KioskKnobs::~KioskKnobs() = default;
 void KioskKnobs::make_controller(const SceneBundle& sb) {
   presets_ = preset_list(sb);
   start_preset_ = default_preset(sb);
+  input::KnobMapper mapper(preset_looks(presets_), mapping_);
+  std::vector<input::ColourwayPresets> colourways = colourway_presets(sb);
+  colourway_fabrics_.clear();
+  colourway_names_.clear();
+  for (size_t k = 0; k < colourways.size(); ++k) {
+    colourway_fabrics_.push_back(colourway_preset_list(sb, k));
+    colourway_names_.push_back(colourways[k].name);
+  }
   input::KnobControllerOptions ko;
   ko.state_file = state_file_;
-  ko.default_preset = start_preset_;
-  controller_ = std::make_unique<input::KnobController>(input::KnobMapper(preset_looks(presets_), mapping_), ko, stderr_sink("weft run"));
+  boot_preset_ = colourways.empty() ? start_preset_ : colourways.front().start_preset;
+  ko.default_preset = boot_preset_;
+  mapper.set_colourways(std::move(colourways));
+  controller_ = std::make_unique<input::KnobController>(std::move(mapper), ko, stderr_sink("weft run"));
+}
+
+const std::vector<Fabric>& KioskKnobs::presets(std::uint32_t colourway) const {
+  return colourway_fabrics_.empty() ? presets_ : colourway_fabrics_.at(std::min<size_t>(colourway, colourway_fabrics_.size() - 1));
 }
 
 std::vector<std::string> KioskKnobs::sources() const {
@@ -93,9 +108,9 @@ void KioskKnobs::reset(const SceneBundle& sb, const std::string& why) {
   kiosk_log_warning("knob state reset to preset '" + preset_looks(presets_).at(start_preset_).name + "' (" + why + ")");
   if (!state_file_.empty()) {
     input::KnobPositions start;
-    start.preset = start_preset_;
+    start.preset = boot_preset_;
     std::string error;
-    if (!input::write_file_atomically(state_file_, input::knob_state_text(start, preset_looks(presets_)), error))
+    if (!input::write_file_atomically(state_file_, input::knob_state_text(start, preset_looks(presets(0)), colourway_names_), error))
       kiosk_log_warning("could not save the reset knob state (" + error + ")");
   }
   controller_->restore();

@@ -39,6 +39,9 @@ public:
   std::vector<std::string> sources() const;  // each knob source, described (a USB panel: whether connected)
   const std::vector<Fabric>& presets() const { return presets_; }
   std::uint32_t start_preset() const { return start_preset_; }  // where sb's knobs start
+  // The presets the knobs dress colourway `k` from (presets() without colourways).
+  const std::vector<Fabric>& presets(std::uint32_t colourway) const;
+  const std::vector<std::string>& colourway_names() const { return colourway_names_; }
   // The newest HID report's arrival (steady_clock ns since its epoch); 0: none yet.
   std::int64_t last_report_ns() const { return last_report_ns_.load(); }
 
@@ -52,6 +55,9 @@ private:
   input::MappingConfig mapping_;  // the panel config's choices (a dial given to the zoom)
   std::vector<Fabric> presets_;
   std::uint32_t start_preset_ = 0;
+  std::vector<std::vector<Fabric>> colourway_fabrics_;  // per colourway: its presets
+  std::vector<std::string> colourway_names_;
+  std::uint32_t boot_preset_ = 0;  // where the knobs start without a state file: the first colourway's start
   std::unique_ptr<input::KnobController> controller_;  // replaced (render thread) when a new bundle's presets differ
   std::mutex controller_m_;                             // the sources' events vs that replacement
   std::atomic<std::int64_t> last_report_ns_{0};

@@ -9,7 +9,7 @@ namespace weft {
 
 std::vector<Fabric> cloth_fabrics(const SceneBundle& sb) {
   std::vector<Fabric> fabrics;
-  for (const auto& o : sb.scene.cloth_objects()) fabrics.push_back(sb.fabrics.at(o.fabric));
+  for (const auto& o : sb.scene.cloth_objects()) fabrics.push_back(object_base_fabric(o, sb.fabrics));
   return fabrics;
 }
 

@@ -12,7 +12,8 @@
 
 namespace weft {
 
-// The fabric each cloth object wears, in the scene's order of cloth objects.
+// The base fabric each cloth object wears (object_base_fabric: its colour on its preset), in the
+// scene's order of cloth objects.
 std::vector<Fabric> cloth_fabrics(const SceneBundle& sb);
 
 // Needs the GL context current. A renderer that cannot draw the weave (a see-through method; a

@@ -20,6 +20,7 @@ void add_scene(InputHash& h, const Scene& s, const std::map<std::string, std::st
   for (const auto& o : s.objects) {
     h.add(o.name).add(o.fabric).add_number(o.is_cloth() ? 1 : 0);
     h.add_number(o.albedo.r).add_number(o.albedo.g).add_number(o.albedo.b);
+    if (o.colour) h.add("colour").add_number(o.colour->r).add_number(o.colour->g).add_number(o.colour->b);  // only a coloured object's: other keys stay
     bench::add_mesh(h, o.mesh);
     if (o.is_cloth()) {
       const auto text = fabric_texts.find(o.fabric);

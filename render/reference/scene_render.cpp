@@ -5,6 +5,7 @@
 #include <cmath>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include <omp.h>
@@ -35,11 +36,11 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
   if (options_.resolved_weave && options_.thin_cloth)
     throw std::invalid_argument("reference: the resolved weave is for opaque cloth, not the thin layer");
   for (const auto& obj : scene.objects) {
-    const Fabric* fabric = nullptr;
+    std::optional<Fabric> fabric;
     if (obj.material == Material::cloth) {
       auto it = fabrics.find(obj.fabric);
       if (it == fabrics.end()) throw std::invalid_argument("reference: no fabric '" + obj.fabric + "' loaded");
-      fabric = &it->second;
+      fabric = object_base_fabric(obj, it->second);
     }
     weaves_.emplace_back();
     if (fabric && options_.resolved_weave) {

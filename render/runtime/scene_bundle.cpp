@@ -40,6 +40,13 @@ glm::dvec3 read_vec3(const bundle::BundleReader& r, const std::string& section, 
   return v;
 }
 
+glm::dvec3 read_colour(const bundle::BundleReader& r, const std::string& section, const json& j, const std::string& what) {
+  const glm::dvec3 c = read_vec3(r, section, j);
+  for (int k = 0; k < 3; ++k)
+    if (!(c[k] >= 0.0 && c[k] <= 1.0)) throw bad(r, section, what + ": colour " + j.dump() + " outside [0, 1]");
+  return c;
+}
+
 // An [n, width] f32 section as n vectors; n must equal `expected_rows` unless that is 0 (any).
 template <class V>
 std::vector<V> read_rows(const bundle::BundleReader& r, const std::string& name, int width, size_t expected_rows) {
@@ -120,6 +127,7 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
             if (!(x > 0.0 && x <= kMaxWeaveRepeatsPerUv))
               throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv outside (0, 10^6]");
         }
+        if (jo.contains("colour")) o.colour = read_colour(r, S, jo.at("colour"), "object '" + o.name + "'");
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
       } else {
@@ -147,6 +155,28 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
           m.triangles[t][k] = v;
         }
       s.objects.push_back(std::move(o));
+    }
+    if (j.contains("colourways")) {
+      const json& cs = j.at("colourways");
+      if (!cs.is_array() || cs.empty()) throw bad(r, S, "colourways: expected a non-empty list");
+      for (const json& jc : cs) {
+        Colourway c;
+        c.name = jc.at("name").get<std::string>();
+        for (const auto& [object, jl] : jc.at("objects").items()) {
+          ClothLook look;
+          look.fabric = jl.at("fabric").get<std::string>();
+          if (!out.fabrics.count(look.fabric))
+            throw bad(r, F, "no fabric '" + look.fabric + "' for colourway '" + c.name + "'");
+          if (jl.contains("colour")) look.colour = read_colour(r, S, jl.at("colour"), "colourway '" + c.name + "'");
+          c.objects[object] = look;
+        }
+        s.colourways.push_back(std::move(c));
+      }
+      try {
+        check_colourways(s, "colourways");
+      } catch (const SceneError& e) {
+        throw bad(r, S, e.what());
+      }
     }
   } catch (const json::exception& e) {
     throw bad(r, S, std::string("bad field: ") + e.what());

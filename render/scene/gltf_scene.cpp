@@ -6,6 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <optional>
+#include <set>
 #include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -105,6 +107,12 @@ private:
   AccessorData accessor(int index, const std::string& where, std::initializer_list<int> types,
                         std::initializer_list<int> component_types);
   void resolve_materials();
+  // The product colour of cloth material `index`: its baseColorFactor's RGB when the file gives
+  // one (absent, glTF's default white is no colour of the product's: the fabric's own stays).
+  std::optional<glm::dvec3> cloth_colour(size_t index) const;
+  void read_variants();  // KHR_materials_variants: the file's list of variants
+  void map_variants(const tinygltf::Primitive& p, const std::string& where);  // one primitive's mappings
+  std::vector<Colourway> colourways(const std::vector<std::string>& object_names);
   std::vector<std::pair<int, glm::dmat4>> mesh_instances();
   void add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world, const std::string& where);
 
@@ -117,6 +125,9 @@ private:
   std::vector<std::string> fabrics_;
   std::vector<double> thickness_;  // per material (index + 1): extras.weft.optical_thickness, 0 when absent
   std::vector<glm::dvec2> repeats_;  // per material (index + 1): extras.weft.weave_repeats_per_uv, 0 when absent
+  std::vector<std::string> variants_;  // KHR_materials_variants' variant names, in order
+  // Per variant, per material (index + 1): the materials (index + 1) that material's primitives wear in it.
+  std::vector<std::vector<std::set<size_t>>> variant_materials_;
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -231,6 +242,106 @@ void Importer::resolve_materials() {
   if (!any_cloth && !options_.fallback_fabric.empty()) std::fill(fabrics_.begin(), fabrics_.end(), options_.fallback_fabric);
 }
 
+std::optional<glm::dvec3> Importer::cloth_colour(size_t index) const {
+  const tinygltf::Material& mat = m_.materials[index];
+  // tinygltf fills an absent factor with the default; `values` holds only what the file says.
+  if (!mat.values.count("baseColorFactor")) return std::nullopt;
+  const auto& f = mat.pbrMetallicRoughness.baseColorFactor;
+  const std::string where = "materials[" + std::to_string(index) + "] ('" + mat.name + "').pbrMetallicRoughness.baseColorFactor";
+  try {
+    return product_colour(std::vector<double>(f.begin(), f.begin() + std::min<size_t>(f.size(), 3)), where);
+  } catch (const SceneError& e) {
+    fail(e.what());
+  }
+}
+
+constexpr const char* kVariants = "KHR_materials_variants";
+
+void Importer::read_variants() {
+  const auto it = m_.extensions.find(kVariants);
+  if (it == m_.extensions.end()) return;
+  const std::string where = std::string("extensions.") + kVariants + ".variants";
+  const tinygltf::Value& list = it->second.IsObject() ? it->second.Get("variants") : tinygltf::Value();
+  // tinygltf reads an empty list as no value: both are refused alike.
+  if (!list.IsArray() || list.ArrayLen() == 0) fail(where + ": expected a non-empty list of variants ({\"name\": ...})");
+  for (size_t k = 0; k < list.ArrayLen(); ++k) {
+    const tinygltf::Value& v = list.Get(int(k));
+    const bool named = v.IsObject() && v.Has("name") && v.Get("name").IsString() && !v.Get("name").Get<std::string>().empty();
+    if (!named) fail(where + "[" + std::to_string(k) + "]: has no name");
+    variants_.push_back(v.Get("name").Get<std::string>());
+  }
+  variant_materials_.assign(variants_.size(), std::vector<std::set<size_t>>(m_.materials.size() + 1));
+}
+
+// A whole number in [0, n) from a glTF value, or −1.
+long index_below(const tinygltf::Value& v, size_t n) {
+  if (!v.IsNumber()) return -1;
+  const double x = v.GetNumberAsDouble();
+  return x >= 0.0 && x < double(n) && x == std::floor(x) ? long(x) : -1;
+}
+
+void Importer::map_variants(const tinygltf::Primitive& p, const std::string& where) {
+  const auto it = p.extensions.find(kVariants);
+  const std::string w = where + ".extensions." + kVariants + ".mappings";
+  if (variants_.empty()) {
+    if (it != p.extensions.end()) fail(w + ": the file lists no variants (extensions." + kVariants + ".variants)");
+    return;
+  }
+  const size_t own = size_t(p.material + 1);
+  std::vector<size_t> worn(variants_.size(), own);
+  if (it != p.extensions.end()) {
+    const tinygltf::Value& maps = it->second.IsObject() ? it->second.Get("mappings") : tinygltf::Value();
+    if (!maps.IsArray()) fail(w + ": expected a list of {\"material\", \"variants\"}");
+    for (size_t k = 0; k < maps.ArrayLen(); ++k) {
+      const tinygltf::Value& m = maps.Get(int(k));
+      const std::string mw = w + "[" + std::to_string(k) + "]";
+      const tinygltf::Value& material = m.IsObject() ? m.Get("material") : tinygltf::Value();
+      const long mi = index_below(material, m_.materials.size());
+      if (mi < 0)
+        fail(mw + ".material: " + (material.IsNumber() ? "material " + std::to_string(material.GetNumberAsDouble()) + " does not exist" : std::string("missing or not a number")) +
+             " (" + std::to_string(m_.materials.size()) + " materials)");
+      const tinygltf::Value& vs = m.Get("variants");
+      if (!vs.IsArray() || vs.ArrayLen() == 0) fail(mw + ".variants: expected a non-empty list of variant indices");
+      for (size_t j = 0; j < vs.ArrayLen(); ++j) {
+        const long vi = index_below(vs.Get(int(j)), variants_.size());
+        if (vi < 0)
+          fail(mw + ".variants[" + std::to_string(j) + "]: not one of the file's " + std::to_string(variants_.size()) + " variants");
+        worn[size_t(vi)] = size_t(mi + 1);
+      }
+    }
+  }
+  for (size_t v = 0; v < variants_.size(); ++v) variant_materials_[v][own].insert(worn[v]);
+}
+
+// A material's name for messages (index + 1; 0 is glTF's default material).
+std::string material_label(const tinygltf::Model& m, size_t i) {
+  return i == 0 ? std::string("(default)") : "materials[" + std::to_string(i - 1) + "] ('" + m.materials[i - 1].name + "')";
+}
+
+std::vector<Colourway> Importer::colourways(const std::vector<std::string>& object_names) {
+  std::vector<Colourway> out;
+  for (size_t v = 0; v < variants_.size(); ++v) {
+    Colourway c;
+    c.name = variants_[v];
+    const std::string in = "variant '" + c.name + "'";
+    for (size_t i = 0; i < object_names.size(); ++i) {
+      const std::set<size_t>& worn = variant_materials_[v][i];
+      if (object_names[i].empty() || worn.empty()) continue;
+      if (worn.size() > 1)
+        fail(in + ": the primitives of " + material_label(m_, i) +
+             " wear different materials; Weft draws one look per material (give them one material in this variant)");
+      const size_t t = *worn.begin();
+      const bool cloth = !fabrics_[i].empty(), becomes_cloth = !fabrics_[t].empty();
+      if (cloth != becomes_cloth)
+        fail(in + ": " + material_label(m_, i) + (cloth ? " is cloth and " : " is not cloth and ") + material_label(m_, t) +
+             (cloth ? " is not" : " is") + "; a colourway changes a cloth object's fabric and colour only");
+      if (cloth) c.objects[object_names[i]] = ClothLook{fabrics_[t], t > 0 ? cloth_colour(t - 1) : std::nullopt};
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 glm::dmat4 local_transform(const tinygltf::Node& n) {
   if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glm
   glm::dmat4 t(1.0);
@@ -288,6 +399,7 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
     fail(where + ": mode " + std::to_string(p.mode) + " is not triangles (only mode 4 is supported)");
   if (p.material < -1 || p.material >= static_cast<int>(m_.materials.size()))
     fail(where + ": material " + std::to_string(p.material) + " does not exist");
+  map_variants(p, where);
   const std::string& fabric = fabrics_[p.material + 1];
   const bool cloth = !fabric.empty();
   auto attribute = [&](const char* name) {
@@ -435,6 +547,7 @@ Camera framed_camera(const Scene& s) {
 
 Scene Importer::run() {
   resolve_materials();
+  read_variants();
   groups_.assign(fabrics_.size(), {});
   reports_.assign(fabrics_.size(), {});
   Scene s;
@@ -468,6 +581,7 @@ Scene Importer::run() {
       add_primitive(mesh.primitives[p], world,
                     "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(p) + "]");
   }
+  std::vector<std::string> object_names(groups_.size());  // per material (index + 1), "" when it has no object
   for (size_t i = 0; i < groups_.size(); ++i) {
     if (groups_[i].triangles.empty()) continue;
     SceneObject o;
@@ -484,6 +598,7 @@ Scene Importer::run() {
       o.fabric = fabrics_[i];
       o.optical_thickness = thickness_[i];
       o.weave_repeats_per_uv = repeats_[i];
+      if (i > 0) o.colour = cloth_colour(i - 1);
     } else {
       o.material = Material::lambertian;
       if (i > 0) {
@@ -492,9 +607,16 @@ Scene Importer::run() {
           for (int c = 0; c < 3; ++c) o.albedo[c] = std::isfinite(f[c]) ? std::clamp(f[c], 0.0, 1.0) : 0.5;
       }
     }
+    object_names[i] = o.name;
     s.objects.push_back(std::move(o));
   }
   if (s.objects.empty()) fail("no triangle meshes in the scene");
+  s.colourways = colourways(object_names);
+  try {
+    check_colourways(s, origin_);
+  } catch (const SceneError& e) {
+    throw SceneError(std::string(e.what()) + " (from extensions." + kVariants + ")");
+  }
   if (!have_camera) s.camera = framed_camera(s);
   return s;
 }
@@ -536,7 +658,8 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
     throw SceneError(origin + ": requires the glTF extension " + e +
                      ", which Weft cannot read (export the file without it, e.g. without mesh compression)");
   std::vector<std::string> remarks;
-  for (const std::string& e : model.extensionsUsed) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
+  for (const std::string& e : model.extensionsUsed)
+    if (e != kVariants) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
   Scene s = Importer(model, origin, base_dir, options).run();
   for (const std::string& r : remarks) s.warnings.push_back(origin + ": " + r);
   // tinygltf's warnings, one per line, for the log: what it let through is worth a look.

@@ -62,6 +62,13 @@ glm::dvec2 repeats_per_uv(const json& v, const std::string& where) {
   return r;
 }
 
+glm::dvec3 colour_field(const json& v, const std::string& where) {
+  if (!v.is_array()) throw SceneError(where + ": expected a colour [r, g, b]");
+  std::vector<double> rgb;
+  for (const auto& x : v) rgb.push_back(number(x, where));
+  return product_colour(rgb, where);
+}
+
 std::string text(const json& v, const std::string& where) {
   if (!v.is_string()) throw SceneError(where + ": expected a string, got " + v.dump());
   return v.get<std::string>();
@@ -150,6 +157,43 @@ Scene import_gltf(const json& j, const std::string& origin, const std::filesyste
   return load_gltf_scene((base_dir / file).lexically_normal(), g);
 }
 
+// A scene file's "colourways": [{"name", "objects": {object: {"fabric"?, "colour"?}}}]. A look
+// without "fabric" keeps the object's; one without "colour" shows the fabric's own.
+std::vector<Colourway> parse_colourways(const json& j, const Scene& s, const std::string& origin,
+                                        const std::filesystem::path& base_dir, const SceneLoadOptions& options) {
+  const std::string where = origin + ": colourways";
+  if (!j.is_array()) throw SceneError(where + ": expected a list of {\"name\", \"objects\"}");
+  if (j.empty()) throw SceneError(where + ": the list is empty (leave it out for the scene's own look)");
+  std::vector<Colourway> out;
+  for (size_t k = 0; k < j.size(); ++k) {
+    const std::string at = where + "[" + std::to_string(k) + "]";
+    Colourway c;
+    c.name = text(field(j[k], "name", at), at + ".name");
+    const json& objects = field(j[k], "objects", at);
+    if (!objects.is_object()) throw SceneError(at + ".objects: expected {\"object name\": {\"fabric\", \"colour\"}}");
+    for (const auto& [object, look] : objects.items()) {
+      const std::string lw = at + ".objects." + object;
+      if (!look.is_object()) throw SceneError(lw + ": expected {\"fabric\", \"colour\"}");
+      for (const auto& [key, value] : look.items())
+        if (key != "fabric" && key != "colour") throw SceneError(lw + "." + key + ": unknown (known: fabric, colour)");
+      ClothLook l;
+      const auto it = std::find_if(s.objects.begin(), s.objects.end(), [&](const SceneObject& o) { return o.name == object; });
+      if (look.contains("fabric")) {
+        const std::string named = text(look["fabric"], lw + ".fabric");
+        l.fabric = fabric_preset_exists(options.fabrics_dir, named) || !names_fabric_file(named)
+                       ? named
+                       : (base_dir / named).lexically_normal().string();
+      } else if (it != s.objects.end()) {
+        l.fabric = it->fabric;
+      }
+      if (look.contains("colour")) l.colour = colour_field(look["colour"], lw + ".colour");
+      c.objects[object] = l;
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 Camera parse_camera(const json& cam, const std::string& cw) {
   Camera c;
   c.position = vec3(field(cam, "position", cw), cw + ".position");
@@ -194,9 +238,13 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
                             {"fov_deg", s.camera.fov_deg}};
       rest["environment"] = s.environment;
       rest.erase("closeup_camera");
+      rest.erase("colourways");
       Scene extra = parse_scene(rest.dump(), origin, base_dir, options);
       for (auto& o : extra.objects) s.objects.push_back(std::move(o));
     }
+    // The scene file's colourways replace the glTF's variants.
+    if (j.contains("colourways")) s.colourways = parse_colourways(j["colourways"], s, origin, base_dir, options);
+    check_colourways(s, origin);
     return s;
   }
   Scene s;
@@ -225,6 +273,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
       if (o.contains("optical_thickness") && obj.optical_thickness <= 0.0)
         throw SceneError(where + ".optical_thickness: must be > 0 (leave it out for the fabric's own)");
       if (o.contains("weave_repeats_per_uv")) obj.weave_repeats_per_uv = repeats_per_uv(o["weave_repeats_per_uv"], where + ".weave_repeats_per_uv");
+      if (o.contains("colour")) obj.colour = colour_field(o["colour"], where + ".colour");
     } else if (material == "lambertian") {
       obj.material = Material::lambertian;
       obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");
@@ -242,6 +291,8 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     }
     s.objects.push_back(std::move(obj));
   }
+  if (j.contains("colourways")) s.colourways = parse_colourways(j["colourways"], s, origin, base_dir, options);
+  check_colourways(s, origin);
   return s;
 }
 
@@ -249,6 +300,17 @@ Fabric object_fabric(const SceneObject& o, Fabric fabric) {
   if (o.optical_thickness > 0.0) fabric.optical_thickness = o.optical_thickness;
   return fabric;
 }
+
+Fabric object_base_fabric(const SceneObject& o, Fabric fabric) {
+  return o.colour ? product_coloured(std::move(fabric), *o.colour) : fabric;
+}
+
+Fabric object_base_fabric(const SceneObject& o, const std::map<std::string, Fabric>& fabrics) {
+  const auto it = fabrics.find(o.fabric);
+  if (it == fabrics.end()) throw std::out_of_range("no fabric '" + o.fabric + "' for cloth object '" + o.name + "'");
+  return object_base_fabric(o, it->second);
+}
+
 
 Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
   if (is_gltf_path(file.string())) {

@@ -3,6 +3,7 @@
 // occluders with an albedo) whose meshes are generated from the parameters in the scene file.
 // Format: assets/scenes/README.md.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,7 @@ struct SceneObject {
   std::string name;
   Material material = Material::lambertian;
   std::string fabric;        // cloth: preset name
+  std::optional<glm::dvec3> colour;  // cloth: the product's colour on the threads (object_base_fabric); none: the fabric's own
   double optical_thickness = 0.0;  // cloth: > 0 overrides the fabric's τ (object_fabric)
   glm::dvec2 weave_repeats_per_uv{0.0};  // cloth: > 0 sets the weave's repeats per UV unit (scene/weave_scale.h)
   glm::dvec3 albedo{0.5};    // lambertian
@@ -47,9 +49,19 @@ struct SceneObject {
 // The most weave repeats per UV unit a scene or glTF may give.
 inline constexpr double kMaxWeaveRepeatsPerUv = 1e6;
 
-// The fabric cloth object `o` is drawn with: `fabric` (its preset's, or a knob's edit of it) with
-// the object's own overrides (its optical thickness, when it gives one).
+// The fabric cloth object `o` is drawn with: `fabric` (its base fabric, or a knob's edit of it) with
+// the object's own overrides (its optical thickness, when it gives one). The colour is not among
+// them: a knob's colour edit must win.
 Fabric object_fabric(const SceneObject& o, Fabric fabric);
+// The fabric cloth object `o` starts from, the one source of its look for the bake, the reference,
+// every method and the knobs: its preset `fabric` in the object's colour (product_coloured), when
+// it has one. The map form looks the preset up by o.fabric (std::out_of_range naming it if absent).
+Fabric object_base_fabric(const SceneObject& o, Fabric fabric);
+Fabric object_base_fabric(const SceneObject& o, const std::map<std::string, Fabric>& fabrics);
+
+// A colour as a scene, glTF or colourway gives it: three finite numbers in [0, 1]. Throws
+// SceneError naming `where` and the problem.
+glm::dvec3 product_colour(const std::vector<double>& rgb, const std::string& where);
 
 // The cloth objects among a scene's objects, in order (Scene::cloth_objects). Hand-written
 // rather than std::views::filter: the fuzz build's clang 14 cannot compile libstdc++ 12's ranges.
@@ -85,6 +97,23 @@ private:
   Object* last_;
 };
 
+// What a colourway dresses one cloth object in: a fabric (preset name or file) and the product's
+// colour on it (none: the fabric's own).
+struct ClothLook {
+  std::string fabric;
+  std::optional<glm::dvec3> colour;
+  bool operator==(const ClothLook&) const = default;
+};
+
+// One of a product's colourways (a glTF's KHR_materials_variants variant, a scene file's
+// "colourways" entry): new looks for some cloth objects, by object name; the others keep the
+// scene's own. A colourway that changes colours only needs no tables of its own: the weighting
+// tables are per fabric, the colour multiplies them at run time.
+struct Colourway {
+  std::string name;
+  std::map<std::string, ClothLook> objects;
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -93,6 +122,7 @@ struct Scene {
   std::string environment;   // env map name (assets/envmaps/NAME.exr); the scene is laid out
                              // around its bright directions (e.g. the curtain's window)
   std::vector<SceneObject> objects;
+  std::vector<Colourway> colourways;  // none: the scene has its own look only
   std::vector<std::string> warnings;  // what an importer let through with a remark, for the log
   // The cloth objects in order, a view of `objects`: the k-th is the renderer's cloth object k
   // (gpu::SceneRenderer takes their fabrics in this order).
@@ -100,6 +130,21 @@ struct Scene {
   ClothObjects<SceneObject> cloth_objects() & { return {objects.data(), objects.data() + objects.size()}; }
   void cloth_objects() const&& = delete;  // a view of a temporary would dangle
 };
+
+// The look of every cloth object in order (Scene::cloth_objects) as the scene has it.
+std::vector<ClothLook> cloth_looks(const Scene& s);
+// The looks colourway `k` gives the cloth objects, in order: its own where it names the object,
+// `base`'s (cloth_looks of the scene without a colourway) elsewhere.
+std::vector<ClothLook> colourway_looks(const Scene& s, const std::vector<ClothLook>& base, size_t k);
+// Dresses the cloth objects in `looks` (one per cloth object, in order).
+void wear_looks(Scene& s, const std::vector<ClothLook>& looks);
+// Every fabric the scene's cloth wears, in its own look or in a colourway's, each once in order
+// of first use: the fabrics a bake needs tables for.
+std::vector<std::string> worn_fabrics(const Scene& s);
+// Checks colourways against the scene's cloth objects: a name each, unique; at least one object
+// each, every one a cloth object of the scene, with a fabric. Throws SceneError starting with
+// `origin`, naming the colourway and the problem.
+void check_colourways(const Scene& s, const std::string& origin);
 
 // What a scene that imports a glTF needs besides its own files (render/scene/gltf_scene.h).
 struct SceneLoadOptions {

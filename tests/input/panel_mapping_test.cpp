@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <thread>
 
 #include "panel/appearance_channel.h"
 #include "panel/hsv_color.h"
+#include "panel/keyboard_knob_source.h"
 #include "panel/knob_controller.h"
 #include "panel/knob_mapping.h"
 #include "panel/knob_state_file.h"
@@ -399,4 +401,106 @@ TEST(PanelConfig, ZoomDialIsADialOrNone) {
 
 TEST(PanelConfig, AnEmptySourceListIsRefused) {
   EXPECT_THROW(parse_panel_config(R"({"sources": []})", "p.json"), PanelConfigError);
+}
+
+namespace {
+
+// Two colourways over the installed presets: "Ocean" dresses linen_plain blue, "Moss" velvet green.
+std::vector<ColourwayPresets> two_colourways(const std::vector<PresetLook>& presets) {
+  std::vector<ColourwayPresets> c(2);
+  c[0] = {"Ocean", presets, preset_index(presets, "linen_plain")};
+  c[0].presets[c[0].start_preset].albedo = {{{0.03, 0.09, 0.18}, {0.03, 0.09, 0.18}}};
+  c[1] = {"Moss", presets, preset_index(presets, "velvet")};
+  c[1].presets[c[1].start_preset].albedo = {{{0.1, 0.25, 0.05}, {0.1, 0.25, 0.05}}};
+  return c;
+}
+
+KnobEvent next_colourway() {
+  KnobEvent e;
+  e.colourway = 1;
+  return e;
+}
+
+}  // namespace
+
+TEST(KnobMapper, TheColourwayControlStepsThroughTheColourwaysEachStartingUnedited) {
+  const auto presets = installed_presets();
+  KnobMapper m(presets);
+  EXPECT_FALSE(m.apply(next_colourway()));  // without colourways it does nothing
+  m.set_colourways(two_colourways(presets));
+  EXPECT_EQ(m.colourway_names(), (std::vector<std::string>{"Ocean", "Moss"}));
+  AppearanceState s = m.appearance();
+  EXPECT_EQ(s.colourway, 0u);
+  EXPECT_EQ(s.preset_index, preset_index(presets, "linen_plain"));
+  expect_rgb(s.thread[0], 0.03, 0.09, 0.18);
+  uint32_t t = 0;
+  slow_turn(m, 0, 10, t);  // a hue edit of Ocean
+  EXPECT_TRUE(m.apply(next_colourway()));
+  s = m.appearance();
+  EXPECT_EQ(s.colourway, 1u);
+  EXPECT_EQ(s.preset_index, preset_index(presets, "velvet"));
+  expect_rgb(s.thread[1], 0.1, 0.25, 0.05);  // Moss, unedited
+  EXPECT_EQ(m.positions().hue_steps[0], 0);
+  slow_turn(m, 1, -8, t);  // the knobs edit the colourway worn: half as bright
+  expect_rgb(m.appearance().thread[0], 0.05, 0.125, 0.025);
+  EXPECT_TRUE(m.apply(next_colourway()));  // wraps round to Ocean
+  EXPECT_EQ(m.appearance().colourway, 0u);
+  expect_rgb(m.appearance().thread[0], 0.03, 0.09, 0.18);
+}
+
+TEST(KnobMapper, AColourwayButtonCyclesInsteadOfItsOwnJob) {
+  const auto presets = installed_presets();
+  MappingConfig config;
+  config.colourway_button = 3;
+  KnobMapper m(presets, config);
+  m.set_colourways(two_colourways(presets));
+  uint32_t t = 0;
+  slow_turn(m, 3, 4, t);  // the environment turned
+  click(m, 3);            // not "environment back to 0°": the next colourway
+  EXPECT_EQ(m.appearance().colourway, 1u);
+  click(m, 3);
+  EXPECT_EQ(m.appearance().colourway, 0u);
+  const auto keys = keyboard_events('c', 5);
+  ASSERT_EQ(keys.size(), 1u);
+  EXPECT_EQ(keys[0].colourway, 1);
+  EXPECT_EQ(parse_panel_config(R"({"colourway_button": 4})", "p.json").colourway_button, 4);
+  EXPECT_EQ(parse_panel_config("{}", "p.json").colourway_button, -1);
+  for (const char* bad : {R"({"colourway_button": 5})", R"({"colourway_button": -2})", R"({"colourway_button": "1"})"})
+    EXPECT_THROW(parse_panel_config(bad, "p.json"), PanelConfigError) << bad;
+}
+
+TEST(KnobStateFile, TheColourwayWornIsSavedAndRestoredByName) {
+  const auto presets = installed_presets();
+  const auto dir = temp_dir("colourway");
+  LogCapture log;
+  KnobControllerOptions options;
+  options.state_file = dir / "knobs.json";
+  options.default_preset = preset_index(presets, "linen_plain");
+  options.save_delay = std::chrono::milliseconds(20);
+  const auto controller = [&] {
+    KnobMapper m(presets);
+    m.set_colourways(two_colourways(presets));
+    return std::make_unique<KnobController>(std::move(m), options, log.sink());
+  };
+  {
+    auto c = controller();
+    c->restore();
+    c->on_event(next_colourway());
+    c->on_event(turn(2, 3, 100));
+    c->flush();
+  }
+  auto again = controller();
+  again->restore();
+  EXPECT_TRUE(log.contains("colourway 'Moss'")) << log.all();
+  AppearanceState s;
+  ASSERT_TRUE(again->channel().read(s));
+  EXPECT_EQ(s.colourway, 1u);
+  EXPECT_EQ(s.preset_index, preset_index(presets, "velvet"));
+  EXPECT_EQ(again->positions().gloss_steps[0], 3);
+  // A colourway the bundle does not have: the first colourway's start, saying why.
+  const auto r = restore_knob_state(options.state_file, presets, options.default_preset, {"Ocean", "Sand"});
+  EXPECT_TRUE(r.unusable);
+  EXPECT_NE(r.message.find("colourway 'Moss' is not in the bundle"), std::string::npos) << r.message;
+  EXPECT_EQ(r.positions.colourway, 0u);
+  std::filesystem::remove_all(dir);
 }

@@ -3,8 +3,12 @@
 // and the kiosk's reason for refusing a damaged copy.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdlib>
 #include <fstream>
 #include <set>
+
+#include <unistd.h>
 
 #include "bundle/bundle_reader.h"
 #include "inspect/bundle_report.h"
@@ -71,6 +75,51 @@ TEST(BundleReport, ListsWhatTheBakedPillowHolds) {
   for (const char* s : {"0 pillow: cloth linen_plain", "1 floor: lambertian", "mesh/0/positions f32", "rms_error",
                         "svd_errors", "max_fit_error", "colourways (0): none"})
     EXPECT_NE(text.str().find(s), std::string::npos) << s << " in\n" << text.str();
+}
+
+TEST(BundleReport, ListsTheColourwaysOfABakeThatBakedEachFabricOnce) {
+  // The pillow in a product colour with two colourways: Ocean recolours its linen, Wine dresses it
+  // in velvet.
+  const fs::path dir = fs::temp_directory_path() / ("weft_report_colourways_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ifstream in(fs::path(WEFT_SOURCE_ASSETS) / "scenes" / "pillow.json");
+  nlohmann::json scene = nlohmann::json::parse(in);
+  ASSERT_EQ(scene["objects"][0]["name"], "pillow");
+  scene["objects"][0]["colour"] = {0.7, 0.6, 0.4};
+  scene["colourways"] = nlohmann::json::parse(R"([
+      {"name": "Ocean", "objects": {"pillow": {"colour": [0.1, 0.3, 0.6]}}},
+      {"name": "Wine", "objects": {"pillow": {"fabric": "velvet", "colour": [0.5, 0.1, 0.2]}}}])");
+  std::ofstream(dir / "pillow_colourways.json") << scene.dump();
+  const fs::path file = dir / "pillow.weft";
+  const std::string cmd = "WEFT_ASSETS=" WEFT_SOURCE_ASSETS " " + std::string(WEFT_BINARY) + " bake --scene " +
+                          (dir / "pillow_colourways.json").string() +
+                          " --table-grid 4 --lambda-levels 2 --tangent-samples 1 1 --sdf-resolution 8 --floor-sdf-resolution 8 --out " +
+                          file.string() + " >" + (dir / "bake.log").string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const BundleReport r = bundle_report(file);
+  ASSERT_TRUE(r.objects[0].colour.has_value());
+  EXPECT_EQ(*r.objects[0].colour, (std::array<double, 3>{0.7, 0.6, 0.4}));
+  ASSERT_EQ(r.colourways.size(), 2u);
+  EXPECT_EQ(r.colourways[0].name, "Ocean");
+  ASSERT_EQ(r.colourways[0].looks.size(), 1u);
+  EXPECT_EQ(r.colourways[0].looks[0].object, "pillow");
+  EXPECT_EQ(r.colourways[0].looks[0].fabric, "linen_plain");
+  EXPECT_EQ(r.colourways[0].looks[0].colour, (std::array<double, 3>{0.1, 0.3, 0.6}));
+  EXPECT_EQ(r.colourways[1].looks[0].fabric, "velvet");
+  // Tables per fabric: the pillow's linen (Ocean's too) and Wine's velvet, nothing per colour.
+  ASSERT_TRUE(r.bake.count("T"));
+  std::set<std::string> tabled;
+  for (const auto& [fabric, t] : r.bake.at("T").items()) tabled.insert(fabric);
+  EXPECT_EQ(tabled, (std::set<std::string>{"linen_plain", "velvet"}));
+  const auto j = nlohmann::json::parse(to_json(r).dump());
+  EXPECT_EQ(j["colourways"][1]["name"], "Wine");
+  EXPECT_EQ(j["colourways"][1]["objects"]["pillow"]["fabric"], "velvet");
+  std::ostringstream text;
+  write_report_text(r, text);
+  for (const char* s : {"0 pillow: cloth linen_plain in [0.7, 0.6, 0.4]", "colourways (2):",
+                        "Ocean: pillow linen_plain in [0.1, 0.3, 0.6];", "Wine: pillow velvet in [0.5, 0.1, 0.2];"})
+    EXPECT_NE(text.str().find(s), std::string::npos) << s << " in\n" << text.str();
+  fs::remove_all(dir);
 }
 
 TEST(BundleReport, ABundleWithoutTablesDrawsOnlyWhatNeedsNone) {

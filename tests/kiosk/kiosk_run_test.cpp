@@ -224,6 +224,44 @@ TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {
   EXPECT_EQ(read_all(dir_ / "restored.png"), read_all(dir_ / "turned.png")) << log;
 }
 
+TEST_F(KioskRun, TheColourwayButtonDressesTheClothInTheNextColourwayAndTheStateDirRemembersIt) {
+  // The pillow with two colourways; the panel config gives push dial 3 to the colourway.
+  const fs::path state = dir_ / "colourway_state";
+  fs::create_directories(state);
+  std::ifstream in(fs::path(WEFT_SOURCE_ASSETS) / "scenes" / "pillow.json");
+  nlohmann::json scene = nlohmann::json::parse(in);
+  scene["colourways"] = nlohmann::json::parse(R"([
+      {"name": "Ocean", "objects": {"pillow": {"fabric": "linen_plain", "colour": [0.1, 0.3, 0.6]}}},
+      {"name": "Rust", "objects": {"pillow": {"fabric": "linen_plain", "colour": [0.7, 0.25, 0.05]}}}])");
+  std::ofstream(dir_ / "pillow_colourways.json") << scene.dump();
+  const Spawned b = spawn({"bake", "--scene", (dir_ / "pillow_colourways.json").string(), "--no-tables", "--out",
+                           (dir_ / "colourways.weft").string()},
+                          {}, dir_ / "bake_colourways.log");
+  ASSERT_EQ(wait_exit(b), 0) << read_all(dir_ / "bake_colourways.log");
+  std::ofstream(dir_ / "colourway_panel.json") << R"({"colourway_button": 3})";
+  std::ofstream(dir_ / "colourway.knobs") << "wait 100\nclick 3\nwait 300\n";
+  const auto run_with = [&](const std::string& panel, const std::string& frames, const fs::path& png) {
+    const Spawned s = spawn({"run", "--bundle", (dir_ / "colourways.weft").string(), "--state-dir", state.string(),
+                             "--display", "headless", "--frames", frames, "--turntable", "0", "--panel", panel,
+                             "--panel-config", (dir_ / "colourway_panel.json").string(), "--width", "96", "--height",
+                             "72", "--screenshot", png.string(), "--probe", "none"},
+                            {}, dir_ / "run_colourway.log");
+    EXPECT_EQ(wait_exit(s), 0) << read_all(dir_ / "run_colourway.log");
+    return read_all(dir_ / "run_colourway.log");
+  };
+  std::string log = run_with("none", "2", dir_ / "ocean.png");
+  EXPECT_NE(log.find("wearing colourway 'Ocean'"), std::string::npos) << log;
+  log = run_with("sim:" + (dir_ / "colourway.knobs").string(), "60", dir_ / "rust.png");
+  EXPECT_NE(log.find("wearing colourway 'Rust'"), std::string::npos) << log;
+  EXPECT_NE(read_all(dir_ / "rust.png"), read_all(dir_ / "ocean.png"));
+  ASSERT_TRUE(fs::exists(state / "knobs.json")) << log;
+  EXPECT_EQ(nlohmann::json::parse(read_all(state / "knobs.json")).value("colourway", ""), "Rust");
+  // Next boot without the panel: Rust again, the same picture.
+  log = run_with("none", "2", dir_ / "restored_rust.png");
+  EXPECT_NE(log.find("colourway 'Rust'"), std::string::npos) << log;
+  EXPECT_EQ(read_all(dir_ / "restored_rust.png"), read_all(dir_ / "rust.png")) << log;
+}
+
 TEST_F(KioskRun, ExposureBiasIsInStopsAndTheMultiplierIsTheSameBias) {
   // --exposure X is the bias log2(X): 2 and +1 EV write the same screenshot; +1 EV is not the
   // metered default; out-of-range values are bad usage (exit 2) naming the flag.

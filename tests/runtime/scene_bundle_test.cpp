@@ -147,3 +147,62 @@ TEST(SceneBundle, CarriesASheersOpticalThickness) {
     EXPECT_NE(std::string(e.what()).find("optical_thickness"), std::string::npos) << e.what();
   }
 }
+
+TEST(SceneBundle, CarriesAClothObjectsProductColour) {
+  SceneBundleInput in = pillow_input();
+  ASSERT_TRUE(in.scene.objects[0].is_cloth());
+  in.scene.objects[0].colour = glm::dvec3(0.25, 0.5, 0.75);
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const SceneBundle out = read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+  ASSERT_TRUE(out.scene.objects[0].colour.has_value());
+  EXPECT_EQ(*out.scene.objects[0].colour, glm::dvec3(0.25, 0.5, 0.75));
+  EXPECT_FALSE(out.scene.objects[1].colour.has_value());
+  in.scene.objects[0].colour = glm::dvec3(0.25, 1.5, 0.75);
+  bundle::BundleWriter bad;
+  add_scene_sections(bad, in);
+  const auto bad_bytes = bad.to_bytes();
+  try {
+    read_scene_bundle(bundle::BundleReader::view(bad_bytes, "memory"));
+    FAIL() << "accepted a colour outside [0, 1]";
+  } catch (const bundle::BundleError& e) {
+    EXPECT_EQ(e.section(), "scene") << e.what();
+    EXPECT_NE(std::string(e.what()).find("colour"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneBundle, RoundTripsTheColourwaysAndRefusesBadOnes) {
+  SceneBundleInput in = pillow_input();
+  in.scene.colourways = {{"Ocean", {{"pillow", {"linen_plain", glm::dvec3(0.1, 0.3, 0.6)}}}},
+                         {"Crepe", {{"pillow", {"silk_crepe_de_chine", std::nullopt}}}}};
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const SceneBundle out = read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+  ASSERT_EQ(out.scene.colourways.size(), 2u);
+  EXPECT_EQ(out.scene.colourways[0].name, "Ocean");
+  EXPECT_EQ(out.scene.colourways[0].objects, in.scene.colourways[0].objects);
+  EXPECT_EQ(out.scene.colourways[1].objects, in.scene.colourways[1].objects);
+
+  // A colourway dressing the floor (not cloth), and one naming a fabric the bundle lacks.
+  const auto refused = [&](const SceneBundleInput& bad_in, const std::string& section, const std::string& words) {
+    bundle::BundleWriter bad;
+    add_scene_sections(bad, bad_in);
+    const auto bad_bytes = bad.to_bytes();
+    try {
+      read_scene_bundle(bundle::BundleReader::view(bad_bytes, "memory"));
+      ADD_FAILURE() << "accepted: " << words;
+    } catch (const bundle::BundleError& e) {
+      EXPECT_EQ(e.section(), section) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  SceneBundleInput floor = in;
+  floor.scene.colourways[1].objects = {{"floor", {"linen_plain", std::nullopt}}};
+  refused(floor, "scene", "'floor' is not a cloth object");
+  SceneBundleInput missing = in;
+  missing.fabrics.erase("silk_crepe_de_chine");
+  bundle::BundleWriter w2;
+  EXPECT_THROW(add_scene_sections(w2, missing), std::invalid_argument);  // the writer refuses it first
+}

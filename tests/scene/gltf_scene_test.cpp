@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -451,13 +452,195 @@ TEST(GltfScene, BlenderCopySuffixMatchesItsPreset) {
   }
 }
 
+// The preset file's own numbers, read here as plain JSON: what the import must keep or scale.
+json preset_json(const std::string& name) { return json::parse(read_bytes(kFabrics / (name + ".json"))); }
+
+TEST(GltfScene, BaseColorFactorColoursTheNamedFabricAtEachThreadsScale) {
+  GltfBuilder b = quad();
+  b.j["materials"][0]["pbrMetallicRoughness"] = {{"baseColorFactor", {0.8, 0.1, 0.05, 1.0}}};
+  const Scene s = parse(b);
+  const SceneObject& o = s.objects[0];
+  ASSERT_TRUE(o.colour.has_value());
+  expect_near(*o.colour, dvec3(0.8, 0.1, 0.05));
+  const json file = preset_json("linen_plain");
+  const Fabric coloured = object_base_fabric(o, load_fabric_preset("linen_plain", kFabrics));
+  for (int t = 0; t < 2; ++t) {
+    const double scale = file["threads"][t]["albedo_scale"].get<double>();
+    expect_near(coloured.threads[t].albedo, scale * dvec3(0.8, 0.1, 0.05), 1e-12);
+    // The fabric keeps its weave, gloss and thread structure.
+    EXPECT_NEAR(glm::degrees(coloured.threads[t].gamma_s), file["threads"][t]["gamma_s_deg"].get<double>(), 1e-9);
+    EXPECT_NEAR(coloured.threads[t].kd, file["threads"][t]["kd"].get<double>(), 1e-12);
+  }
+  EXPECT_EQ(coloured.weave.ends_per_cm, file["weave"]["ends_per_cm"].get<double>());
+
+  // Shot silk: one product colour on both threads, each at its own scale (0.2 and 0.6).
+  b.j["materials"][0]["extras"]["weft"]["fabric"] = "silk_shot";
+  const Scene silk = parse(b);
+  const Fabric shot = object_base_fabric(silk.objects[0], load_fabric_preset("silk_shot", kFabrics));
+  const json silk_file = preset_json("silk_shot");
+  for (int t = 0; t < 2; ++t)
+    expect_near(shot.threads[t].albedo, silk_file["threads"][t]["albedo_scale"].get<double>() * dvec3(0.8, 0.1, 0.05), 1e-12);
+
+  // No baseColorFactor in the file (glTF's default white): the fabric's own colour.
+  const Scene plain = parse(quad());
+  EXPECT_FALSE(plain.objects[0].colour.has_value());
+  const Fabric own = object_base_fabric(plain.objects[0], load_fabric_preset("linen_plain", kFabrics));
+  const auto& c = file["threads"][0]["albedo"];
+  expect_near(own.threads[0].albedo, file["threads"][0]["albedo_scale"].get<double>() *
+                                          dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()), 1e-12);
+}
+
+TEST(GltfScene, AFabricThatPinsItsColourKeepsItUnderAProductColour) {
+  const fs::path dir = fs::temp_directory_path() / "weft_gltf_pinned_test";
+  fs::create_directories(dir);
+  json pinned = preset_json("velvet");
+  pinned["pin_colour"] = true;
+  std::ofstream(dir / "house_velvet.json") << pinned.dump();
+  GltfBuilder b = quad();
+  b.j["materials"][0]["extras"]["weft"]["fabric"] = "house_velvet.json";
+  b.j["materials"][0]["pbrMetallicRoughness"] = {{"baseColorFactor", {0.9, 0.0, 0.0, 1.0}}};
+  std::ofstream(dir / "quad.gltf") << b.text();
+  const Scene s = load_gltf_scene(dir / "quad.gltf", options());
+  ASSERT_TRUE(s.objects[0].colour.has_value());  // the product's colour is kept, the fabric declines it
+  const Fabric file_fabric = load_fabric(dir / "house_velvet.json");
+  EXPECT_TRUE(file_fabric.pin_colour);
+  const Fabric drawn = object_base_fabric(s.objects[0], file_fabric);
+  const Fabric preset = load_fabric_preset("velvet", kFabrics);
+  for (int t = 0; t < 2; ++t) expect_near(drawn.threads[t].albedo, preset.threads[t].albedo, 0.0);
+  pinned["pin_colour"] = "yes";
+  try {
+    parse_fabric(pinned.dump(), "house_velvet.json");
+    FAIL() << "pin_colour \"yes\" was accepted";
+  } catch (const FabricError& e) {
+    EXPECT_NE(std::string(e.what()).find("pin_colour"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GltfScene, AClothColourOutsideZeroToOneIsRefusedNamingTheMaterial) {
+  GltfBuilder b = quad();
+  b.j["materials"][0]["pbrMetallicRoughness"] = {{"baseColorFactor", {1.5, 0.1, 0.1, 1.0}}};
+  const std::string why = refusal([&] { parse(b); });
+  EXPECT_NE(why.find("test.gltf"), std::string::npos) << why;
+  EXPECT_NE(why.find("baseColorFactor"), std::string::npos) << why;
+  EXPECT_NE(why.find("'Sofa'"), std::string::npos) << why;
+}
+
+// The quad with KHR_materials_variants: "Sofa" (linen, red) by default; variant "Ocean" dresses it
+// in material 1 (linen, blue), "Moss" in material 2 (velvet, green), "Red" leaves it as it is.
+GltfBuilder quad_with_variants() {
+  GltfBuilder b = quad();
+  b.j["materials"][0]["pbrMetallicRoughness"] = {{"baseColorFactor", {0.7, 0.1, 0.1, 1.0}}};
+  b.j["materials"].push_back({{"name", "Sofa_ocean"}, {"extras", {{"weft", {{"fabric", "linen_plain"}}}}},
+                              {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.3, 0.6, 1.0}}}}});
+  b.j["materials"].push_back({{"name", "velvet"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.5, 0.1, 1.0}}}}});
+  b.j["materials"].push_back({{"name", "Wood"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.4, 0.3, 0.2, 1.0}}}}});
+  b.j["extensionsUsed"] = json::array({"KHR_materials_variants"});
+  b.j["extensions"]["KHR_materials_variants"]["variants"] = json::array({{{"name", "Red"}}, {{"name", "Ocean"}}, {{"name", "Moss"}}});
+  b.j["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"] =
+      json::array({{{"material", 1}, {"variants", {1}}}, {{"material", 2}, {"variants", {2}}}});
+  return b;
+}
+
+TEST(GltfScene, MaterialVariantsBecomeColourwaysWithTheirMaterialsColours) {
+  const Scene s = parse(quad_with_variants());
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];  // the extension is read, not ignored
+  ASSERT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(s.colourways.size(), 3u);
+  const std::vector<std::tuple<std::string, std::string, dvec3>> expected = {
+      {"Red", "linen_plain", {0.7, 0.1, 0.1}}, {"Ocean", "linen_plain", {0.1, 0.3, 0.6}}, {"Moss", "velvet", {0.2, 0.5, 0.1}}};
+  for (size_t k = 0; k < expected.size(); ++k) {
+    const auto& [name, fabric, colour] = expected[k];
+    EXPECT_EQ(s.colourways[k].name, name);
+    ASSERT_EQ(s.colourways[k].objects.count("Sofa"), 1u) << name;
+    const ClothLook& look = s.colourways[k].objects.at("Sofa");
+    EXPECT_EQ(look.fabric, fabric) << name;
+    ASSERT_TRUE(look.colour.has_value()) << name;
+    expect_near(*look.colour, colour);
+  }
+  // Worn: the colourway's fabric in its colour, at that fabric's thread scales.
+  Scene worn = s;
+  wear_looks(worn, colourway_looks(s, cloth_looks(s), 2));
+  const Fabric moss = object_base_fabric(worn.objects[0], load_fabric_preset("velvet", kFabrics));
+  const json velvet = preset_json("velvet");
+  for (int t = 0; t < 2; ++t)
+    expect_near(moss.threads[t].albedo, velvet["threads"][t]["albedo_scale"].get<double>() * dvec3(0.2, 0.5, 0.1), 1e-12);
+  EXPECT_EQ(worn_fabrics(s), (std::vector<std::string>{"linen_plain", "velvet"}));
+}
+
+TEST(GltfScene, BadMaterialVariantsAreRefusedNamingTheFileAndTheProblem) {
+  const auto refused = [](GltfBuilder b, const std::vector<std::string>& words) {
+    const std::string why = refusal([&] { parse(b); });
+    EXPECT_NE(why.find("test.gltf"), std::string::npos) << why;
+    for (const auto& w : words) EXPECT_NE(why.find(w), std::string::npos) << "'" << w << "' not in: " << why;
+  };
+  GltfBuilder missing_material = quad_with_variants();
+  missing_material.j["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][1]["material"] = 9;
+  refused(missing_material, {"mappings[1].material", "material 9", "does not exist", "4 materials"});
+  GltfBuilder missing_variant = quad_with_variants();
+  missing_variant.j["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][0]["variants"] = {5};
+  refused(missing_variant, {"mappings[0].variants[0]", "3 variants"});
+  GltfBuilder empty = quad_with_variants();
+  empty.j["extensions"]["KHR_materials_variants"]["variants"] = json::array();
+  refused(empty, {"KHR_materials_variants.variants", "non-empty"});
+  GltfBuilder unnamed = quad_with_variants();
+  unnamed.j["extensions"]["KHR_materials_variants"]["variants"][1] = {{"name", 5}};
+  refused(unnamed, {"variants[1]", "no name"});
+  GltfBuilder twice = quad_with_variants();
+  twice.j["extensions"]["KHR_materials_variants"]["variants"][2]["name"] = "Red";
+  refused(twice, {"'Red'", "taken"});
+  GltfBuilder to_wood = quad_with_variants();
+  to_wood.j["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][0]["material"] = 3;
+  refused(to_wood, {"variant 'Ocean'", "'Wood'", "is not"});
+  GltfBuilder bad_colour = quad_with_variants();
+  bad_colour.j["materials"][1]["pbrMetallicRoughness"]["baseColorFactor"] = {0.1, -0.5, 0.6, 1.0};
+  refused(bad_colour, {"Sofa_ocean", "baseColorFactor"});
+  // Infinity or NaN cannot be spelled in JSON; a number too large for a double reads as one.
+  std::string huge = quad_with_variants().text();
+  const std::string blue = "[0.1,0.3,0.6,1.0]";
+  ASSERT_NE(huge.find(blue), std::string::npos);
+  huge.replace(huge.find(blue), blue.size(), "[0.1,1e999,0.6,1.0]");
+  const std::string why = refusal([&] { parse_gltf_scene(huge, "test.gltf", fs::temp_directory_path(), options()); });
+  EXPECT_NE(why.find("test.gltf"), std::string::npos) << why;
+  EXPECT_FALSE(why.empty());
+}
+
+TEST(GltfScene, SceneFileColourwaysDressTheGltfsClothObjects) {
+  const fs::path dir = fs::temp_directory_path() / "weft_gltf_colourways_test";
+  fs::create_directories(dir);
+  std::ofstream(dir / "quad.gltf") << quad().text();
+  std::ofstream(dir / "room.json") << R"({"gltf": "quad.gltf", "colourways": [
+      {"name": "Ocean", "objects": {"Sofa": {"fabric": "linen_plain", "colour": [0.1, 0.3, 0.6]}}},
+      {"name": "Velvet", "objects": {"Sofa": {"fabric": "velvet"}}},
+      {"name": "Sand", "objects": {"Sofa": {"colour": [0.8, 0.7, 0.5]}}}]})";
+  SceneLoadOptions o;
+  o.fabrics_dir = kFabrics;
+  const Scene s = load_scene(dir / "room.json", o);
+  ASSERT_EQ(s.colourways.size(), 3u);
+  EXPECT_EQ(s.colourways[0].objects.at("Sofa"), (ClothLook{"linen_plain", dvec3(0.1, 0.3, 0.6)}));
+  EXPECT_EQ(s.colourways[1].objects.at("Sofa"), (ClothLook{"velvet", std::nullopt}));
+  EXPECT_EQ(s.colourways[2].objects.at("Sofa"), (ClothLook{"linen_plain", dvec3(0.8, 0.7, 0.5)}));  // keeps its fabric
+  const auto refused = [&](const std::string& colourways, const std::vector<std::string>& words) {
+    std::ofstream(dir / "bad.json") << R"({"gltf": "quad.gltf", "colourways": )" + colourways + "}";
+    const std::string why = refusal([&] { load_scene(dir / "bad.json", o); });
+    EXPECT_NE(why.find("bad.json"), std::string::npos) << why;
+    for (const auto& w : words) EXPECT_NE(why.find(w), std::string::npos) << "'" << w << "' not in: " << why;
+  };
+  refused("[]", {"colourways", "empty"});
+  refused(R"([{"name": "A", "objects": {"Chair": {"colour": [0.1, 0.2, 0.3]}}}])", {"colourways[0]", "'Chair'", "not a cloth object", "Sofa"});
+  refused(R"([{"name": "A", "objects": {"Sofa": {"colour": [0.1, 1e999, 0.3]}}}])", {"1e999"});  // JSON has no NaN or infinity
+  refused(R"([{"name": "A", "objects": {"Sofa": {"colour": [0.1, -0.2, 0.3]}}}])", {"colourways[0].objects.Sofa.colour", "[0, 1]"});
+  refused(R"([{"name": "A", "objects": {"Sofa": {"colour": [0.1, 0.3]}}}])", {"colour", "got 2"});
+  refused(R"([{"name": "A", "objects": {}}])", {"'A'", "dresses no object"});
+  refused(R"([{"name": "A", "objects": {"Sofa": {"tint": 1}}}])", {"tint", "unknown"});
+}
+
 TEST(GltfScene, ExtensionsAreNamedWarnedOrRefused) {
   GltfBuilder b = quad();
   EXPECT_TRUE(parse(b).warnings.empty());
-  b.j["extensionsUsed"] = json::array({"KHR_materials_variants"});
+  b.j["extensionsUsed"] = json::array({"KHR_materials_sheen"});
   const Scene s = parse(b);
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_NE(s.warnings[0].find("KHR_materials_variants"), std::string::npos) << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("KHR_materials_sheen"), std::string::npos) << s.warnings[0];
   b.j["extensionsUsed"] = json::array({"KHR_draco_mesh_compression"});
   b.j["extensionsRequired"] = json::array({"KHR_draco_mesh_compression"});
   try {

@@ -28,14 +28,14 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
   IwasakiBundleData out;
   IwasakiBakeReport rep;
   auto t0 = std::chrono::steady_clock::now();
-  for (const auto& o : scene.cloth_objects()) {
+  // Per fabric, not per colour: a colourway that changes colours only reuses its fabric's tables.
+  for (const std::string& fabric_name : worn_fabrics(scene)) {
     if (!opt.bake_tables) break;
-    if (out.tables.count(o.fabric)) continue;
-    const Fabric& fabric = fabrics.at(o.fabric);
+    const Fabric& fabric = fabrics.at(fabric_name);
     BakeSettings settings;
     settings.tangent_samples = paper_tangent_samples(fabric);  // the paper's settings by default
     if (opt.target_error > 0) {
-      auto bar = open_stage(opt, "settings " + o.fabric);
+      auto bar = open_stage(opt, "settings " + fabric_name);
       const SelectionResult sel = select_bake_settings(fabric, opt.target_error, settings, [&](double f, std::string_view) {
         if (!opt.quiet) bar(f);
       });
@@ -51,7 +51,7 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     if (opt.svd_error > 0) settings.svd_error = opt.svd_error;
     if (opt.lambda_levels > 0) settings.lambda_levels = opt.lambda_levels;
     settings.validate();
-    auto bar = open_stage(opt, "T tables " + o.fabric);
+    auto bar = open_stage(opt, "T tables " + fabric_name);
     WeightingTables t = bake_weighting_tables(fabric, settings, [&](double f, std::string_view) {
       if (!opt.quiet) bar(f);
     });
@@ -60,12 +60,12 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
       const TableSummary s = summarize(t);
       std::fprintf(stderr, "  %s: %d+%d tangent samples (%d distinct tables) x %d levels, rank %d/%.1f/%d (min/mean/max), "
                    "SVD error max %.3g, %.2f MB; rank histogram:",
-                   o.fabric.c_str(), t.tangent_samples[0], t.tangent_samples[1], t.distinct_count(), t.level_count(),
+                   fabric_name.c_str(), t.tangent_samples[0], t.tangent_samples[1], t.distinct_count(), t.level_count(),
                    s.min_rank, s.mean_rank, s.max_rank, s.max_error, t.bytes() / 1e6);
       for (const auto& [rank, count] : s.rank_histogram) std::fprintf(stderr, " %d:%d", rank, count);
       std::fprintf(stderr, "\n");
     }
-    out.tables.emplace(o.fabric, std::move(t));
+    out.tables.emplace(fabric_name, std::move(t));
   }
   rep.tables_s = since(t0);
 

@@ -22,7 +22,7 @@ RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::stri
   if (candidates.empty()) throw std::invalid_argument("choose_rung: no candidate method");
   const std::map<std::string, Fabric> fabrics = cloth_fabrics(scene, fabric_texts);
   std::vector<Fabric> cloth;  // per cloth object, as the renderer takes them
-  for (const auto& o : scene.cloth_objects()) cloth.push_back(fabrics.at(o.fabric));
+  for (const auto& o : scene.cloth_objects()) cloth.push_back(object_base_fabric(o, fabrics));
   if (cloth.empty()) throw std::invalid_argument("choose_rung: the scene has no cloth");
   const auto t0 = std::chrono::steady_clock::now();
   RungChoice out;

@@ -64,7 +64,7 @@ public:
     for (int j = 0; j < 2; ++j)
       for (const auto& [name, f] : fabrics_) curved_[j] = curved_[j] || !straight(f, j);
     views_ = refs.cameras;
-    for (const auto& o2 : scene_.cloth_objects()) cloth_.push_back(fabrics_.at(o2.fabric));
+    for (const auto& o2 : scene_.cloth_objects()) cloth_.push_back(object_base_fabric(o2, fabrics_));
     for (PixelKind k : refs.images.at(0).kinds) cloth_pixels_ += k == PixelKind::cloth ? 1.0 : 0.0;
     // Occluded at all? The paper's SDF tells (an unoccluded scene stores no visibility).
     int paper_sdf = 0;

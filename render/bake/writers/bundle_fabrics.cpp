@@ -23,14 +23,13 @@ std::string preset_text(const std::filesystem::path& dir, const std::string& nam
 std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const std::filesystem::path& dir,
                                                        bool only_scene) {
   std::map<std::string, std::string> texts;
-  for (const auto& o : scene.cloth_objects()) {
-    if (texts.count(o.fabric)) continue;
+  for (const std::string& name : worn_fabrics(scene)) {
     try {
-      load_fabric_named(o.fabric, dir);  // validates; throws naming the known presets or the file's problem
+      load_fabric_named(name, dir);  // validates; throws naming the known presets or the file's problem
     } catch (const std::exception& e) {
       throw BundleFabricError(std::string("--fabric: ") + e.what());
     }
-    texts.emplace(o.fabric, preset_text(dir, o.fabric));
+    texts.emplace(name, preset_text(dir, name));
   }
   if (!only_scene)
     for (const auto& name : list_fabric_presets(dir))
@@ -40,9 +39,7 @@ std::map<std::string, std::string> bundle_fabric_texts(const Scene& scene, const
 
 std::map<std::string, Fabric> cloth_fabrics(const Scene& scene, const std::map<std::string, std::string>& fabric_texts) {
   std::map<std::string, Fabric> fabrics;
-  for (const auto& o : scene.cloth_objects())
-    if (!fabrics.count(o.fabric))
-      fabrics.emplace(o.fabric, parse_fabric(fabric_texts.at(o.fabric), o.fabric));
+  for (const std::string& name : worn_fabrics(scene)) fabrics.emplace(name, parse_fabric(fabric_texts.at(name), name));
   return fabrics;
 }
 

@@ -53,6 +53,7 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
       if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
       if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
         jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
+      if (o.colour) jo["colour"] = vec3(*o.colour);
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);
@@ -70,6 +71,21 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
     writer.add_array<uint32_t>(scene_section::mesh(i, "indices"), idx, {m.triangles.size(), 3});
   }
   scene["objects"] = objects;
+  if (!s.colourways.empty()) {
+    json colourways = json::array();
+    for (const Colourway& c : s.colourways) {
+      json looks = json::object();
+      for (const auto& [object, look] : c.objects) {
+        if (!in.fabrics.count(look.fabric))
+          throw std::invalid_argument("scene bundle: no fabric text for '" + look.fabric + "' (colourway " + c.name + ")");
+        json jl{{"fabric", look.fabric}};
+        if (look.colour) jl["colour"] = vec3(*look.colour);
+        looks[object] = jl;
+      }
+      colourways.push_back({{"name", c.name}, {"objects", looks}});
+    }
+    scene["colourways"] = colourways;
+  }
   writer.add_json(scene_section::kScene, scene.dump(2));
   json fabrics = json::object();
   for (const auto& [name, text] : in.fabrics) fabrics[name] = json::parse(text);
