@@ -24,6 +24,9 @@ struct WeaveSpec {
 
 struct Fabric {
   std::string name;
+  // What a shopper reads on the kiosk's label (both optional, from the fabric file): the name to
+  // show (empty: `name`) and the composition ("100 % linen").
+  std::string display_name, composition;
   std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
   // The optical thickness τ of the cloth as a thin layer (direct transmission e^{−τ/μ}):
   // > 0 marks a sheer (voile, net) that shows what lies behind it; 0 (the Table II presets) is a
@@ -31,6 +34,9 @@ struct Fabric {
   double optical_thickness = 0.0;
   WeaveSpec weave;
 };
+
+// Longest display_name or composition a fabric file may give, in bytes: a label is a few words.
+inline constexpr std::size_t kMaxFabricTextBytes = 120;
 
 // Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.
 inline constexpr double kMaxOpticalThickness = 20.0;
