@@ -109,14 +109,19 @@ std::string optional_text(const json& doc, const char* key, const std::string& o
   const json& v = doc.at(key);
   if (!v.is_string()) fail(origin, key, "value " + show(v).substr(0, 40) + " is not a string");
   const std::string s = v.get<std::string>();
-  if (s.size() > kMaxFabricTextBytes)
-    fail(origin, key, std::to_string(s.size()) + " bytes, more than " + std::to_string(kMaxFabricTextBytes));
-  for (const char c : s)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) fail(origin, key, "holds a control character (one line of text)");
+  if (const std::string why = fabric_text_problem(s); !why.empty()) fail(origin, key, why);
   return s;
 }
 
 }  // namespace
+
+std::string fabric_text_problem(const std::string& text) {
+  if (text.size() > kMaxFabricTextBytes)
+    return std::to_string(text.size()) + " bytes, more than " + std::to_string(kMaxFabricTextBytes);
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "holds a control character (one line of text)";
+  return "";
+}
 
 Fabric parse_fabric(const std::string& text, const std::string& origin) {
   json doc;

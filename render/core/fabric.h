@@ -35,8 +35,12 @@ struct Fabric {
   WeaveSpec weave;
 };
 
-// Longest display_name or composition a fabric file may give, in bytes: a label is a few words.
+// Longest display_name or composition a fabric file (or a glTF material) may give, in bytes: a
+// label is a few words.
 inline constexpr std::size_t kMaxFabricTextBytes = 120;
+// Why `text` cannot be a display_name or composition (too long, a control character: one line),
+// or empty when it can.
+std::string fabric_text_problem(const std::string& text);
 
 // Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.
 inline constexpr double kMaxOpticalThickness = 20.0;

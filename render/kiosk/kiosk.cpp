@@ -336,10 +336,9 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
 
 void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   const std::vector<Fabric>& presets = knobs_->presets();
-  const Fabric& preset = presets.at(std::min<size_t>(s.preset_index, presets.size() - 1));
-  const Fabric f = apply_knobs(preset, s);
+  const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
   // The label names the preset the knobs dress the cloth in; any knob change shows it again.
-  if (label_) label_->show(label_text(preset), Clock::now());
+  if (label_) label_->show(label_text(*scene_, s.preset_index));
   try {
     const std::string dressed = knob_fabric(*scene_);
     size_t c = 0;
@@ -383,6 +382,7 @@ void Kiosk::draw_frame(double turn_deg) {
     const gpu::StageScope stage(gpu::Stage::present);
     if (label_) label_->present(Clock::now());
     display_->present(*target_, exposure_.shown(), label_overlay());
+    if (label_) label_->presented(Clock::now());
   }
   if (profile_) profile_->end_frame();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -393,6 +393,7 @@ void Kiosk::draw_frame(double turn_deg) {
 void Kiosk::present(Clock::time_point now) {
   label_->present(now);
   display_->present(*target_, exposure_.shown(), label_overlay());
+  label_->presented(Clock::now());
 }
 
 KioskDisplay::Overlay Kiosk::label_overlay() const {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "kiosk/kiosk_log.h"
+#include "kiosk/knob_presets.h"
 
 namespace weft {
 
@@ -15,6 +16,21 @@ double label_opacity(double since_change_s, double idle_s) {
 
 LabelText label_text(const Fabric& shown, const std::string& colourway) {
   return {shown.display_name.empty() ? shown.name : shown.display_name, colourway, shown.composition};
+}
+
+LabelText label_text(const SceneBundle& sb, std::size_t preset) {
+  if (sb.fabrics.empty()) return {};
+  const auto worn = std::next(sb.fabrics.begin(), std::ptrdiff_t(std::min(preset, sb.fabrics.size() - 1)));
+  LabelText t = label_text(worn->second);
+  const std::string dressed = knob_fabric(sb);
+  if (dressed != worn->first) return t;
+  for (const auto& o : sb.scene.cloth_objects())
+    if (o.fabric == dressed) {
+      if (!o.display_name.empty()) t.title = o.display_name;
+      if (!o.composition.empty()) t.composition = o.composition;
+      break;
+    }
+  return t;
 }
 
 KioskLabel::KioskLabel(const KioskConfig& c)
@@ -33,8 +49,8 @@ KioskLabel::KioskLabel(const KioskConfig& c)
 
 KioskLabel::~KioskLabel() = default;
 
-void KioskLabel::show(const LabelText& text, Clock::time_point now) {
-  changed_at_ = now;
+void KioskLabel::show(const LabelText& text) {
+  restart_ = true;
   if (!overlay_ || (text == text_ && drawn_opacity_ >= 0)) return;
   text_ = text;
   const int padding = std::max(4, size_px_ / 3);
@@ -48,10 +64,15 @@ float KioskLabel::opacity(Clock::time_point now) const {
 }
 
 bool KioskLabel::changed(Clock::time_point now) const {
-  return overlay_ && overlay_->width() > 0 && opacity(now) != drawn_opacity_;
+  return overlay_ && overlay_->width() > 0 && (restart_ ? 1.0f : opacity(now)) != drawn_opacity_;
 }
 
-void KioskLabel::present(Clock::time_point now) { drawn_opacity_ = opacity(now); }
+void KioskLabel::present(Clock::time_point now) { drawn_opacity_ = restart_ ? 1.0f : opacity(now); }
+
+void KioskLabel::presented(Clock::time_point now) {
+  if (restart_) changed_at_ = now;
+  restart_ = false;
+}
 
 void KioskLabel::draw(int frame_width, int frame_height) const {
   if (!overlay_ || drawn_opacity_ <= 0) return;

@@ -10,6 +10,7 @@
 
 #include "core/fabric.h"
 #include "kiosk/kiosk_config.h"
+#include "runtime/scene_bundle.h"
 #include "label/label_overlay.h"
 #include "label/label_text.h"
 
@@ -29,6 +30,10 @@ struct LabelText {
   bool operator==(const LabelText&) const = default;
 };
 LabelText label_text(const Fabric& shown, const std::string& colourway = "");
+// The label for a bundle whose knobs select preset `preset` (its index in sb.fabrics): that
+// fabric's text, with the display_name and composition the glTF gave the cloth object the knobs
+// dress, where that object still wears the fabric it was baked in. Empty when sb has no fabric.
+LabelText label_text(const SceneBundle& sb, std::size_t preset);
 
 class KioskLabel {
 public:
@@ -39,13 +44,17 @@ public:
   ~KioskLabel();
   bool usable() const { return overlay_ != nullptr; }
 
-  // The text shown from now (rasterised again only when it differs), fully visible again.
-  void show(const LabelText& text, Clock::time_point now);
+  // The text to show (rasterised again only when it differs), fully visible again: its idle
+  // time runs from when the next frame is on screen (presented(); the first frame can take
+  // seconds).
+  void show(const LabelText& text);
   // True when a frame presented at `now` would show the label otherwise than the last one did.
   bool changed(Clock::time_point now) const;
-  // A frame is presented at `now`: the label takes its opacity then (headless too, where
-  // nothing is drawn until the screenshot).
+  // A frame is about to be presented at `now`: the label takes its opacity then (headless too,
+  // where nothing is drawn until the screenshot).
   void present(Clock::time_point now);
+  // That frame is on screen (KMS: flipped; headless: finished) at `now`.
+  void presented(Clock::time_point now);
   // Blends the label, at the opacity of the last present(), over the bound frame_width ×
   // frame_height framebuffer (after tone mapping).
   void draw(int frame_width, int frame_height) const;
@@ -60,6 +69,7 @@ private:
   std::unique_ptr<label::LabelOverlay> overlay_;
   LabelText text_;
   Clock::time_point changed_at_{};
+  bool restart_ = true;       // the next presented() starts the idle time
   float drawn_opacity_ = -1;  // < 0: nothing drawn yet
 };
 

@@ -117,6 +117,8 @@ private:
   std::vector<std::string> fabrics_;
   std::vector<double> thickness_;  // per material (index + 1): extras.weft.optical_thickness, 0 when absent
   std::vector<glm::dvec2> repeats_;  // per material (index + 1): extras.weft.weave_repeats_per_uv, 0 when absent
+  // Per material (index + 1): extras.weft.display_name and .composition, empty when absent.
+  std::vector<std::string> display_names_, compositions_;
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -184,6 +186,8 @@ void Importer::resolve_materials() {
   fabrics_.assign(m_.materials.size() + 1, "");
   thickness_.assign(m_.materials.size() + 1, 0.0);
   repeats_.assign(m_.materials.size() + 1, glm::dvec2(0.0));
+  display_names_.assign(m_.materials.size() + 1, "");
+  compositions_.assign(m_.materials.size() + 1, "");
   bool any_cloth = false;
   for (size_t i = 0; i < m_.materials.size(); ++i) {
     const tinygltf::Material& mat = m_.materials[i];
@@ -204,6 +208,14 @@ void Importer::resolve_materials() {
       if (!(repeats.x > 0.0 && repeats.y > 0.0 && repeats.x <= kMaxWeaveRepeatsPerUv && repeats.y <= kMaxWeaveRepeatsPerUv))
         fail(where + ": expected [along u, along v], two numbers in (0, " + std::to_string(int(kMaxWeaveRepeatsPerUv)) + "]");
       repeats_[i + 1] = repeats;
+    }
+    for (auto [key, into] : {std::pair{"display_name", &display_names_}, std::pair{"composition", &compositions_}}) {
+      if (!(mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has(key))) continue;
+      const tinygltf::Value& t = mat.extras.Get("weft").Get(key);
+      const std::string where = "materials[" + std::to_string(i) + "] ('" + mat.name + "').extras.weft." + key;
+      if (!t.IsString()) fail(where + ": expected a string");
+      if (const std::string why = fabric_text_problem(t.Get<std::string>()); !why.empty()) fail(where + ": " + why);
+      (*into)[i + 1] = t.Get<std::string>();
     }
     if (auto it = options_.fabric_overrides.find(mat.name); it != options_.fabric_overrides.end()) {
       fabric = it->second;
@@ -484,6 +496,8 @@ Scene Importer::run() {
       o.fabric = fabrics_[i];
       o.optical_thickness = thickness_[i];
       o.weave_repeats_per_uv = repeats_[i];
+      o.display_name = display_names_[i];
+      o.composition = compositions_[i];
     } else {
       o.material = Material::lambertian;
       if (i > 0) {

@@ -38,6 +38,9 @@ struct SceneObject {
   std::string fabric;        // cloth: preset name
   double optical_thickness = 0.0;  // cloth: > 0 overrides the fabric's τ (object_fabric)
   glm::dvec2 weave_repeats_per_uv{0.0};  // cloth: > 0 sets the weave's repeats per UV unit (scene/weave_scale.h)
+  // cloth: the kiosk label's text for this object, over its fabric's when not empty (glTF
+  // extras.weft.display_name and .composition; core/fabric.h's rules).
+  std::string display_name, composition;
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;

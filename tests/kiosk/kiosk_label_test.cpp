@@ -35,6 +35,23 @@ TEST(KioskLabel, TheFabricsDisplayNameElseItsName) {
   EXPECT_EQ(t.composition, "100 % linen");
 }
 
+TEST(KioskLabel, TheGltfsTextForTheDressedObjectWhileItWearsItsOwnFabric) {
+  SceneBundle sb;
+  Fabric linen, velvet;
+  linen.name = "linen_plain", linen.display_name = "Linen, plain weave", linen.composition = "100 % linen";
+  velvet.name = "velvet";
+  sb.fabrics = {{"linen_plain", linen}, {"velvet", velvet}};
+  SceneObject chair;
+  chair.name = "chair", chair.material = Material::cloth, chair.fabric = "linen_plain", chair.display_name = "Showroom linen";
+  sb.scene.objects.push_back(chair);
+  const LabelText own = label_text(sb, 0);
+  EXPECT_EQ(own.title, "Showroom linen");
+  EXPECT_EQ(own.composition, "100 % linen");  // the glTF gave no composition: the fabric's
+  EXPECT_EQ(label_text(sb, 1).title, "velvet");  // the knobs put another fabric on it
+  EXPECT_EQ(label_text(sb, 7).title, "velvet");  // as the knobs clamp it
+  EXPECT_EQ(label_text(SceneBundle{}, 0).title, "");
+}
+
 TEST(KioskLabel, BadSettingsNameTheirFlag) {
   const auto error = [](auto edit) -> std::string {
     KioskConfig c;

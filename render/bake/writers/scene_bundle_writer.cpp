@@ -53,6 +53,8 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
       if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
       if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
         jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
+      if (!o.display_name.empty()) jo["display_name"] = o.display_name;
+      if (!o.composition.empty()) jo["composition"] = o.composition;
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);
