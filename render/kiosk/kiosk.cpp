@@ -15,7 +15,6 @@
 #include "gl/gl_error.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
-#include "image/image.h"
 #include "image/tone_map.h"
 #include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk_config_error.h"
