@@ -14,6 +14,7 @@ PACKAGES=(
   libembree-dev libtbb-dev libopenexr-dev libpng-dev libtinygltf-dev
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
+  libharfbuzz-dev libfreetype-dev fonts-dejavu-core  # the kiosk's label (render/label)
   libgtest-dev libgmock-dev
   help2man dpkg-dev file  # weft(1) from --help; the package's Depends (dpkg-shlibdeps, cpack)
   assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)

@@ -70,6 +70,18 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--probe", a->probe, "Light probe: none, camera[:ID] (libcamera) or mock:MAP.exr[,MAP.exr...]")
       ->capture_default_str();
   sub->add_option("--probe-switch", a->probe_switch_s, "Mock probe with several maps: seconds between switching them");
+  sub->add_option("--label", a->label,
+                  "The fabric's name, colourway and composition in a corner of the screen, fading out while the knobs "
+                  "are idle and back on any change: on or off (weft.service: on, WEFT_LABEL)")
+      ->capture_default_str();
+  sub->add_option("--label-position", a->label_position, "The label's corner: bottom-left, bottom-right, top-left or top-right")
+      ->capture_default_str();
+  sub->add_option("--label-size", a->label_size, "The label's name in pixels (8-256); its other lines are 0.7 of it")
+      ->capture_default_str();
+  sub->add_option("--label-idle", a->label_idle_s,
+                  "Seconds the label stays after start or a knob change before it fades out over a second (0: never fades)")
+      ->capture_default_str();
+  sub->add_option("--label-font", a->label_font, "The label's font file (TrueType or OpenType)")->capture_default_str();
   // Under systemd the RuntimeDirectory holds it (weft status reads it there); elsewhere none unless asked for.
   if (std::getenv("RUNTIME_DIRECTORY")) a->status_file = default_status_path().string();
   sub->add_option("--status-file", a->status_file, "Health file for `weft status` and a fleet (JSON, rewritten every 2 s); empty: none")

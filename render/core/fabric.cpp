@@ -103,7 +103,26 @@ WeaveSpec parse_weave(const json& w, const std::string& origin) {
   return spec;
 }
 
+// A short line of text for people (the kiosk's label): a string of printable characters (UTF-8
+// welcome), at most kMaxFabricTextBytes; absent: empty.
+std::string optional_text(const json& doc, const char* key, const std::string& origin) {
+  if (!doc.contains(key)) return "";
+  const json& v = doc.at(key);
+  if (!v.is_string()) fail(origin, key, "value " + show(v).substr(0, 40) + " is not a string");
+  const std::string s = v.get<std::string>();
+  if (const std::string why = fabric_text_problem(s); !why.empty()) fail(origin, key, why);
+  return s;
+}
+
 }  // namespace
+
+std::string fabric_text_problem(const std::string& text) {
+  if (text.size() > kMaxFabricTextBytes)
+    return std::to_string(text.size()) + " bytes, more than " + std::to_string(kMaxFabricTextBytes);
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "holds a control character (one line of text)";
+  return "";
+}
 
 Fabric parse_fabric(const std::string& text, const std::string& origin) {
   json doc;
@@ -127,6 +146,8 @@ Fabric parse_fabric(const std::string& text, const std::string& origin) {
     s << "a_1 + a_2 = " << a << " exceeds 1";
     fail(origin, "threads[*].coverage", s.str());
   }
+  f.display_name = optional_text(doc, "display_name", origin);
+  f.composition = optional_text(doc, "composition", origin);
   if (doc.contains("optical_thickness"))
     f.optical_thickness = number(doc, "optical_thickness", origin, "", 0.0, kMaxOpticalThickness, true);
   if (doc.contains("weave")) f.weave = parse_weave(doc.at("weave"), origin);

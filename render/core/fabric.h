@@ -24,6 +24,9 @@ struct WeaveSpec {
 
 struct Fabric {
   std::string name;
+  // What a shopper reads on the kiosk's label (both optional, from the fabric file): the name to
+  // show (empty: `name`) and the composition ("100 % linen").
+  std::string display_name, composition;
   std::array<ThreadParams, 2> threads;  // [0] = warp (thread 1), [1] = weft (thread 2)
   // The optical thickness τ of the cloth as a thin layer (direct transmission e^{−τ/μ}):
   // > 0 marks a sheer (voile, net) that shows what lies behind it; 0 (the Table II presets) is a
@@ -41,6 +44,12 @@ struct Fabric {
 // threads, each at its own albedo_scale: the fabric gives the weave, gloss and thread structure,
 // the product the colour. A fabric that pins its colour is returned as it is.
 Fabric product_coloured(Fabric fabric, const dvec3& colour);
+// Longest display_name or composition a fabric file (or a glTF material) may give, in bytes: a
+// label is a few words.
+inline constexpr std::size_t kMaxFabricTextBytes = 120;
+// Why `text` cannot be a display_name or composition (too long, a control character: one line),
+// or empty when it can.
+std::string fabric_text_problem(const std::string& text);
 
 // Largest optical thickness a fabric file, scene or glTF may give: e^{−20} leaves nothing to see.
 inline constexpr double kMaxOpticalThickness = 20.0;

@@ -43,7 +43,11 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
 }
 
 
-void write_png(const Image& image, const std::filesystem::path& file, double exposure) {
+namespace {
+
+// One PNG of `height` rows, each filled by row(y, bytes).
+template <class Row>
+void write_rgb_png(int width, int height, const std::filesystem::path& file, Row row_at) {
   write_file_atomically(file, [&](const std::filesystem::path& temporary) {
     std::unique_ptr<FILE, int (*)(FILE*)> fp(std::fopen(temporary.c_str(), "wb"), std::fclose);
     if (!fp) throw std::runtime_error("cannot open " + file.string() + " for writing");
@@ -53,22 +57,38 @@ void write_png(const Image& image, const std::filesystem::path& file, double exp
       png_destroy_write_struct(&png, &info);
       throw std::runtime_error("libpng: out of memory writing " + file.string());
     }
-    std::vector<unsigned char> row(static_cast<size_t>(image.width) * 3);
+    std::vector<unsigned char> row(static_cast<size_t>(width) * 3);
     if (setjmp(png_jmpbuf(png))) {
       png_destroy_write_struct(&png, &info);
       throw std::runtime_error("libpng: failed writing " + file.string());
     }
     png_init_io(png, fp.get());
-    png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
-    for (int y = 0; y < image.height; ++y) {
-      for (int x = 0; x < image.width; ++x)
-        for (int c = 0; c < 3; ++c) row[3 * x + c] = static_cast<unsigned char>(std::lround(255.0 * display_value(image.at(x, y)[c], exposure)));
+    for (int y = 0; y < height; ++y) {
+      row_at(y, row.data());
       png_write_row(png, row.data());
     }
     png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
+  });
+}
+
+}  // namespace
+
+void write_png(const Image& image, const std::filesystem::path& file, double exposure) {
+  write_rgb_png(image.width, image.height, file, [&](int y, unsigned char* row) {
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = static_cast<unsigned char>(std::lround(255.0 * display_value(image.at(x, y)[c], exposure)));
+  });
+}
+
+void write_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb, const std::filesystem::path& file) {
+  if (rgb.size() != static_cast<size_t>(width) * height * 3)
+    throw std::invalid_argument("write_png_rgb8: " + std::to_string(rgb.size()) + " bytes for " + std::to_string(width) + "x" + std::to_string(height));
+  write_rgb_png(width, height, file, [&](int y, unsigned char* row) {
+    std::copy_n(rgb.data() + static_cast<size_t>(y) * width * 3, static_cast<size_t>(width) * 3, row);
   });
 }
 

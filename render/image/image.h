@@ -22,6 +22,8 @@ void write_exr(const Image& image, const std::filesystem::path& file);
 // 8-bit sRGB PNG through the display operator of image/tone_map.h (exposure, filmic curve,
 // sRGB): display_value(radiance, exposure) per channel.
 void write_png(const Image& image, const std::filesystem::path& file, double exposure = 1.0);
+// 8-bit RGB bytes already in display values (a screen's framebuffer read back), row 0 at the top.
+void write_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb, const std::filesystem::path& file);
 // The metered exposure (tone_map.h) of the pixels where `include` is true (all when empty):
 // their log-average luminance maps to kMeteringKey, times 2^bias_ev.
 double auto_exposure(const Image& image, const std::vector<bool>& include = {}, double bias_ev = 0.0);

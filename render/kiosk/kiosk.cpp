@@ -15,7 +15,6 @@
 #include "gl/gl_error.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
-#include "image/image.h"
 #include "image/tone_map.h"
 #include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk_config_error.h"
@@ -144,6 +143,10 @@ void Kiosk::start_renderer() {
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
   colourways_ = std::make_unique<KioskColourways>(sb);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
+  if (config_.label == "on" && !label_) {
+    label_ = std::make_unique<KioskLabel>(config_);
+    if (!label_->usable()) label_.reset();  // warned: the kiosk runs without it
+  }
   if (config_.profile != "off" && !profile_) {
     const gpu::TimerQueryFunctions timers = config_.profile == "cpu" ? gpu::TimerQueryFunctions{} : gpu::timer_query_functions();
     if (config_.profile == "gpu" && !timers.available())
@@ -207,6 +210,11 @@ void Kiosk::tick() {
   const bool scene_changed = poll_bundle();
   const bool view_changed = move_view(tick_start, turn);
   const bool redraw = knobs_changed || light_changed || scene_changed || view_changed || exposure_.adapting();
+  const bool label_changed = !redraw && label_ && label_->changed(tick_start);
+  if (label_changed) {
+    present(tick_start);
+    ++drawn_;
+  }
   if (redraw) {
     draw_frame(turn);
     shown_turn_ = turn;
@@ -224,7 +232,7 @@ void Kiosk::tick() {
   if (status_) status_->update(status("running"), tick_start);
   if (config_.stats_every > 0 && tick_start - last_stats_ >= std::chrono::duration<double>(config_.stats_every))
     log_stats(tick_start);
-  wait_for_next_tick(tick_start, redraw);
+  wait_for_next_tick(tick_start, redraw || label_changed);
 }
 
 void Kiosk::hang_if_injected() {
@@ -247,9 +255,8 @@ void Kiosk::shut_down() {
   knobs_->stop();
   probe_.reset();
   if (!config_.screenshot.empty()) {
-    target_->bind();
     try {
-      write_png(gpu::read_linear_image(width_, height_), config_.screenshot, exposure_.shown());
+      display_->screenshot(*target_, exposure_.shown(), label_overlay(), config_.screenshot);
       kiosk_log_info("screenshot " + config_.screenshot);
     } catch (const std::exception& e) {
       kiosk_log_warning(std::string("screenshot failed: ") + e.what());
@@ -335,6 +342,8 @@ void Kiosk::apply_knob_state(const input::AppearanceState& s) {
   colourways_->wear(*scene_, *renderer_, cloth_fabrics_, s.colourway);
   const std::vector<Fabric>& presets = knobs_->presets(s.colourway);
   const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
+  // The label names the preset the knobs dress the cloth in; any knob change shows it again.
+  if (label_) label_->show(label_text(*scene_, s.preset_index, s.colourway));
   try {
     size_t c = 0;
     for (const auto& o : scene_->scene.cloth_objects()) {
@@ -379,12 +388,25 @@ void Kiosk::draw_frame(double turn_deg) {
   exposure_.ease(Clock::now());
   {
     const gpu::StageScope stage(gpu::Stage::present);
-    display_->present(*target_, exposure_.shown());
+    if (label_) label_->present(Clock::now());
+    display_->present(*target_, exposure_.shown(), label_overlay());
+    if (label_) label_->presented(Clock::now());
   }
   if (profile_) profile_->end_frame();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   frame_ms_.push(ms);
   since_stats_ms_.push(ms);
+}
+
+void Kiosk::present(Clock::time_point now) {
+  label_->present(now);
+  display_->present(*target_, exposure_.shown(), label_overlay());
+  label_->presented(Clock::now());
+}
+
+KioskDisplay::Overlay Kiosk::label_overlay() const {
+  if (!label_) return {};
+  return [label = label_.get()](int width, int height) { label->draw(width, height); };
 }
 
 void Kiosk::meter_as_baked() {

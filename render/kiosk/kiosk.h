@@ -17,7 +17,8 @@
 //   show_first_frame  first frame, then READY=1 to systemd
 //   knobs_->listen    the knob sources' threads start
 //   tick …            poll knobs, light and bundle, redraw if the view, knobs, light or scene
-//                     changed, WATCHDOG=1, a stats line every stats_every seconds
+//                     changed (present again if only the label is fading: kiosk/kiosk_label.h),
+//                     WATCHDOG=1, a stats line every stats_every seconds
 //   shut_down         sources stopped, knob state saved, screenshot, the exit line, STOPPING=1
 //
 // The status file, when asked for (--status-file), is written after the first frame, every few
@@ -54,6 +55,7 @@
 #include "kiosk/kiosk_config.h"
 #include "kiosk/kiosk_display.h"
 #include "kiosk/kiosk_knobs.h"
+#include "kiosk/kiosk_label.h"
 #include "kiosk/kiosk_lighting.h"
 #include "kiosk/kiosk_status_file.h"
 #include "kiosk/service_notifier.h"
@@ -104,6 +106,9 @@ private:
   void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
+  // The frame drawn last, presented again with the label at its opacity now (the label fading).
+  void present(Clock::time_point now);
+  KioskDisplay::Overlay label_overlay() const;  // empty without a label
   // The bundle as baked (its fabrics, the light set) on a quarter-size frame, shown at once.
   void meter_as_baked();
   void show_swapped(BundleSwap::Ready ready);  // a new bundle in place of the one shown
@@ -140,6 +145,7 @@ private:
   std::unique_ptr<gpu::SceneRenderer> renderer_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
   std::unique_ptr<gpu::FrameProfile> profile_;  // --profile: null when off
+  std::unique_ptr<KioskLabel> label_;           // --label on with a usable font; else null
 
   // The light: the bundle's SGs or the probe's latest fit, turned by the environment knob.
   SgLighting room_light_;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "kiosk/kiosk_config_error.h"
+#include "label/label_overlay.h"
 #include "methods/registry.h"
 
 namespace weft {
@@ -24,6 +25,12 @@ void check_kiosk_config(const KioskConfig& c) {
     throw KioskConfigError("--vertex-refresh: frames over which every vertex is recomputed once, in [1, 64]");
   if (c.profile != "off" && c.profile != "auto" && c.profile != "gpu" && c.profile != "cpu")
     throw KioskConfigError("--profile: expected off, auto, gpu or cpu, got '" + c.profile + "'");
+  if (c.label != "on" && c.label != "off") throw KioskConfigError("--label: expected on or off, got '" + c.label + "'");
+  if (!label::parse_corner(c.label_position))
+    throw KioskConfigError(std::string("--label-position: expected ") + label::corner_names() + ", got '" + c.label_position + "'");
+  if (c.label_size < 8 || c.label_size > 256) throw KioskConfigError("--label-size: pixels in [8, 256], got " + std::to_string(c.label_size));
+  if (!(c.label_idle_s >= 0.0 && c.label_idle_s <= 86400.0))
+    throw KioskConfigError("--label-idle: seconds in [0, 86400] (0: never fades)");
   if (c.method != "auto") try {
       methods::method(c.method);
     } catch (const std::invalid_argument& e) {

@@ -40,6 +40,13 @@ struct KioskConfig {
   std::string probe = "none";             // none, camera[:ID] or mock:MAP.exr[,MAP.exr...]
   double probe_switch_s = 0;              // mock probe with several maps: seconds between switches
   std::string status_file;                // the health file (kiosk/kiosk_status_file.h); empty: none
+  // The label (kiosk/kiosk_label.h): the dressed fabric's name, colourway and composition in a
+  // corner, fading out while the knobs are idle. Off unless asked for; weft.service turns it on.
+  std::string label = "off";              // on or off
+  std::string label_position = "bottom-left";  // bottom-left, bottom-right, top-left or top-right
+  int label_size = 32;                    // the name's size in pixels (the em); also the margin
+  double label_idle_s = 8;                // shown this long after start or a knob change, then fades; 0: never fades
+  std::string label_font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // label::kDefaultFontFile
 };
 
 // Throws KioskConfigError (kiosk/kiosk_config_error.h) naming the flag of the first bad value.

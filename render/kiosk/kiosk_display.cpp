@@ -2,10 +2,12 @@
 
 #include <exception>
 
+#include "gl/display_target.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "gpu/kms_display.h"
 #include "gpu/scene_renderer.h"
+#include "image/image.h"
 #include "kiosk/kiosk_log.h"
 
 namespace weft {
@@ -36,15 +38,26 @@ std::string KioskDisplay::description() const { return kms_ ? kms_->description(
 
 std::string KioskDisplay::name() const { return kms_ ? "drm:" + kms_->connector() : "headless"; }
 
-void KioskDisplay::present(const gpu::OffscreenTarget& target, double exposure) {
+void KioskDisplay::present(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay) {
   if (kms_) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width_, height_);
     tonemap_->draw(target.colour_texture(), float(exposure));
+    if (overlay) overlay(width_, height_);
     kms_->present();
   } else {
     glFinish();
   }
+}
+
+void KioskDisplay::screenshot(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay,
+                              const std::filesystem::path& file) {
+  if (!tonemap_) tonemap_ = std::make_unique<gpu::ToneMapper>();
+  const gpu::DisplayTarget shot(target.width(), target.height());
+  shot.bind();
+  tonemap_->draw(target.colour_texture(), float(exposure));
+  if (overlay) overlay(target.width(), target.height());
+  write_png_rgb8(shot.width(), shot.height(), shot.read_rgb(), file);
 }
 
 }  // namespace weft

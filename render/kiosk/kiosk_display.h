@@ -1,6 +1,8 @@
 #pragma once
 // The screen the kiosk shows frames on: a KMS display (fullscreen, page-flipped with vsync, the
 // float frame tone-mapped onto it), or a headless EGL context where frames stay offscreen.
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -35,13 +37,21 @@ public:
   std::string description() const;                  // "card0 Virtual-1 1024x768@60", or "headless"
   std::string name() const;                         // "drm:Virtual-1", or "headless"
 
-  // The frame drawn into `target`, shown at `exposure` (KMS), or finished (headless).
-  void present(const gpu::OffscreenTarget& target, double exposure);
+  // Draws over the tone-mapped frame (the label), given the framebuffer's size; empty: nothing.
+  using Overlay = std::function<void(int width, int height)>;
+
+  // The frame drawn into `target`, shown at `exposure` with `overlay` over it (KMS), or finished
+  // (headless: the overlay waits for the screenshot).
+  void present(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay = {});
+  // What the screen shows, as a PNG: `target` through the same tone mapper with `overlay` drawn
+  // over it, into an 8-bit frame read back (on KMS and headless alike).
+  void screenshot(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay,
+                  const std::filesystem::path& file);
 
 private:
   std::unique_ptr<gpu::KmsDisplay> kms_;
   std::unique_ptr<gpu::EglContext> headless_;
-  std::unique_ptr<gpu::ToneMapper> tonemap_;  // KMS only
+  std::unique_ptr<gpu::ToneMapper> tonemap_;  // KMS; headless from the first screenshot
   int width_ = 0, height_ = 0;
 };
 

@@ -128,6 +128,13 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
               throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv outside (0, 10^6]");
         }
         if (jo.contains("colour")) o.colour = read_colour(r, S, jo.at("colour"), "object '" + o.name + "'");
+        for (auto [key, into] : {std::pair{"display_name", &o.display_name}, std::pair{"composition", &o.composition}}) {
+          if (!jo.contains(key)) continue;
+          if (!jo.at(key).is_string()) throw bad(r, S, "object '" + o.name + "': " + key + " is not a string");
+          *into = jo.at(key).get<std::string>();
+          if (const std::string why = fabric_text_problem(*into); !why.empty())
+            throw bad(r, S, "object '" + o.name + "': " + key + ": " + why);
+        }
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
       } else {

@@ -128,6 +128,8 @@ private:
   std::vector<std::string> variants_;  // KHR_materials_variants' variant names, in order
   // Per variant, per material (index + 1): the materials (index + 1) that material's primitives wear in it.
   std::vector<std::vector<std::set<size_t>>> variant_materials_;
+  // Per material (index + 1): extras.weft.display_name and .composition, empty when absent.
+  std::vector<std::string> display_names_, compositions_;
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -195,6 +197,8 @@ void Importer::resolve_materials() {
   fabrics_.assign(m_.materials.size() + 1, "");
   thickness_.assign(m_.materials.size() + 1, 0.0);
   repeats_.assign(m_.materials.size() + 1, glm::dvec2(0.0));
+  display_names_.assign(m_.materials.size() + 1, "");
+  compositions_.assign(m_.materials.size() + 1, "");
   bool any_cloth = false;
   for (size_t i = 0; i < m_.materials.size(); ++i) {
     const tinygltf::Material& mat = m_.materials[i];
@@ -215,6 +219,14 @@ void Importer::resolve_materials() {
       if (!(repeats.x > 0.0 && repeats.y > 0.0 && repeats.x <= kMaxWeaveRepeatsPerUv && repeats.y <= kMaxWeaveRepeatsPerUv))
         fail(where + ": expected [along u, along v], two numbers in (0, " + std::to_string(int(kMaxWeaveRepeatsPerUv)) + "]");
       repeats_[i + 1] = repeats;
+    }
+    for (auto [key, into] : {std::pair{"display_name", &display_names_}, std::pair{"composition", &compositions_}}) {
+      if (!(mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has(key))) continue;
+      const tinygltf::Value& t = mat.extras.Get("weft").Get(key);
+      const std::string where = "materials[" + std::to_string(i) + "] ('" + mat.name + "').extras.weft." + key;
+      if (!t.IsString()) fail(where + ": expected a string");
+      if (const std::string why = fabric_text_problem(t.Get<std::string>()); !why.empty()) fail(where + ": " + why);
+      (*into)[i + 1] = t.Get<std::string>();
     }
     if (auto it = options_.fabric_overrides.find(mat.name); it != options_.fabric_overrides.end()) {
       fabric = it->second;
@@ -599,6 +611,8 @@ Scene Importer::run() {
       o.optical_thickness = thickness_[i];
       o.weave_repeats_per_uv = repeats_[i];
       if (i > 0) o.colour = cloth_colour(i - 1);
+      o.display_name = display_names_[i];
+      o.composition = compositions_[i];
     } else {
       o.material = Material::lambertian;
       if (i > 0) {

@@ -40,6 +40,9 @@ struct SceneObject {
   std::optional<glm::dvec3> colour;  // cloth: the product's colour on the threads (object_base_fabric); none: the fabric's own
   double optical_thickness = 0.0;  // cloth: > 0 overrides the fabric's τ (object_fabric)
   glm::dvec2 weave_repeats_per_uv{0.0};  // cloth: > 0 sets the weave's repeats per UV unit (scene/weave_scale.h)
+  // cloth: the kiosk label's text for this object, over its fabric's when not empty (glTF
+  // extras.weft.display_name and .composition; core/fabric.h's rules).
+  std::string display_name, composition;
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;

@@ -31,7 +31,9 @@ SceneBundleInput pillow_input() {
 }  // namespace
 
 TEST(SceneBundle, RoundTripsTheScene) {
-  const SceneBundleInput in = pillow_input();
+  SceneBundleInput in = pillow_input();
+  for (auto& o : in.scene.objects)
+    if (o.material == Material::cloth) o.display_name = "Pillow linen", o.composition = "100 % linen";
   bundle::BundleWriter w;
   add_scene_sections(w, in);
   const auto bytes = w.to_bytes();
@@ -48,6 +50,8 @@ TEST(SceneBundle, RoundTripsTheScene) {
     EXPECT_EQ(b.name, a.name);
     EXPECT_EQ(b.material, a.material);
     EXPECT_EQ(b.fabric, a.fabric);
+    EXPECT_EQ(b.display_name, a.display_name);
+    EXPECT_EQ(b.composition, a.composition);
     ASSERT_EQ(b.mesh.positions.size(), a.mesh.positions.size());
     ASSERT_EQ(b.mesh.triangles, a.mesh.triangles);
     for (size_t v = 0; v < a.mesh.positions.size(); ++v) {

@@ -253,6 +253,21 @@ TEST(GltfScene, OpticalThicknessInExtrasMakesTheClothASheer) {
   }
 }
 
+TEST(GltfScene, DisplayNameAndCompositionInExtrasAreTheLabelsText) {
+  GltfBuilder b = quad();
+  EXPECT_EQ(parse(b).objects[0].display_name, "");
+  b.j["materials"][0]["extras"]["weft"]["display_name"] = "Sofa linen";
+  b.j["materials"][0]["extras"]["weft"]["composition"] = "55 % linen, 45 % cotton";
+  const Scene s = parse(b);
+  EXPECT_EQ(s.objects[0].display_name, "Sofa linen");
+  EXPECT_EQ(s.objects[0].composition, "55 % linen, 45 % cotton");
+  for (const json& bad : {json(3), json("two\nlines"), json(std::string(200, 'x'))}) {
+    b.j["materials"][0]["extras"]["weft"]["composition"] = bad;
+    const std::string why = refusal([&] { parse(b); });
+    EXPECT_NE(why.find("extras.weft.composition"), std::string::npos) << bad.dump() << ": " << why;
+  }
+}
+
 TEST(GltfScene, SceneFileReferencesGltfWithOverridesCameraAndEnvironment) {
   const fs::path dir = fs::temp_directory_path() / "weft_gltf_scene_file_test";
   fs::create_directories(dir);

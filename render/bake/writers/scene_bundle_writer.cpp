@@ -54,6 +54,8 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
       if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
         jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
       if (o.colour) jo["colour"] = vec3(*o.colour);
+      if (!o.display_name.empty()) jo["display_name"] = o.display_name;
+      if (!o.composition.empty()) jo["composition"] = o.composition;
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);
