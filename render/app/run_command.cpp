@@ -61,7 +61,7 @@ CommandAction add_run_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "
-                  "metering, present): off, auto (GPU timer queries where the driver has them, else CPU time), gpu or cpu")
+                  "metering, present): off, auto (GPU timer queries where a hardware driver has them, else CPU time), gpu or cpu")
       ->capture_default_str();
   sub->add_option("--exposure-bias", a->exposure_bias, "EV added to the exposure metered on the cloth (+1: twice as bright)")
       ->capture_default_str();

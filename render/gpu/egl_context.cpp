@@ -174,4 +174,10 @@ TimerQueryFunctions timer_query_functions() {
   return f;
 }
 
+bool software_renderer() {
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = r ? r : "";
+  return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+}
+
 }  // namespace weft::gpu

@@ -45,5 +45,8 @@ private:
 
 // The current context's timer queries (EXT_disjoint_timer_query), all null where it has none.
 TimerQueryFunctions timer_query_functions();
+// The current context renders on the CPU (Mesa's llvmpipe or softpipe): its timer queries stamp
+// commands as they are queued, not as they run, so a profile there times on the CPU clock.
+bool software_renderer();
 
 }  // namespace weft::gpu

@@ -148,7 +148,8 @@ void Kiosk::start_renderer() {
     if (!label_->usable()) label_.reset();  // warned: the kiosk runs without it
   }
   if (config_.profile != "off" && !profile_) {
-    const gpu::TimerQueryFunctions timers = config_.profile == "cpu" ? gpu::TimerQueryFunctions{} : gpu::timer_query_functions();
+    const bool cpu = config_.profile == "cpu" || (config_.profile == "auto" && gpu::software_renderer());
+    const gpu::TimerQueryFunctions timers = cpu ? gpu::TimerQueryFunctions{} : gpu::timer_query_functions();
     if (config_.profile == "gpu" && !timers.available())
       kiosk_log_warning("--profile gpu: the driver has no GPU timer queries (EXT_disjoint_timer_query); timing on the CPU");
     profile_ = std::make_unique<gpu::FrameProfile>(timers);

@@ -1,0 +1,34 @@
+// The kiosk's frame settings are checked before anything starts, each refusal naming its flag:
+// the per-stage profile's clock and the per-vertex passes' reuse.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "kiosk/kiosk_config.h"
+#include "kiosk/kiosk_config_error.h"
+
+using namespace weft;
+
+namespace {
+template <class Edit>
+std::string error(Edit edit) {
+  KioskConfig c;
+  c.bundle = "x.weft";
+  edit(c);
+  try {
+    check_kiosk_config(c);
+  } catch (const KioskConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
+  for (const char* clock : {"off", "auto", "gpu", "cpu"}) EXPECT_EQ(error([&](KioskConfig& c) { c.profile = clock; }), "") << clock;
+  EXPECT_EQ(error([](KioskConfig& c) { c.profile = "fast"; }).rfind("--profile:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 1; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 64; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 0; }).rfind("--vertex-refresh:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 65; }).rfind("--vertex-refresh:", 0), 0u);
+}
