@@ -112,6 +112,7 @@ private:
   // The bundle as baked (its fabrics, the light set) on a quarter-size frame, shown at once.
   void meter_as_baked();
   void show_swapped(BundleSwap::Ready ready);  // a new bundle in place of the one shown
+  void start_profile();  // --profile: the frame profile (kiosk_reports.cpp, with the two below)
   void log_stats(Clock::time_point now);
   // The status file (kiosk/kiosk_status_file.h): `state` now, or (update) when due or news.
   KioskStatus status(const char* state) const;

@@ -44,7 +44,7 @@ TEST(FrameProfile, NestedStagesAreChargedOnceAndExclusively) {
   EXPECT_GE(cloth, 19.0);
   EXPECT_LT(cloth, pass) << "the pass's 60 ms were charged to the cloth too";
   EXPECT_EQ(ms[size_t(gpu::Stage::backdrop)], 0.0);
-  EXPECT_GE(profile.median_total_ms(), cloth + pass - 1e-9);
+  EXPECT_GE(profile.median_total_ms(), 79.0);  // every frame holds the 80 ms waited
   const std::string line = profile.summary();
   EXPECT_NE(line.find("vertex passes"), std::string::npos) << line;
   EXPECT_EQ(line.find("backdrop"), std::string::npos) << line;
