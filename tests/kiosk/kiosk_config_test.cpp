@@ -1,7 +1,8 @@
 // The kiosk's frame settings are checked before anything starts, each refusal naming its flag:
-// the per-stage profile's clock and the per-vertex passes' reuse.
+// the per-stage profile's clock, the per-vertex passes' reuse, the label's settings.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "kiosk/kiosk_config.h"
@@ -31,4 +32,15 @@ TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 64; }), "");
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 0; }).rfind("--vertex-refresh:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 65; }).rfind("--vertex-refresh:", 0), 0u);
+}
+
+TEST(KioskConfig, LabelSettingsNameTheirFlag) {
+  EXPECT_EQ(error([](KioskConfig& c) { c.label = "on"; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = 0; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.label = "yes"; }).rfind("--label:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_position = "middle"; }).rfind("--label-position:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_size = 4; }).rfind("--label-size:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_size = 1000; }).rfind("--label-size:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = -1; }).rfind("--label-idle:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = std::numeric_limits<double>::quiet_NaN(); }).rfind("--label-idle:", 0), 0u);
 }

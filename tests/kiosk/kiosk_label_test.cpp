@@ -52,28 +52,6 @@ TEST(KioskLabel, TheGltfsTextForTheDressedObjectWhileItWearsItsOwnFabric) {
   EXPECT_EQ(label_text(SceneBundle{}, 0).title, "");
 }
 
-TEST(KioskLabel, BadSettingsNameTheirFlag) {
-  const auto error = [](auto edit) -> std::string {
-    KioskConfig c;
-    c.bundle = "x.weft";
-    edit(c);
-    try {
-      check_kiosk_config(c);
-    } catch (const KioskConfigError& e) {
-      return e.what();
-    }
-    return "";
-  };
-  EXPECT_EQ(error([](KioskConfig& c) { c.label = "on"; }), "");
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = 0; }), "");
-  EXPECT_EQ(error([](KioskConfig& c) { c.label = "yes"; }).rfind("--label:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_position = "middle"; }).rfind("--label-position:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_size = 4; }).rfind("--label-size:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_size = 1000; }).rfind("--label-size:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = -1; }).rfind("--label-idle:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = std::numeric_limits<double>::quiet_NaN(); }).rfind("--label-idle:", 0), 0u);
-}
-
 TEST(KioskLabel, AFabricFileGivesItsDisplayNameAndComposition) {
   const Fabric f = load_fabric_preset("linen_plain", std::string(WEFT_SOURCE_ASSETS) + "/fabrics");
   EXPECT_EQ(f.display_name, "Linen, plain weave");
