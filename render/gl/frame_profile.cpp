@@ -32,8 +32,8 @@ const char* stage_name(Stage s) {
   return "?";
 }
 
-FrameProfile::FrameProfile(TimerQueryFunctions timers, bool prefer_gpu)
-    : clock_(prefer_gpu && timers.available() ? Clock::gpu_timestamps : Clock::cpu_finish), timers_(timers) {}
+FrameProfile::FrameProfile(TimerQueryFunctions timers)
+    : clock_(timers.available() ? Clock::gpu_timestamps : Clock::cpu_finish), timers_(timers) {}
 
 FrameProfile::~FrameProfile() {
   if (t_recording == this) t_recording = nullptr;

@@ -35,8 +35,8 @@ struct TimerQueryFunctions {
 class FrameProfile {
 public:
   enum class Clock { gpu_timestamps, cpu_finish };
-  // Needs the GL context current. GPU timestamps when `timers` are available and `prefer_gpu`.
-  explicit FrameProfile(TimerQueryFunctions timers = {}, bool prefer_gpu = true);
+  // Needs the GL context current. GPU timestamps when `timers` are available, else the CPU clock.
+  explicit FrameProfile(TimerQueryFunctions timers = {});
   ~FrameProfile();
   FrameProfile(const FrameProfile&) = delete;
   FrameProfile& operator=(const FrameProfile&) = delete;

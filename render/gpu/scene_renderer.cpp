@@ -185,7 +185,6 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     glDepthMask(GL_TRUE);
     glDepthRangef(0.0f, 1.0f);
     glDepthFunc(GL_LESS);
-    glEnable(GL_DEPTH_TEST);
   };
 
   // Opaque surfaces first; see-through cloth last, blended over them without writing depth.

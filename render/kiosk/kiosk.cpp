@@ -380,12 +380,7 @@ void Kiosk::draw_frame(double turn_deg) {
     exposure_.meter_bound_framebuffer(width_, height_);
   }
   exposure_.ease(Clock::now());
-  {
-    const gpu::StageScope stage(gpu::Stage::present);
-    if (label_) label_->present(Clock::now());
-    display_->present(*target_, exposure_.shown(), label_overlay());
-    if (label_) label_->presented(Clock::now());
-  }
+  present(Clock::now());
   if (profile_) profile_->end_frame();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   frame_ms_.push(ms);
@@ -393,9 +388,10 @@ void Kiosk::draw_frame(double turn_deg) {
 }
 
 void Kiosk::present(Clock::time_point now) {
-  label_->present(now);
+  const gpu::StageScope stage(gpu::Stage::present);
+  if (label_) label_->present(now);
   display_->present(*target_, exposure_.shown(), label_overlay());
-  label_->presented(Clock::now());
+  if (label_) label_->presented(Clock::now());
 }
 
 KioskDisplay::Overlay Kiosk::label_overlay() const {

@@ -106,7 +106,8 @@ private:
   void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
-  // The frame drawn last, presented again with the label at its opacity now (the label fading).
+  // The frame drawn last to the screen, with the label (if any) at its opacity now: after each
+  // draw, and again alone while the label fades.
   void present(Clock::time_point now);
   KioskDisplay::Overlay label_overlay() const;  // empty without a label
   // The bundle as baked (its fabrics, the light set) on a quarter-size frame, shown at once.

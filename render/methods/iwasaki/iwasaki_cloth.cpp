@@ -32,16 +32,17 @@ SgLighting shaded(const SgLighting& sgs) {
   return out;
 }
 
-bool identical_lighting(const SgLighting& a, const SgLighting& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness || a[i].amplitude != b[i].amplitude) return false;
-  return true;
-}
 bool same_lighting(const SgLighting& a, const SgLighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].axis != b[i].axis || a[i].sharpness != b[i].sharpness) return false;  // amplitude: no effect on visibility
+  return true;
+}
+// The same lobes at the same amplitudes: what the per-vertex pass's kept radiance depends on.
+bool identical_lighting(const SgLighting& a, const SgLighting& b) {
+  if (!same_lighting(a, b)) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].amplitude != b[i].amplitude) return false;
   return true;
 }
 }  // namespace

@@ -45,7 +45,6 @@ void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
   draw_blocks(program, first_unit, blocks, 0, count_);
   valid_blocks_ = blocks;
   next_share_ = 0;
-  last_share_ = {0, count_};
 }
 
 void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks, int shares) {
@@ -59,7 +58,6 @@ void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks,
   const int begin = int(long(count_) * s / shares), end = int(long(count_) * (s + 1) / shares);
   draw_blocks(program, first_unit, blocks, begin, end);
   next_share_ = (s + 1) % shares;
-  last_share_ = {begin, end};
 }
 
 void VertexPass::draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end) {

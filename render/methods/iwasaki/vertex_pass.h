@@ -6,7 +6,6 @@
 // vertex stage, but llvmpipe shades vertices on one thread and fragments on all of them, and a
 // GPU shades each vertex once instead of once per cached batch.
 #include <memory>
-#include <utility>
 
 #include "gl/gl_program.h"
 #include "methods/iwasaki/iwasaki_textures.h"
@@ -32,8 +31,6 @@ public:
   void run_share(const GlProgram& program, int first_unit, int blocks, int shares);
   // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
   void invalidate() { valid_blocks_ = 0; }
-  // The vertices [begin, end) the last run_share recomputed (all after a whole pass).
-  std::pair<int, int> last_share() const { return last_share_; }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
 
@@ -44,7 +41,6 @@ private:
   int target_blocks_ = 0;
   int valid_blocks_ = 0;  // blocks holding values from a whole pass (0: none)
   int next_share_ = 0;
-  std::pair<int, int> last_share_{0, 0};
   void draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end);
 };
 
