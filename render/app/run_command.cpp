@@ -59,6 +59,10 @@ CommandAction add_run_command(CLI::App& app) {
                   "While only the turntable moves, recompute the cloth's per-vertex shading over this many frames "
                   "(each frame a share; knob, light and zoom changes recompute all at once); 1: every vertex every frame")
       ->capture_default_str();
+  sub->add_option("--broad-lobe-refresh", a->broad_lobe_refresh,
+                  "While only the turntable moves, recompute the broad sky lobes' quadrature (the slow-changing part of "
+                  "the per-vertex shading) over this many frames; the sharper lobes follow --vertex-refresh")
+      ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "
                   "metering, present): off, auto (GPU timer queries where a hardware driver has them, else CPU time), gpu or cpu")

@@ -72,6 +72,7 @@ public:
   // recomputes 1/shares of the vertices; refresh_all(): every vertex on the next draw (the eye
   // jumped). Default 1: all, every draw.
   void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
+  void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
   void refresh_all() { cloth_->refresh_all(); }
   // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
   // than about a repeat, each point shows the thread that lies there. Off by default; a

@@ -332,6 +332,7 @@ void Kiosk::draw_frame(double turn_deg) {
   if (profile_) profile_->begin_frame();
   if (zoom_shown_ != zoom_drawn_) renderer_->refresh_all();  // the dolly moves the eye far in a frame
   renderer_->set_vertex_refresh(config_.vertex_refresh);
+  renderer_->set_broad_lobe_refresh(config_.broad_lobe_refresh);
   target_->bind();
   // Far away the camera circles the product; all the way in, the point it looks at up close.
   const Camera camera = dolly(scene_->scene.camera, closeup_, zoom_shown_);
@@ -364,6 +365,7 @@ void Kiosk::meter_as_baked() {
   target_->bind();
   const int mw = std::max(8, width_ / 4), mh = std::max(8, height_ / 4);
   renderer_->set_vertex_refresh(1);
+  renderer_->set_broad_lobe_refresh(1);
   renderer_->draw(scene_->scene.camera, mw, mh);
   renderer_->refresh_all();  // kept per-vertex values are for this camera, not the next frame's
   exposure_.restart();  // shown at once, not eased in from another scene's

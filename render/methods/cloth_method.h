@@ -51,6 +51,9 @@ public:
   // jumped. shares = 1 (the default): every vertex every draw. A method without per-vertex
   // work ignores both.
   virtual void set_vertex_refresh(int shares) { (void)shares; }
+  // The same for the broad lobes' quadrature alone (methods/broad_lobe_bits.h), whose radiance
+  // changes slowly with the view: recomputed once every max(shares, vertex refresh) draws.
+  virtual void set_broad_lobe_refresh(int shares) { (void)shares; }
   virtual void refresh_all() {}
   // Draws the object into the bound framebuffer; blending and depth writes are the caller's.
   virtual void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) = 0;

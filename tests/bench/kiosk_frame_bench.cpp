@@ -3,14 +3,15 @@
 // a turntable at 6°/s sampled at 15 frames per second (0.4° a frame), 640×480 headless.
 //  - per rung: the median frame and its stages (gl/frame_profile.h, CPU clock on llvmpipe);
 //  - per rung with per-vertex passes: the same with the passes' temporal reuse over R frames
-//    (gpu::SceneRenderer::set_vertex_refresh), and what reuse costs in accuracy: each frame
+//    (gpu::SceneRenderer::set_vertex_refresh; "bR": the broad lobes' quadrature alone,
+//    set_broad_lobe_refresh), and what reuse costs in accuracy: each frame
 //    against a frame with every vertex recomputed at the same angle, relative RMSE over the
 //    cloth pixels (mean and worst over the timed frames);
 //  - the first frame (renderer made, lighting set, drawn) and a still scene's cost (nothing moved:
 //    the kiosk draws nothing; here the cost of a frame with no pass work left is not measured).
 // WEFT_KIOSK_BUNDLES: "name=FILE,name=FILE" (default: the showroom and the pillow, baked here with
 // the showroom's coarse grids);
-// WEFT_KIOSK_METHODS: rungs ("auto,iwasaki_vertex,sheen"); WEFT_KIOSK_REFRESH: shares ("1,4,8,16");
+// WEFT_KIOSK_METHODS: rungs ("auto,iwasaki_vertex,sheen"); WEFT_KIOSK_REFRESH: shares ("1,4,8,16,b4,b8,b16");
 // WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
 #include <gtest/gtest.h>
 
@@ -97,15 +98,22 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
                     : baked("showroom", dir, kShowroomGrids) + "," + baked("pillow", dir, kShowroomGrids);
   }
   const std::vector<std::string> methods = split(env_or("WEFT_KIOSK_METHODS", smoke ? "auto" : "auto,iwasaki_vertex,sheen"), ',');
-  std::vector<int> shares;
-  for (const std::string& s : split(env_or("WEFT_KIOSK_REFRESH", smoke ? "1,4" : "1,4,8,16"), ',')) shares.push_back(std::stoi(s));
+  struct Reuse {
+    int all = 1, broad = 1;
+    int longest() const { return std::max(all, broad); }
+    std::string name() const { return broad > 1 ? "broad " + std::to_string(broad) : std::to_string(all); }
+  };
+  std::vector<Reuse> shares;
+  for (const std::string& s : split(env_or("WEFT_KIOSK_REFRESH", smoke ? "1,4,b4" : "1,4,8,16,b4,b8,b16"), ','))
+    shares.push_back(s[0] == 'b' ? Reuse{1, std::stoi(s.substr(1))} : Reuse{std::stoi(s), 1});
   const int frames = std::stoi(env_or("WEFT_KIOSK_FRAMES", smoke ? "3" : "24"));
   const std::vector<std::string> size = split(env_or("WEFT_KIOSK_SIZE", smoke ? "64x48" : "640x480"), 'x');
   const int w = std::stoi(size.at(0)), h = std::stoi(size.at(1));
   // 6°/s at 15 frames/s; the smoke holds the camera still, where reuse must change nothing.
   const double kDegPerFrame = std::stod(env_or("WEFT_KIOSK_DEG_PER_FRAME", smoke ? "0" : "0.4"));
   // Frames before timing: the reuse reaches its steady state within R of them.
-  const int kWarm = std::max(smoke ? 4 : 16, *std::max_element(shares.begin(), shares.end()));
+  int kWarm = smoke ? 4 : 16;
+  for (const Reuse& s : shares) kWarm = std::max(kWarm, s.longest());
 
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::ostringstream table;
@@ -136,10 +144,12 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
       glFinish();
       const double first_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_first).count();
       const bool per_vertex = method.shading == methods::Shading::per_vertex;
-      for (int share : shares) {
-        if (share > 1 && !per_vertex) continue;
+      for (const Reuse& reuse : shares) {
+        const bool reused = reuse.longest() > 1;
+        if (reused && !per_vertex) continue;
         r->refresh_all();
-        r->set_vertex_refresh(share);
+        r->set_vertex_refresh(reuse.all);
+        r->set_broad_lobe_refresh(reuse.broad);
         gpu::FrameProfile profile(gpu::TimerQueryFunctions{});  // CPU clock: llvmpipe's timestamps are not its work
         std::vector<double> ms, errors;
         for (int k = 1; k <= kWarm + frames; ++k) {
@@ -153,7 +163,7 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
             profile.end_frame();
             ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
           }
-          if (timed && share > 1) {
+          if (timed && reused) {
             truth.bind();
             full->draw(camera_at(k), w, h);
             errors.push_back(cloth_rmse(target.read_rgba(), truth.read_rgba()));
@@ -164,17 +174,18 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
         double mean_err = 0.0, worst = 0.0;
         for (double e : errors) mean_err += e / double(errors.size()), worst = std::max(worst, e);
         char row[512];
-        std::snprintf(row, sizeof row, "| %s | %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |\n", name.c_str(),
-                      (method_name == "auto" ? "auto: " + method.name : method.name).c_str(), share, median(ms),
+        std::snprintf(row, sizeof row, "| %s | %s | %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |\n", name.c_str(),
+                      (method_name == "auto" ? "auto: " + method.name : method.name).c_str(), reuse.name().c_str(), median(ms),
                       stage(gpu::Stage::backdrop), stage(gpu::Stage::surfaces), stage(gpu::Stage::vertex_pass), stage(gpu::Stage::cloth),
                       stage(gpu::Stage::weave), stage(gpu::Stage::other), first_ms,
-                      share > 1 ? (std::to_string(mean_err * 100.0).substr(0, 5) + " %").c_str() : "",
-                      share > 1 ? (std::to_string(worst * 100.0).substr(0, 5) + " %").c_str() : "");
+                      reused ? (std::to_string(mean_err * 100.0).substr(0, 5) + " %").c_str() : "",
+                      reused ? (std::to_string(worst * 100.0).substr(0, 5) + " %").c_str() : "");
         table << row;
         std::cout << row << std::flush;
         // A camera that does not move: reused values are the values, so the frame is the full one.
-        if (share > 1 && kDegPerFrame == 0.0)
-          EXPECT_LE(worst, 1e-6) << name << " " << method.name << " R=" << share << ": reuse differs from the full frame of the same view";
+        if (reused && kDegPerFrame == 0.0) {
+          EXPECT_LE(worst, 1e-6) << name << " " << method.name << " R=" << reuse.name() << ": reuse differs from the full frame of the same view";
+        }
       }
     }
   }

@@ -32,6 +32,9 @@ TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 64; }), "");
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 0; }).rfind("--vertex-refresh:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 65; }).rfind("--vertex-refresh:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 8; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 0; }).rfind("--broad-lobe-refresh:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 65; }).rfind("--broad-lobe-refresh:", 0), 0u);
 }
 
 TEST(KioskConfig, LabelSettingsNameTheirFlag) {

@@ -289,7 +289,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   if (broad_pass_) {  // per pixel: the broad lobes' part per vertex first (units 4–6: the pass's inputs)
     set_up(*broad_pass_);
     glUniform1i(broad_pass_->uniform("u_pass_narrow"), 0);
-    o.pass->run_share(*broad_pass_, 4, 1, vertex_shares_);
+    o.pass->run_share(*broad_pass_, 4, 1, std::max(vertex_shares_, broad_shares_));
   }
   set_up(program_);
   if (!o.pass) {
@@ -311,7 +311,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     return;
   }
   // One block of the pass per SG; the draw sums them, each cut by the facet's plane.
-  o.pass->run_share(program_, 4, count, vertex_shares_);
+  std::vector<int> shares(size_t(std::max(count, 1)), vertex_shares_);
+  for (int k = 0; k < count; ++k)
+    if (broad[size_t(k)] != 0) shares[size_t(k)] = std::max(vertex_shares_, broad_shares_);
+  o.pass->run_shares(program_, 4, shares);
   const GlProgram& d = facet_draw(count);
   d.use();
   glUniformMatrix4fv(d.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

@@ -79,6 +79,7 @@ public:
   void set_lighting(size_t handle, const SgLighting& sgs, const SgVisibility& values) override;
   bool has_visibility(size_t handle) const;
   void set_vertex_refresh(int shares) override { vertex_shares_ = shares < 1 ? 1 : shares; }
+  void set_broad_lobe_refresh(int shares) override { broad_shares_ = shares < 1 ? 1 : shares; }
   void refresh_all() override;
 
 private:
@@ -97,6 +98,7 @@ private:
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;
   int vertex_shares_ = 1;
+  int broad_shares_ = 1;
 };
 
 }  // namespace weft::gpu

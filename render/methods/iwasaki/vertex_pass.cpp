@@ -42,31 +42,40 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
   blocks = std::max(blocks, 1);
-  draw_blocks(program, first_unit, blocks, 0, count_);
+  draw_blocks(program, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
   valid_blocks_ = blocks;
-  next_share_ = 0;
+  calls_ = 0;
 }
 
 void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks, int shares) {
-  blocks = std::max(blocks, 1);
-  if (shares <= 1 || valid_blocks_ != blocks) {
+  run_shares(program, first_unit, std::vector<int>(size_t(std::max(blocks, 1)), shares));
+}
+
+void VertexPass::run_shares(const GlProgram& program, int first_unit, std::span<const int> block_shares) {
+  const int blocks = std::max(int(block_shares.size()), 1);
+  const bool reuse = std::any_of(block_shares.begin(), block_shares.end(), [](int s) { return s > 1; });
+  if (!reuse || valid_blocks_ != blocks) {
     run(program, first_unit, blocks);
     return;
   }
-  shares = std::min(shares, count_);
-  const int s = next_share_ % shares;
-  const int begin = int(long(count_) * s / shares), end = int(long(count_) * (s + 1) / shares);
-  draw_blocks(program, first_unit, blocks, begin, end);
-  next_share_ = (s + 1) % shares;
+  ++calls_;
+  std::vector<std::pair<int, int>> ranges(size_t(blocks), {0, count_});
+  for (int b = 0; b < int(block_shares.size()); ++b) {
+    const int shares = std::clamp(block_shares[size_t(b)], 1, std::max(count_, 1));
+    const long s = (calls_ - 1) % shares;
+    ranges[size_t(b)] = {int(long(count_) * s / shares), int(long(count_) * (s + 1) / shares)};
+  }
+  draw_blocks(program, first_unit, ranges);
 }
 
-void VertexPass::draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end) {
+void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges) {
   const StageScope stage(Stage::vertex_pass);
   // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_VIEWPORT, viewport);
-  blocks = std::max(blocks, 1);
+  const int blocks = int(ranges.size());
+  bool whole = std::all_of(ranges.begin(), ranges.end(), [&](const auto& r) { return r.first == 0 && r.second >= count_; });
   if (blocks > target_blocks_) {  // the target grows to the most blocks asked for
     GLint max_size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -77,7 +86,7 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, int block
     target_ = std::make_unique<OffscreenTarget>(width_, height_ * blocks, /*full_float=*/true);
     target_blocks_ = blocks;
     valid_blocks_ = 0;
-    begin = 0, end = count_;  // a new target holds nothing to keep
+    whole = true;  // a new target holds nothing to keep
   }
   const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
   const GlTexture* inputs[3] = {&position_, &normal_, &warp_};
@@ -94,27 +103,28 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, int block
   glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  if (begin == 0 && end >= count_) {
+  if (whole) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
   } else {
-    // Vertices [begin, end) are texels of whole rows between a partial first and last row: up to
-    // three rectangles in each block.
+    // Vertices [begin, end) of a block are texels of whole rows between a partial first and last
+    // row: up to three rectangles.
     const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
     glEnable(GL_SCISSOR_TEST);
-    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
-    auto rect = [&](int x0, int x1, int y0, int y1) {
-      if (x1 <= x0 || y1 <= y0) return;
-      for (int b = 0; b < blocks; ++b) {
+    for (int b = 0; b < blocks; ++b) {
+      const auto [begin, end] = ranges[size_t(b)];
+      const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
+      auto rect = [&](int x0, int x1, int y0, int y1) {
+        if (x1 <= x0 || y1 <= y0) return;
         glScissor(x0, b * height_ + y0, x1 - x0, y1 - y0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+      };
+      if (r0 == r1) {
+        rect(c0, c1, r0, r0 + 1);
+      } else {
+        rect(c0, width_, r0, r0 + 1);
+        rect(0, width_, r0 + 1, r1);
+        rect(0, c1, r1, r1 + 1);
       }
-    };
-    if (r0 == r1) {
-      rect(c0, c1, r0, r0 + 1);
-    } else {
-      rect(c0, width_, r0, r0 + 1);
-      rect(0, width_, r0 + 1, r1);
-      rect(0, c1, r1, r1 + 1);
     }
     if (!scissor) glDisable(GL_SCISSOR_TEST);
   }

@@ -6,6 +6,9 @@
 // vertex stage, but llvmpipe shades vertices on one thread and fragments on all of them, and a
 // GPU shades each vertex once instead of once per cached batch.
 #include <memory>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include "gl/gl_program.h"
 #include "methods/iwasaki/iwasaki_textures.h"
@@ -29,10 +32,15 @@ public:
   // whole pass runs instead when nothing valid is kept: the first run, a larger target, a run
   // with other blocks, or after invalidate(). shares ≤ 1: run().
   void run_share(const GlProgram& program, int first_unit, int blocks, int shares);
+  // The same with a rate per block: block b recomputes 1/block_shares[b] of the vertices per call
+  // (a value smooth in the view, such as a broad lobe's, kept longer than a sharp one's).
+  void run_shares(const GlProgram& program, int first_unit, std::span<const int> block_shares);
   // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
   void invalidate() { valid_blocks_ = 0; }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
+  // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
+  std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
 
 private:
   int count_, width_, height_;  // height_: rows per block
@@ -40,8 +48,9 @@ private:
   std::unique_ptr<OffscreenTarget> target_;
   int target_blocks_ = 0;
   int valid_blocks_ = 0;  // blocks holding values from a whole pass (0: none)
-  int next_share_ = 0;
-  void draw_blocks(const GlProgram& program, int first_unit, int blocks, int begin, int end);
+  long calls_ = 0;  // run_shares calls since the last whole pass: block b draws share calls_ mod its shares
+  // Block b recomputes vertices [ranges[b].first, ranges[b].second).
+  void draw_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges);
 };
 
 }  // namespace weft::gpu
