@@ -59,9 +59,10 @@ CommandAction add_run_command(CLI::App& app) {
                   "While only the turntable moves, recompute the cloth's per-vertex shading over this many frames "
                   "(each frame a share; knob, light and zoom changes recompute all at once); 1: every vertex every frame")
       ->capture_default_str();
-  sub->add_option("--broad-lobe-refresh", a->broad_lobe_refresh,
-                  "While only the turntable moves, recompute the broad sky lobes' quadrature (the slow-changing part of "
-                  "the per-vertex shading) over this many frames; the sharper lobes follow --vertex-refresh")
+  sub->add_option("--broad-lobe-refresh-deg", a->broad_lobe_refresh_deg,
+                  "While only the turntable moves, recompute the broad sky lobes' quadrature (the part of the per-vertex "
+                  "shading that changes slowly with the view) once per this many degrees of turn, a share each frame; "
+                  "the sharper lobes follow --vertex-refresh; 0: every frame")
       ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "

@@ -332,7 +332,7 @@ void Kiosk::draw_frame(double turn_deg) {
   if (profile_) profile_->begin_frame();
   if (zoom_shown_ != zoom_drawn_) renderer_->refresh_all();  // the dolly moves the eye far in a frame
   renderer_->set_vertex_refresh(config_.vertex_refresh);
-  renderer_->set_broad_lobe_refresh(config_.broad_lobe_refresh);
+  renderer_->set_broad_lobe_refresh(refresh_shares(config_.broad_lobe_refresh_deg, std::abs(turn_deg - shown_turn_)));
   target_->bind();
   // Far away the camera circles the product; all the way in, the point it looks at up close.
   const Camera camera = dolly(scene_->scene.camera, closeup_, zoom_shown_);

@@ -23,8 +23,8 @@ void check_kiosk_config(const KioskConfig& c) {
   if (!(c.zoom >= 0.0 && c.zoom <= 1.0)) throw KioskConfigError("--zoom: the way to the close-up, in [0, 1]");
   if (c.vertex_refresh < 1 || c.vertex_refresh > 64)
     throw KioskConfigError("--vertex-refresh: frames over which every vertex is recomputed once, in [1, 64]");
-  if (c.broad_lobe_refresh < 1 || c.broad_lobe_refresh > 64)
-    throw KioskConfigError("--broad-lobe-refresh: frames over which the broad lobes' quadrature is recomputed once, in [1, 64]");
+  if (!(c.broad_lobe_refresh_deg >= 0.0 && c.broad_lobe_refresh_deg <= 90.0))
+    throw KioskConfigError("--broad-lobe-refresh-deg: degrees of turn over which the broad lobes' quadrature is recomputed once, in [0, 90]");
   if (c.profile != "off" && c.profile != "auto" && c.profile != "gpu" && c.profile != "cpu")
     throw KioskConfigError("--profile: expected off, auto, gpu or cpu, got '" + c.profile + "'");
   if (c.label != "on" && c.label != "off") throw KioskConfigError("--label: expected on or off, got '" + c.label + "'");

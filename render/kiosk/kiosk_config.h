@@ -33,9 +33,10 @@ struct KioskConfig {
   // (gpu::SceneRenderer::set_vertex_refresh): each frame recomputes 1/vertex_refresh of the cloth's
   // vertices; a knob, lighting or zoom change recomputes all at once. 1: all, every frame.
   int vertex_refresh = 1;
-  // The same for the broad lobes' quadrature alone (gpu::SceneRenderer::set_broad_lobe_refresh),
-  // whose radiance changes slowly with the view.
-  int broad_lobe_refresh = 1;
+  // The broad lobes' quadrature alone (gpu::SceneRenderer::set_broad_lobe_refresh), whose radiance
+  // changes slowly with the view, is recomputed for every vertex at least once per this many degrees
+  // of turntable (each frame the share its turn calls for); 0: every frame.
+  double broad_lobe_refresh_deg = 6.0;
   double stats_every = 300;               // seconds between stats lines; 0: none
   // The per-stage frame profile (gl/frame_profile.h) in the stats lines and the last line:
   // off, auto (GPU timestamps where the driver has them), gpu or cpu.

@@ -1,5 +1,6 @@
 #include "kiosk/turntable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -32,6 +33,13 @@ Camera turned_about_z(const Camera& camera, double deg, const glm::dvec3& pivot)
   out.target = turn(camera.target);
   out.up = glm::dvec3(c * camera.up.x - s * camera.up.y, s * camera.up.x + c * camera.up.y, camera.up.z);  // no roll
   return out;
+}
+
+int refresh_shares(double refresh_deg, double turn_deg) {
+  if (!(refresh_deg > 0.0)) return 1;
+  const double turn = std::abs(turn_deg);
+  if (!(turn * kMaxRefreshShares > refresh_deg)) return kMaxRefreshShares;  // still, or nearly: values hold
+  return std::max(1, int(refresh_deg / turn));
 }
 
 }  // namespace weft

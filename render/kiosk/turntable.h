@@ -15,5 +15,10 @@ glm::dvec3 turntable_pivot(const Scene& scene);
 // the camera circles the product and keeps looking at it as it did (a glTF camera's target is
 // only a point ahead of it, not the product).
 Camera turned_about_z(const Camera& camera, double deg, const glm::dvec3& pivot);
+// Frames over which to spread the recomputation of a per-vertex value (a share each frame) so that
+// the turntable turns at most `refresh_deg` degrees between two recomputations of any vertex, at
+// `turn_deg` degrees a frame; 1 (every frame) for refresh_deg = 0, at most kMaxRefreshShares.
+inline constexpr int kMaxRefreshShares = 64;
+int refresh_shares(double refresh_deg, double turn_deg);
 
 }  // namespace weft

@@ -32,9 +32,9 @@ TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 64; }), "");
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 0; }).rfind("--vertex-refresh:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 65; }).rfind("--vertex-refresh:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 8; }), "");
-  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 0; }).rfind("--broad-lobe-refresh:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh = 65; }).rfind("--broad-lobe-refresh:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = 0; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = -1; }).rfind("--broad-lobe-refresh-deg:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = std::numeric_limits<double>::quiet_NaN(); }).rfind("--broad-lobe-refresh-deg:", 0), 0u);
 }
 
 TEST(KioskConfig, LabelSettingsNameTheirFlag) {

@@ -53,3 +53,18 @@ TEST(Turntable, CirclesThePivotKeepingTheProductInView) {
   EXPECT_NEAR(half.position.y, 2.0 * pivot.y - c.position.y, 1e-12);
   EXPECT_NEAR(half.target.y, 2.0 * pivot.y - c.target.y, 1e-12);
 }
+
+TEST(Turntable, RefreshSharesBoundTheTurnBetweenRecomputations) {
+  // Every vertex is recomputed within refresh_deg of turn: shares · turn ≤ refresh_deg, and the
+  // next share count up would exceed it.
+  for (double turn : {0.05, 0.4, 1.0, 1.5, 2.9}) {
+    const int shares = refresh_shares(3.0, turn);
+    EXPECT_LE(shares * turn, 3.0 + 1e-12) << turn;
+    EXPECT_GT((shares + 1) * turn, 3.0) << turn;
+  }
+  EXPECT_EQ(refresh_shares(3.0, -0.4), refresh_shares(3.0, 0.4));  // either way round
+  EXPECT_EQ(refresh_shares(3.0, 5.0), 1);                            // faster than the bound: every frame
+  EXPECT_EQ(refresh_shares(0.0, 0.4), 1);                            // off
+  EXPECT_EQ(refresh_shares(3.0, 0.0), kMaxRefreshShares);            // a still camera keeps its values
+  EXPECT_EQ(refresh_shares(3.0, 0.01), kMaxRefreshShares);
+}
