@@ -86,6 +86,13 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--label-idle", a->label_idle_s,
                   "Seconds the label stays after start or a knob change before it fades out over a second (0: never fades)")
       ->capture_default_str();
+  sub->add_option("--idle-return", a->idle_return_s,
+                  "Seconds without a knob change after which the look eases back to the bundle's fabric over 3 s "
+                  "(the knob state file too); 0: it stays as the knobs left it")
+      ->capture_default_str();
+  sub->add_option("--screen-off", a->screen_off,
+                  "Daily period in local time, HH:MM-HH:MM (e.g. 22:00-07:30), during which the screen is powered "
+                  "down (DPMS) and nothing is drawn; empty: never");
   sub->add_option("--label-font", a->label_font, "The label's font file (TrueType or OpenType)")->capture_default_str();
   // Under systemd the RuntimeDirectory holds it (weft status reads it there); elsewhere none unless asked for.
   if (std::getenv("RUNTIME_DIRECTORY")) a->status_file = default_status_path().string();

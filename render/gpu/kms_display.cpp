@@ -201,4 +201,19 @@ void KmsDisplay::present() {
   s_->front = next;
 }
 
+void KmsDisplay::set_power(bool on) {
+  drmModeObjectProperties* props = drmModeObjectGetProperties(s_->fd, s_->connector_id, DRM_MODE_OBJECT_CONNECTOR);
+  if (!props) throw GpuError("DPMS: cannot read the properties of " + s_->connector_name);
+  uint32_t dpms = 0;
+  for (uint32_t i = 0; i < props->count_props && !dpms; ++i)
+    if (drmModePropertyRes* p = drmModeGetProperty(s_->fd, props->props[i])) {
+      if (std::strcmp(p->name, "DPMS") == 0) dpms = p->prop_id;
+      drmModeFreeProperty(p);
+    }
+  drmModeFreeObjectProperties(props);
+  if (!dpms) throw GpuError("DPMS: " + s_->connector_name + " has no DPMS property");
+  if (drmModeConnectorSetProperty(s_->fd, s_->connector_id, dpms, on ? DRM_MODE_DPMS_ON : DRM_MODE_DPMS_OFF) != 0)
+    throw GpuError(std::string("DPMS ") + (on ? "on" : "off") + " on " + s_->connector_name + ": " + std::strerror(errno));
+}
+
 }  // namespace weft::gpu

@@ -25,6 +25,9 @@ public:
   EglContext& context();
   // Swaps the EGL surface and page-flips to it, waiting for the flip (vsync).
   void present();
+  // Powers the screen down or up through the connector's DPMS property. Throws GpuError where the
+  // connector has none or the driver refuses.
+  void set_power(bool on);
 
 private:
   struct State;

@@ -34,12 +34,16 @@ constexpr auto kTickPeriod = std::chrono::microseconds(16667);
 // Time constant of the exposure easing in after a lighting change (a probe update, the
 // environment knob): quick enough to follow the room, slow enough not to flicker.
 constexpr double kExposureAdaptSeconds = 0.7;
+// The look's way home after --idle-return: slow enough to read as deliberate, not as a glitch.
+constexpr double kIdleEaseSeconds = 3.0;
 
 }  // namespace
 
 Kiosk::Kiosk(KioskConfig config)
     : config_(std::move(config)),
-      exposure_(config_.exposure_bias + std::log2(config_.exposure), kExposureAdaptSeconds) {}
+      exposure_(config_.exposure_bias + std::log2(config_.exposure), kExposureAdaptSeconds),
+      idle_(config_.idle_return_s, kIdleEaseSeconds),
+      screen_schedule_(ScreenSchedule::parse(config_.screen_off)) {}
 
 Kiosk::~Kiosk() = default;
 
@@ -167,6 +171,7 @@ void Kiosk::show_first_frame() {
   renderer_->set_lighting(scene_->sgs);
   meter_as_baked();
   poll_knobs();
+  idle_.touched(Clock::now());  // a look restored at boot goes home after the idle time too
   if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
   zoom_shown_ = zoom_drawn_ = zoom_target_;  // a kiosk started zoomed in (--zoom) shows it at once
   draw_frame(0);
@@ -199,12 +204,17 @@ void Kiosk::tick() {
   const double turn = config_.turntable * std::chrono::duration<double>(tick_start - loop_start_).count();
   const int64_t report_ns = knobs_->last_report_ns();
   const bool knobs_changed = poll_knobs();
+  if (knobs_changed) idle_.touched(tick_start);
+  const bool look_returning = return_when_idle(tick_start);
   poll_light();
   const bool light_changed = take_prepared_lighting();
   const bool scene_changed = poll_bundle();
   const bool view_changed = move_view(tick_start, turn);
-  const bool redraw = knobs_changed || light_changed || scene_changed || view_changed || exposure_.adapting();
-  const bool label_changed = !redraw && label_ && label_->changed(tick_start);
+  const bool was_asleep = screen_off_;
+  const bool asleep = screen_asleep(tick_start);
+  const bool redraw = !asleep && (knobs_changed || look_returning || light_changed || scene_changed || view_changed ||
+                                  exposure_.adapting() || was_asleep);
+  const bool label_changed = !asleep && !redraw && label_ && label_->changed(tick_start);
   if (label_changed) {
     present(tick_start);
     ++drawn_;

@@ -57,7 +57,9 @@
 #include "kiosk/kiosk_knobs.h"
 #include "kiosk/kiosk_label.h"
 #include "kiosk/kiosk_lighting.h"
+#include "kiosk/idle_return.h"
 #include "kiosk/kiosk_status_file.h"
+#include "kiosk/screen_schedule.h"
 #include "kiosk/service_notifier.h"
 #include "panel/appearance_state.h"
 
@@ -118,6 +120,10 @@ private:
   // The status file (kiosk/kiosk_status_file.h): `state` now, or (update) when due or news.
   KioskStatus status(const char* state) const;
   void write_status(const char* state);
+  // Nobody at the kiosk (kiosk_idle.cpp): the knobs eased home after --idle-return; the screen
+  // powered down during --screen-off.
+  bool return_when_idle(Clock::time_point now);  // true when the look shown changed
+  bool screen_asleep(Clock::time_point now);      // true while the schedule has the screen off
 
   KioskConfig config_;
   ServiceNotifier notifier_;
@@ -174,6 +180,11 @@ private:
   Clock::time_point zoom_step_;
   long ticks_ = 0, drawn_ = 0, knob_changes_ = 0;
   long rss_start_kib_ = 0;
+  // Nobody there.
+  IdleReturn idle_;
+  ScreenSchedule screen_schedule_;
+  bool screen_off_ = false, screen_checked_ = false;
+  Clock::time_point screen_checked_at_;
   RecentSamples frame_ms_, since_stats_ms_, latency_ms_;
 };
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "kiosk/kiosk_config_error.h"
+#include "kiosk/screen_schedule.h"
 #include "label/label_overlay.h"
 #include "methods/registry.h"
 
@@ -23,6 +24,13 @@ void check_kiosk_config(const KioskConfig& c) {
   if (!(c.zoom >= 0.0 && c.zoom <= 1.0)) throw KioskConfigError("--zoom: the way to the close-up, in [0, 1]");
   if (c.vertex_refresh < 1 || c.vertex_refresh > 64)
     throw KioskConfigError("--vertex-refresh: frames over which every vertex is recomputed once, in [1, 64]");
+  if (!(c.idle_return_s >= 0.0 && c.idle_return_s <= 7.0 * 86400.0))
+    throw KioskConfigError("--idle-return: seconds without a knob change before the look eases back, in [0, 604800] (0: never)");
+  try {
+    ScreenSchedule::parse(c.screen_off);
+  } catch (const std::invalid_argument& e) {
+    throw KioskConfigError(std::string("--screen-off: ") + e.what());
+  }
   if (!(c.broad_lobe_refresh_deg >= 0.0 && c.broad_lobe_refresh_deg <= 90.0))
     throw KioskConfigError("--broad-lobe-refresh-deg: degrees of turn over which the broad lobes' quadrature is recomputed once, in [0, 90]");
   if (c.profile != "off" && c.profile != "auto" && c.profile != "gpu" && c.profile != "cpu")

@@ -49,6 +49,11 @@ struct KioskConfig {
   std::string label = "off";              // on or off
   std::string label_position = "bottom-left";  // bottom-left, bottom-right, top-left or top-right
   int label_size = 32;                    // the name's size in pixels (the em); also the margin
+  // After this many seconds without a knob change the look eases back to the bundle's start
+  // (kiosk/idle_return.h); 0: it stays as the knobs left it.
+  double idle_return_s = 0;
+  // Daily screen-off period in local time, "HH:MM-HH:MM" (kiosk/screen_schedule.h); "": never.
+  std::string screen_off;
   double label_idle_s = 8;                // shown this long after start or a knob change, then fades; 0: never fades
   std::string label_font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // label::kDefaultFontFile
 };

@@ -50,6 +50,19 @@ void KioskDisplay::present(const gpu::OffscreenTarget& target, double exposure, 
   }
 }
 
+void KioskDisplay::set_power(bool on) {
+  if (!kms_) {
+    kiosk_log_info(std::string("screen ") + (on ? "on" : "off") + " (headless: nothing to power)");
+    return;
+  }
+  try {
+    kms_->set_power(on);
+    kiosk_log_info(std::string("screen ") + (on ? "on" : "off") + " (DPMS, " + kms_->connector() + ")");
+  } catch (const std::exception& e) {
+    kiosk_log_warning(e.what());
+  }
+}
+
 void KioskDisplay::screenshot(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay,
                               const std::filesystem::path& file) {
   if (!tonemap_) tonemap_ = std::make_unique<gpu::ToneMapper>();

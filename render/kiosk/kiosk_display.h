@@ -43,6 +43,10 @@ public:
   // The frame drawn into `target`, shown at `exposure` with `overlay` over it (KMS), or finished
   // (headless: the overlay waits for the screenshot).
   void present(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay = {});
+  // Powers the screen down (the kiosk then draws nothing) or up; logs what it did. A display that
+  // cannot (no DPMS, headless) is logged once and keeps showing.
+  void set_power(bool on);
+
   // What the screen shows, as a PNG: `target` through the same tone mapper with `overlay` drawn
   // over it, into an 8-bit frame read back (on KMS and headless alike).
   void screenshot(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay,

@@ -103,9 +103,20 @@ void KioskKnobs::repoll() { version_ = ~0ull; }
 
 void KioskKnobs::reset(const SceneBundle& sb, const std::string& why) {
   std::lock_guard lock(controller_m_);
+  restart(sb);
+  kiosk_log_warning("knob state reset to preset '" + preset_looks(presets_).at(start_preset_).name + "' (" + why + ")");
+}
+
+void KioskKnobs::go_home(const SceneBundle& sb, double idle_seconds) {
+  std::lock_guard lock(controller_m_);
+  restart(sb);
+  kiosk_log_info("knobs idle for " + std::to_string(long(idle_seconds)) + " s: easing back to preset '" +
+                 preset_looks(presets_).at(start_preset_).name + "'");
+}
+
+void KioskKnobs::restart(const SceneBundle& sb) {
   controller_.reset();  // saves what the old presets' knobs had pending
   make_controller(sb);
-  kiosk_log_warning("knob state reset to preset '" + preset_looks(presets_).at(start_preset_).name + "' (" + why + ")");
   if (!state_file_.empty()) {
     input::KnobPositions start;
     start.preset = boot_preset_;
@@ -114,6 +125,7 @@ void KioskKnobs::reset(const SceneBundle& sb, const std::string& why) {
       kiosk_log_warning("could not save the reset knob state (" + error + ")");
   }
   controller_->restore();
+  version_ = ~0ull;  // the new controller counts its own versions: the next poll reports its state
 }
 
 }  // namespace weft

@@ -47,9 +47,12 @@ public:
 
   // A new bundle's presets, the positions reset to its preset (saved) because of `why` (logged).
   void reset(const SceneBundle& sb, const std::string& why);
+  // The knobs back at sb's start (saved), nobody having touched them for `idle_seconds` (logged).
+  void go_home(const SceneBundle& sb, double idle_seconds);
 
 private:
   void make_controller(const SceneBundle& sb);
+  void restart(const SceneBundle& sb);  // a new controller at sb's start positions, saved
 
   std::filesystem::path state_file_;
   input::MappingConfig mapping_;  // the panel config's choices (a dial given to the zoom)

@@ -50,6 +50,7 @@ KioskStatus Kiosk::status(const char* state) const {
   if (scene_) s.scene = scene_->scene.name;
   if (method_) s.method = method_->name;
   s.display = display_ ? display_->name() : "none";
+  if (screen_off_) s.display += ", off by the schedule " + screen_schedule_.text();
   s.ticks = ticks_;
   s.drawn = drawn_;
   s.last_frame_ms = frame_ms_.last();

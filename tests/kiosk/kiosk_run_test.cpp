@@ -222,6 +222,18 @@ TEST_F(KioskRun, KnobStateIsRestoredFromTheStateDir) {
   // Next boot without the panel: the turned state comes back from the state dir.
   ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "restored.png", log), 0) << log;
   EXPECT_EQ(read_all(dir_ / "restored.png"), read_all(dir_ / "turned.png")) << log;
+  // With --idle-return 1 nobody touches the knobs: after a second the look eases home over 3 s,
+  // and the picture and the state file are the untouched ones again.
+  const Spawned s = spawn({"run", "--bundle", (dir_ / "good.weft").string(), "--state-dir", state.string(), "--display",
+                           "headless", "--frames", "420", "--turntable", "0", "--panel", "none", "--width", "96", "--height",
+                           "72", "--screenshot", (dir_ / "home.png").string(), "--idle-return", "1"},
+                          {}, dir_ / "idle.log");
+  ASSERT_EQ(wait_exit(s), 0) << read_all(dir_ / "idle.log");
+  log = read_all(dir_ / "idle.log");
+  EXPECT_EQ(lines_with(log, "easing back to preset").size(), 1u) << log;
+  EXPECT_TRUE(read_all(dir_ / "home.png") == plain) << "the picture after the way home is not the untouched one: " << log;
+  ASSERT_EQ(run(dir_ / "good.weft", state, dir_ / "after_home.png", log), 0) << log;
+  EXPECT_TRUE(read_all(dir_ / "after_home.png") == plain) << "the state file keeps the look at home: " << log;
 }
 
 TEST_F(KioskRun, TheColourwayButtonDressesTheClothInTheNextColourwayAndTheStateDirRemembersIt) {
