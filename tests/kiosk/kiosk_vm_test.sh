@@ -86,30 +86,12 @@ done
 say "kernel $kver, $(wc -l <"$ird/modules/order") modules for the initramfs"
 
 # 4. The kiosk's Debian package alone, `weft` (not weft-tools, not weft-probe-camera): the files
-#    of `./setup.sh package`'s weft_*.deb (the same install component, run with the /usr prefix
-#    into a staging folder; BUILD_DIR is not reconfigured) with its maintainer scripts and
-#    conffiles, built by dpkg-deb. (cpack itself first builds every target of the tree, tests
-#    included; this needs only the installed programs built.) The guest unpacks the .deb over
-#    its root (kiosk_vm/guest_init.sh).
+#    of `./setup.sh package`'s weft_*.deb, made by tests/debian/kiosk_deb.sh from the same
+#    install component (BUILD_DIR is not reconfigured). The guest unpacks the .deb over its
+#    root (kiosk_vm/guest_init.sh).
 pkg="$work/package"
-rm -rf "$pkg" && mkdir -p "$pkg/root/DEBIAN"
-DESTDIR="$pkg/root" cmake --install "$build" --prefix /usr --strip --component weft >"$work/install.log" 2>&1 ||
-  fail "cmake --install $build failed (cmake --build $build first): $(tail -3 "$work/install.log")"
-cpack_value() { sed -n "s/^set($1 \"\(.*\)\")$/\1/p" "$build/CPackConfig.cmake"; }
-version="$(cpack_value CPACK_PACKAGE_VERSION)-$(cpack_value CPACK_DEBIAN_PACKAGE_RELEASE)"
-cat >"$pkg/root/DEBIAN/control" <<CONTROL
-Package: weft
-Version: $version
-Architecture: $(dpkg --print-architecture)
-Maintainer: $(cpack_value CPACK_PACKAGE_CONTACT)
-Depends: systemd, udev
-Description: cloth rendering showroom kiosk
-CONTROL
-install -m 0755 "$repo/../debian/debian/postinst" "$repo/../debian/debian/prerm" "$repo/../debian/debian/postrm" "$pkg/root/DEBIAN/"
-install -m 0644 "$build/debian/debian/conffiles" "$pkg/root/DEBIAN/"
-deb="$pkg/weft_${version}_$(dpkg --print-architecture).deb"
-dpkg-deb --root-owner-group -b "$pkg/root" "$deb" >"$work/dpkg-deb.log" 2>&1 || fail "dpkg-deb -b failed: $(tail -3 "$work/dpkg-deb.log")"
-rm -rf "$pkg/root"
+rm -rf "$pkg"
+deb=$("$repo/debian/kiosk_deb.sh" "$build" "$pkg") || fail "cannot make the kiosk package"
 dpkg-deb -c "$deb" | awk '{print $NF}' >"$work/package.files"
 for f in ./usr/bin/weft ./usr/libexec/weft/weft-panel-sim \
          ./usr/share/weft/fabrics/linen_plain.json ./usr/lib/systemd/system/weft.service; do
