@@ -72,7 +72,7 @@ run_default() {
 package() {
   # The install rules of a /usr build, packaged by CPack into weft, weft-tools and
   # weft-probe-camera (debian/CMakeLists.txt says why not dpkg-buildpackage, and what each holds).
-  # Only the prefix differs from `build`: nothing is recompiled.
+  # Only the prefix differs from `build`: only what holds an install path is rebuilt.
   cmake -S . -B "$BUILD_DIR" -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
   cmake --build "$BUILD_DIR" -j"$(nproc)"
   (cd "$BUILD_DIR" && cpack -G DEB >/dev/null)
