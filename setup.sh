@@ -3,7 +3,7 @@
 # missing; quiet when all is there), builds, and then runs or tests.
 #   ./setup.sh run    install, build, render the default showroom scene
 #   ./setup.sh test   install, build, run the test suite (what .ci/run does)
-#   ./setup.sh package  install, build, make the Debian package (prints its path)
+#   ./setup.sh package  install, build, make the Debian packages, check them with lintian
 #   ./setup.sh deps | build
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -16,7 +16,8 @@ PACKAGES=(
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libharfbuzz-dev libfreetype-dev fonts-dejavu-core  # the kiosk's label (render/label)
   libgtest-dev libgmock-dev
-  help2man dpkg-dev file  # weft(1) from --help; the package's Depends (dpkg-shlibdeps, cpack)
+  help2man dpkg-dev file  # weft(1) from --help; the packages' Depends (dpkg-shlibdeps, cpack)
+  lintian  # checks the packages (./setup.sh package)
   assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
   qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
@@ -69,14 +70,20 @@ run_default() {
 }
 
 package() {
-  # The install rules of a /usr build, packaged by CPack (debian/CMakeLists.txt says why not
-  # dpkg-buildpackage). Only the prefix differs from `build`: nothing is recompiled.
+  # The install rules of a /usr build, packaged by CPack into weft, weft-tools and
+  # weft-probe-camera (debian/CMakeLists.txt says why not dpkg-buildpackage, and what each holds).
+  # Only the prefix differs from `build`: only what holds an install path is rebuilt.
   cmake -S . -B "$BUILD_DIR" -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
   cmake --build "$BUILD_DIR" -j"$(nproc)"
   (cd "$BUILD_DIR" && cpack -G DEB >/dev/null)
-  local deb
-  deb=$(ls -t "$BUILD_DIR"/weft_*.deb | head -n 1)
-  echo "setup: wrote $deb"
+  local version arch debs=()
+  version=$(sed -n '1s/^weft (\([^)]*\)).*/\1/p' debian/changelog)
+  arch=$(dpkg --print-architecture)
+  for p in weft weft-tools weft-probe-camera; do debs+=("$BUILD_DIR/${p}_${version}_${arch}.deb"); done
+  # Debian's checks on the packages: an error fails the command, warnings are shown
+  # (debian/lintian-overrides holds those that stand, each with its reason).
+  lintian --fail-on error --info "${debs[@]}"
+  printf 'setup: wrote %s\n' "${debs[@]}"
 }
 
 test_all() {

@@ -10,22 +10,18 @@
 // timeout. The exposure the frame really had comes from the request's metadata: sensors apply
 // new controls a few frames late, so frames whose metadata differs from the request by more
 // than 5 % are retaken (a few times) and the reported values are what the merge uses.
-#include <chrono>
+//
+// Built only into the plugin libweft-probe-libcamera.so (package weft-probe-camera), which the
+// kiosk loads when a camera probe is configured (camera_probe_plugin.h): the kiosk's own binary
+// never links libcamera.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "camera/libcamera_options.h"
 #include "camera/light_probe_source.h"
 
 namespace weft {
-
-struct LibcameraOptions {
-  std::string camera_id;  // empty: the first camera libcamera lists
-  int width = 640;
-  int height = 480;
-  std::chrono::milliseconds timeout{2000};
-  int settle_retries = 6;  // frames to wait for the requested exposure to take effect
-};
 
 class LibcameraProbeSource : public LightProbeSource {
 public:

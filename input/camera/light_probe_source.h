@@ -1,8 +1,8 @@
 #pragma once
 // The one interface every light-probe camera backend implements: open the camera,
 // take one frame at a manual exposure, close. Backends: the real camera through libcamera
-// (libcamera_probe_source.h) and a mock that photographs a known environment map
-// (mock_probe_source.h). Nothing here blocks the renderer: the probe pipeline calls a source
+// (libcamera_probe_source.h, in a plugin: camera_probe_plugin.h) and a mock that photographs a
+// known environment map (mock_probe_source.h). Nothing here blocks the renderer: the probe pipeline calls a source
 // only from its own worker thread.
 #include <chrono>
 #include <cstdint>

@@ -58,7 +58,7 @@ int exec_offline_helper(int argc, char** argv) {
   }
   log_line("weft", LogPriority::error,
            std::string(argv[1]) + " is an offline command and its helper " + kHelperName +
-               " is not installed (looked for " + looked + ")");
+               " is not installed (looked for " + looked + "); install the weft-tools package");
   return 1;
 }
 

@@ -1,6 +1,7 @@
 // `weft probe`: run the camera light probe for N updates and print the SGs, failures and
 // per-update timings. --mock MAP.exr photographs a mirror ball in that map (the truth is known,
-// so the irradiance error is printed too); without it, the real camera through libcamera.
+// so the irradiance error is printed too); without it, the real camera through libcamera (the
+// plugin of package weft-probe-camera).
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -9,7 +10,7 @@
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
-#include "camera/libcamera_probe_source.h"
+#include "camera/camera_probe_plugin.h"
 #include "camera/light_probe_pipeline.h"
 #include "camera/mock_probe_source.h"
 #include "lighting/fit_error.h"
@@ -68,7 +69,12 @@ CommandAction add_probe_command(CLI::App& app) {
       lc.camera_id = o->camera;
       lc.width = width;
       lc.height = height;
-      source = std::make_unique<LibcameraProbeSource>(lc);
+      try {
+        source = CameraProbePlugin::installed().open(lc);
+      } catch (const CameraPluginError& e) {
+        log_line("weft probe", LogPriority::error, e.what());
+        return 1;
+      }
     }
     int failures = 0;
     LightProbeUpdater updater(*source, config, {}, log_probe_line, [] { return Clock::now(); });

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "bundle/bundle_fallback.h"
+#include "camera/camera_probe_plugin.h"
 #include "gl/gl_error.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
@@ -157,9 +158,15 @@ void Kiosk::start_renderer() {
 void Kiosk::start_probe() {
   room_light_ = scene_->sgs;
   if (config_.probe != "none") {
-    probe_ = std::make_unique<KioskLightProbe>(config_.probe, config_.probe_switch_s, scene_->sgs,
-                                               [](LogPriority p, const std::string& s) { log_line("weft run", p, "light probe: " + s); });
-    kiosk_log_info("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
+    try {
+      probe_ = std::make_unique<KioskLightProbe>(config_.probe, config_.probe_switch_s, scene_->sgs,
+                                                 [](LogPriority p, const std::string& s) { log_line("weft run", p, "light probe: " + s); });
+      kiosk_log_info("light probe " + config_.probe + " started; the bundle's SGs stay until its first fit");
+    } catch (const CameraPluginError& e) {
+      // The showroom still shows, under the bundle's light, as with an unplugged camera.
+      kiosk_log_error("light probe " + config_.probe + " unavailable: " + std::string(e.what()) +
+                      "; showing the bundle's stored lighting");
+    }
   }
   lighting_ = std::make_unique<KioskLighting>();
 }

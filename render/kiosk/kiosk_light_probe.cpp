@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "kiosk/kiosk_config_error.h"
-#include "camera/libcamera_probe_source.h"
+#include "camera/camera_probe_plugin.h"
 #include "camera/mock_probe_source.h"
 
 namespace weft {
@@ -35,7 +35,7 @@ KioskLightProbe::KioskLightProbe(const std::string& spec, double switch_s, SgLig
     LibcameraOptions lc;
     if (spec.size() > 7) lc.camera_id = spec.substr(7);
     config.ball = MirrorBall{lc.width / 2.0, lc.height / 2.0, 0.95 * lc.height / 2.0};
-    source = std::make_unique<LibcameraProbeSource>(lc);
+    source = CameraProbePlugin::installed().open(lc);  // CameraPluginError: the caller runs without a probe
   } else {
     throw KioskConfigError("--probe: expected none, camera[:ID] or mock:MAP.exr[,MAP.exr...], got '" + spec + "'");
   }

@@ -2,7 +2,8 @@
 // The kiosk's optional light probe (`weft run --probe ...`): the room's light, fitted to SGs on
 // the probe's own thread and picked up by the frame loop without waiting (docs/design.md §5).
 //   none               the bundle's stored SGs only
-//   camera[:ID]        libcamera (first camera, or the one with this id); absent: stored SGs stay
+//   camera[:ID]        libcamera (first camera, or the one with this id), through the plugin of
+//                      package weft-probe-camera; camera absent: stored SGs stay
 //   mock:A.exr[,B.exr] a simulated mirror-ball camera in map A; with several maps it switches to
 //                      the next every `switch_s` seconds (a lamp going on and off), for soak tests
 #include <atomic>
@@ -21,7 +22,8 @@ class MockProbeSource;
 
 class KioskLightProbe {
 public:
-  // Throws KioskConfigError for a malformed spec or an unreadable mock map.
+  // Throws KioskConfigError for a malformed spec or an unreadable mock map, CameraPluginError
+  // for a camera probe whose plugin (package weft-probe-camera) is not installed or not loadable.
   KioskLightProbe(const std::string& spec, double switch_s, SgLighting stored, LightProbeUpdater::Log log);
   ~KioskLightProbe();
   KioskLightProbe(const KioskLightProbe&) = delete;

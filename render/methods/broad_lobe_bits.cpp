@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "methods/parallel_for.h"
+
 namespace weft {
 
 std::vector<int> broad_lobe_slots(std::span<const SphericalGaussian> sgs) {
@@ -43,9 +45,7 @@ BroadLobeBits BroadLobeBits::compute(const VisibilityMask& mask, const TriangleM
     cells.emplace_back(slots[k], std::move(dirs));
   }
   const int n = mask.resolution;
-#pragma omp parallel for schedule(static)
-  for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
-    const size_t v = size_t(vl);
+  parallel_for(out.vertices, [&](size_t v) {
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     std::uint32_t* words = &out.words[v * kBroadLobeWordsPerVertex];
     for (const auto& [slot, dirs] : cells)
@@ -56,7 +56,7 @@ BroadLobeBits BroadLobeBits::compute(const VisibilityMask& mask, const TriangleM
         if (!mask.open(v, cell % n, cell / n))
           words[slot * kBroadLobeWordsPerSg + int(c) / 32] &= ~(std::uint32_t(1) << (c % 32));
       }
-  }
+  });
   return out;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "methods/parallel_for.h"
+
 namespace weft {
 
 namespace {
@@ -35,9 +37,7 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
   std::vector<float> by_cell(size_t(cells) * o.terms);
   for (int t = 0; t < o.terms; ++t)
     for (int k = 0; k < cells; ++k) by_cell[size_t(k) * o.terms + t] = o.basis[size_t(t) * cells + k];
-#pragma omp parallel for schedule(static)
-  for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
-    const size_t v = size_t(vl);
+  parallel_for(out.vertices, [&](size_t v) {
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     const float* c = &o.coefficients[v * o.terms];
     // d at one node, from the PCA (clamped into the grid).
@@ -74,23 +74,21 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
       float* p = &out.values[(v * sgs.size() + k) * 3];
       p[0] = float(g.x), p[1] = float(g.y), p[2] = float(g.z);
     }
-  }
+  });
   return out;
 }
 
 SgVisibility SgVisibility::from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs) {
   SgVisibility out = sized_for("visibility mask", mask.vertex_count(), mesh, sgs);
   const MaskDirections directions(mask.resolution);
-#pragma omp parallel for schedule(static)
-  for (long long vl = 0; vl < (long long)out.vertices; ++vl) {
-    const size_t v = size_t(vl);
+  parallel_for(out.vertices, [&](size_t v) {
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     for (size_t k = 0; k < sgs.size(); ++k) {
       const dvec3 a = glm::normalize(sgs[k].axis);
       out.values[(v * sgs.size() + k) * 3] =
           float(directions.sg_open_share(mask, v, dvec3(glm::dot(a, f.u), glm::dot(a, f.v), glm::dot(a, f.n)), sgs[k].sharpness));
     }
-  }
+  });
   return out;
 }
 

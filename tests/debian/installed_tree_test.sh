@@ -14,7 +14,7 @@ unset WEFT_ASSETS
 
 for f in bin/weft libexec/weft/weft-offline libexec/weft/weft-panel-sim lib/systemd/system/weft.service \
          lib/sysusers.d/weft.conf lib/tmpfiles.d/weft.conf lib/udev/rules.d/70-weft-panel.rules \
-         share/man/man1/weft.1 share/bash-completion/completions/weft share/doc/weft/README.md \
+         share/man/man1/weft.1.gz share/bash-completion/completions/weft share/doc/weft/README.md \
          share/weft/fabrics/velvet.json share/weft/scenes share/weft/envmaps/studio.exr; do
   [ -e "$root/$f" ] || fail "$prefix/$f not installed"
 done
@@ -46,7 +46,7 @@ fi
 commands=$("$root/bin/weft" --help | awk '/^Subcommands:/ { on = 1; next } on && NF { print $1 }')
 [ "$(wc -w <<<"$commands")" -ge 9 ] || fail "weft --help lists only: $commands"
 for c in $commands; do
-  grep -q "^\.SS weft $c\$" "$root/share/man/man1/weft.1" || fail "weft(1) has no section for weft $c"
+  zgrep -q "^\.SS weft $c\$" "$root/share/man/man1/weft.1.gz" || fail "weft(1) has no section for weft $c"
 done
 completions=$(PATH="$root/bin:$PATH" bash -c '
   source "$1"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End to end on a real kernel, from the Debian package: builds the .deb from BUILD_DIR's install
-# rules (CPack, prefix /usr), boots Debian 12's kernel under QEMU (TCG) with this machine's root
+# rules (the kiosk's package `weft` alone, prefix /usr), boots Debian 12's kernel under QEMU (TCG) with this machine's root
 # shared read-only over virtio-9p and the package's contents (dpkg-deb -x) laid over it, runs the
 # packaged /usr/bin/weft on bochs' /dev/dri/card0 (real DRM/KMS + GBM + EGL, Mesa kms_swrast) and
 # the packaged panel simulator as a real uhid device, turns a knob, unplugs and replugs the panel,
@@ -85,34 +85,20 @@ for m in virtio_pci 9pnet_virtio 9p overlay bochs uhid hid_generic; do
 done
 say "kernel $kver, $(wc -l <"$ird/modules/order") modules for the initramfs"
 
-# 4. The Debian package: the files of `./setup.sh package`'s .deb (the same install rules, run with
-#    the /usr prefix into a staging folder; BUILD_DIR is not reconfigured) with its maintainer
-#    scripts and conffiles, built by dpkg-deb. (cpack itself first builds every target of the tree,
-#    tests included; this needs only the installed programs built.) The guest unpacks the .deb
-#    over its root (kiosk_vm/guest_init.sh).
+# 4. The kiosk's Debian package alone, `weft` (not weft-tools, not weft-probe-camera): the files
+#    of `./setup.sh package`'s weft_*.deb, made by tests/debian/kiosk_deb.sh from the same
+#    install component (BUILD_DIR is not reconfigured). The guest unpacks the .deb over its
+#    root (kiosk_vm/guest_init.sh).
 pkg="$work/package"
-rm -rf "$pkg" && mkdir -p "$pkg/root/DEBIAN"
-DESTDIR="$pkg/root" cmake --install "$build" --prefix /usr --strip >"$work/install.log" 2>&1 ||
-  fail "cmake --install $build failed (cmake --build $build first): $(tail -3 "$work/install.log")"
-cpack_value() { sed -n "s/^set($1 \"\(.*\)\")$/\1/p" "$build/CPackConfig.cmake"; }
-cat >"$pkg/root/DEBIAN/control" <<CONTROL
-Package: weft
-Version: $(cpack_value CPACK_PACKAGE_VERSION)
-Architecture: $(dpkg --print-architecture)
-Maintainer: $(cpack_value CPACK_PACKAGE_CONTACT)
-Depends: systemd, udev
-Description: $(cpack_value CPACK_PACKAGE_DESCRIPTION_SUMMARY)
-CONTROL
-install -m 0755 "$repo/../debian/debian/postinst" "$repo/../debian/debian/prerm" "$repo/../debian/debian/postrm" "$pkg/root/DEBIAN/"
-install -m 0644 "$build/debian/debian/conffiles" "$pkg/root/DEBIAN/"
-deb="$pkg/weft_$(cpack_value CPACK_PACKAGE_VERSION)_$(dpkg --print-architecture).deb"
-dpkg-deb --root-owner-group -b "$pkg/root" "$deb" >"$work/dpkg-deb.log" 2>&1 || fail "dpkg-deb -b failed: $(tail -3 "$work/dpkg-deb.log")"
-rm -rf "$pkg/root"
+rm -rf "$pkg"
+deb=$("$repo/debian/kiosk_deb.sh" "$build" "$pkg") || fail "cannot make the kiosk package"
 dpkg-deb -c "$deb" | awk '{print $NF}' >"$work/package.files"
-for f in ./usr/bin/weft ./usr/libexec/weft/weft-offline ./usr/libexec/weft/weft-panel-sim \
+for f in ./usr/bin/weft ./usr/libexec/weft/weft-panel-sim \
          ./usr/share/weft/fabrics/linen_plain.json ./usr/lib/systemd/system/weft.service; do
   grep -qx -- "$f" "$work/package.files" || fail "the package has no ${f#.}"
 done
+! grep -E 'weft-offline|libweft-probe' "$work/package.files" || fail "the kiosk package holds the above (weft-tools', weft-probe-camera's)"
+[ ! -e /usr/libexec/weft/weft-offline ] || fail "this machine has /usr/libexec/weft/weft-offline: the guest would see it under the package"
 prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build/CMakeCache.txt")
 [ "$prefix" = /usr ] || say "note: $build is configured for $prefix, so the package's unit and weft.conf name $prefix paths; the guest has no systemd and runs /usr/bin/weft itself"
 say "package $(basename "$deb") ($(du -k "$deb" | cut -f1) KiB, $(wc -l <"$work/package.files") entries)"
@@ -213,8 +199,10 @@ say "VM powered off $(since_boot) s after qemu started"
 # 7. Verdict: the package was what ran, the kiosk's own account, then the pictures.
 status=0
 grep -q "^weft: /usr/bin/weft from the package" "$out/guest.log" || { say "FAIL: the guest did not run the package's /usr/bin/weft"; status=1; }
-grep -q '"radiance"' "$out/eval.json" 2>/dev/null ||
-  { say "FAIL: the packaged weft eval (weft-offline from /usr/libexec/weft, presets from /usr/share/weft) failed in the guest: $(tail -2 "$out/eval.log" 2>/dev/null)"; status=1; }
+grep -q "install the weft-tools package" "$out/eval.log" 2>/dev/null ||
+  { say "FAIL: weft eval on the kiosk package alone did not ask for weft-tools: $(tail -2 "$out/eval.log" 2>/dev/null)"; status=1; }
+grep -q "install the weft-probe-camera package" "$out/probe.log" 2>/dev/null ||
+  { say "FAIL: weft probe on the kiosk package alone did not ask for weft-probe-camera: $(tail -2 "$out/probe.log" 2>/dev/null)"; status=1; }
 echo "--- kiosk log (guest) ---"; grep -v 'stats: ' "$out/kiosk.log"; echo "---"
 [ "$(cat "$out/uhid_test.rc")" = 0 ] || { say "FAIL: the real-uhid unit test failed in the guest:"; cat "$out/uhid_test.log"; status=1; }
 grep -q "PASSED.*1 test" "$out/uhid_test.log" || { say "FAIL: the real-uhid unit test did not run in the guest"; status=1; }
