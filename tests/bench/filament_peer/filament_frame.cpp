@@ -288,7 +288,7 @@ FilamentFrame FilamentPeer::linear(const Camera& camera, int width, int height, 
   f.image = Image(width, height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const float* p = &rgba[(size_t(height - 1 - y) * width + x) * 4];  // Filament's row 0 is the bottom
+      const float* p = &rgba[(size_t(y) * width + x) * 4];  // a render target's rows come back top first
       f.image.at(x, y) = glm::dvec3(p[0], p[1], p[2]);
     }
   f.frames = timed_frames;

@@ -52,16 +52,19 @@ glm::dvec3 sh3_irradiance(const SgLighting& sgs, const glm::dvec3& n) {
   return e;
 }
 
-// A 2×2 square at the origin facing n, and a camera 3 away along n looking at it.
-Scene facing_square(const glm::dvec3& n) {
+// A 2×2 square facing n, and a camera 3 away along n looking at the origin; `shift` moves the
+// square in the image's plane, in units of the camera's up and right.
+Scene facing_square(const glm::dvec3& n, const glm::dvec2& shift = {0.0, 0.0}) {
   Scene s;
   SceneObject o;
   o.name = "square";
   o.material = Material::cloth;
   const glm::dvec3 t = unit_tangent(glm::dvec3(0.3, 0.5, 0.7), n), b = glm::cross(n, t);
+  const glm::dvec3 up = std::abs(n.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+  const glm::dvec3 right = glm::cross(-n, up);
   for (int k = 0; k < 4; ++k) {
     const double u = (k == 1 || k == 2) ? 1.0 : -1.0, v = k >= 2 ? 1.0 : -1.0;
-    o.mesh.positions.push_back(u * t + v * b);
+    o.mesh.positions.push_back(u * t + v * b + shift.x * right + shift.y * up);
     o.mesh.normals.push_back(n);
     o.mesh.uvs.push_back({0.5 * (u + 1), 0.5 * (v + 1)});
   }
@@ -70,7 +73,7 @@ Scene facing_square(const glm::dvec3& n) {
   s.objects.push_back(o);
   s.camera.position = 3.0 * n;
   s.camera.target = glm::dvec3(0.0);
-  s.camera.up = std::abs(n.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+  s.camera.up = up;
   return s;
 }
 
@@ -78,8 +81,8 @@ Scene facing_square(const glm::dvec3& n) {
 // square (sheen off) facing +x, −x, +y and +z in turn must show base/π times the 3-band SH
 // irradiance of the SGs (sh3_irradiance; cmgen's SH windowing off) in each channel, which pins
 // the IBL's frame (every axis and sign), its scale (exposure, intensity) and the linear readback;
-// within 1.5 % of the lit value (cmgen's sampling of a 256×128 map); then with sheen on, a lit
-// and finite frame.
+// within 1.5 % of the lit value (cmgen's sampling of a 256×128 map); a square moved up and right
+// in the top-right corner of the image only; then with sheen on, a lit and finite frame.
 int smoke(const std::filesystem::path& dir) {
   const double lambda = 2.0;
   const SgLighting sgs{{{1, 0, 0}, lambda, {1, 0, 0}}, {{0, 1, 0}, lambda, {0, 1, 0}}, {{0, 0, 1}, lambda, {0, 0, 1}}};
@@ -105,6 +108,16 @@ int smoke(const std::filesystem::path& dir) {
       std::cout << "frame time " << f.median_ms << " ms is not a time\n";
       ++failures;
     }
+  }
+  {
+    // The image's orientation: a square moved up and right shows in the top-right corner only.
+    const Scene s = facing_square({0, 0, 1}, {1.5, 1.5});
+    filament.set_scene(s, {lambert});
+    const Image im = filament.linear(s.camera, 32, 24, 0).image;
+    const bool ok = im.at(28, 2).z > 0.05 && im.at(3, 2).z == 0.0 && im.at(28, 21).z == 0.0;
+    failures += !ok;
+    std::cout << "square up and right: top right " << im.at(28, 2).z << ", top left " << im.at(3, 2).z
+              << ", bottom right " << im.at(28, 21).z << (ok ? "" : "  <-- not in the top-right corner only") << "\n";
   }
   const Scene s = facing_square({0, 0, 1});
   filament.set_scene(s, {FilamentCloth{{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 0.5}});
