@@ -138,8 +138,8 @@ const std::vector<std::string> kNotes{
     "platform, so an X server is needed: Xvfb here) and a Vulkan backend (not used: the rungs run on GL); matc, "
     "cmgen, filament-resgen in libfilament-tools; gltfio and libibl are packaged. The peer draws Weft's meshes "
     "rather than loading the glTF with gltfio, so both draw the same triangles and only shading differs.",
-    "Not in the peer: shadows and ambient occlusion (the brief's 'no shadows'; Filament's IBL has no "
-    "visibility), so occluded cloth (pillow on its floor, the teapot's shadow) is lit as if open; subsurfaceColor "
+    "Not in the peer: shadows and ambient occlusion (Filament's IBL casts no shadows; its SSAO is off), "
+    "so occluded cloth (pillow on its floor, the teapot's shadow) is lit as if open; subsurfaceColor "
     "(wrap diffuse, no counterpart in Weft's fabrics). cmgen's default SH windowing is kept (what an application "
     "ships); the smoke test turns it off to meet its closed form."};
 
