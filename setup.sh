@@ -21,6 +21,7 @@ PACKAGES=(
   assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
   qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
+  libfilament-dev libfilament-tools libx11-dev xvfb  # the peer bench: Filament on the same scenes (tests/bench/filament_peer)
 )
 BUILD_DIR=${WEFT_BUILD_DIR:-build}
 
