@@ -86,7 +86,7 @@ void KioskDisplay::open_kms() {
                            (why.empty() ? "" : "; cards that did not open: " + why));
   if (!kms_) throw gpu::GpuError("no usable display card: " + why);
   kms_->context().make_current();  // the cards tried and closed released theirs
-  kiosk_log_info("display card " + kms_->card() + " (" + connectors() + "), drawing with " + kms_->context().renderer());
+  kiosk_log_info("display card " + connectors() + "; drawing with " + kms_->context().renderer());
 }
 
 bool KioskDisplay::show(bool probe) {
@@ -162,7 +162,7 @@ std::string KioskDisplay::name() const {
 }
 
 std::string KioskDisplay::connectors() const {
-  return kms_ ? kms_->card() + " " + gpu::connector_list(kms_->connectors(false)) : "no DRM card";
+  return kms_ ? kms_->card() + ": " + gpu::connector_list(kms_->connectors(false)) : "no DRM card";
 }
 
 void KioskDisplay::present(const gpu::OffscreenTarget& target, double exposure, const Overlay& overlay) {

@@ -63,7 +63,7 @@ public:
   bool follows_screens() const { return settings_.display != "headless"; }
   std::string description() const;  // "card0 Virtual-1 1024x768@60", "card0, no screen", "headless"
   std::string name() const;          // "drm:Virtual-1", "headless" or "none"
-  std::string connectors() const;    // "HDMI-A-1 (disconnected), …" on the card; "no DRM card"
+  std::string connectors() const;    // "card0: HDMI-A-1 (disconnected), …"; "no DRM card"
 
   enum class Change {
     none,

@@ -218,7 +218,8 @@ screendump vm_replug
 touch "$out/go-replug-shot"
 display_plug 0 0 >/dev/null || fail "cannot unplug the display (SetUIInfo 0x0)"
 unplugged=$(date +%s.%N)
-guest_reached display-gone "display unplugged; the kiosk let it go $(echo "$(date +%s.%N) $unplugged" | awk '{printf "%.1f", $1 - $2}') s later,"
+guest_reached display-gone "display unplugged; the kiosk let it go"
+say "the kiosk let the display go $(echo "$(date +%s.%N) $unplugged" | awk '{printf "%.1f", $1 - $2}') s after the unplug (host clock, 0.2 s polling)"
 screendump vm_display_gone
 display_plug "$MODE_W" "$MODE_H" >/dev/null || fail "cannot plug the display back (SetUIInfo)"
 plugged=$(date +%s.%N)
