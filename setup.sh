@@ -14,13 +14,14 @@ PACKAGES=(
   libembree-dev libtbb-dev libopenexr-dev libpng-dev libtinygltf-dev
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
+  libudev-dev  # the kiosk follows displays being plugged (render/kiosk/display_watch.h)
   libharfbuzz-dev libfreetype-dev fonts-dejavu-core  # the kiosk's label (render/label)
   libgtest-dev libgmock-dev
   help2man dpkg-dev file  # weft(1) from --help; the packages' Depends (dpkg-shlibdeps, cpack)
   lintian  # checks the packages (./setup.sh package)
   assimp-testmodels  # real glTF 2.0 files for the importer tests (tests/scene)
   clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz)
-  qemu-system-x86 busybox-static kmod cpio  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
+  qemu-system-x86 busybox-static kmod cpio dbus-daemon  # the kiosk VM test (tests/kiosk/KIOSK_VM.md)
   libfilament-dev libfilament-tools libx11-dev xvfb  # the peer bench: Filament on the same scenes (tests/bench/filament_peer)
 )
 BUILD_DIR=${WEFT_BUILD_DIR:-build}

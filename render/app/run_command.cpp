@@ -35,7 +35,7 @@ CommandAction add_run_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("run", "The kiosk: show a baked bundle fullscreen (or headless) with the knob panel");
   sub->add_option("--bundle", a->bundle, "Scene bundle (weft bake)")->required();
   sub->add_option("--state-dir", a->state_dir, "Knob state and last good bundle")->capture_default_str();
-  sub->add_option("--display", a->display, "auto (KMS, else headless), kms or headless")->capture_default_str();
+  sub->add_option("--display", a->display, "auto (KMS, taking screens as they are plugged; without a display card, headless), kms (as auto, but exit when there is no screen at start) or headless")->capture_default_str();
   sub->add_option("--frames", a->frames, "Stop after this many ticks (display refreshes); 0: until SIGTERM")
       ->capture_default_str();
   sub->add_option("--turntable", a->turntable, "Camera turn, degrees per second (0: still)")->capture_default_str();
@@ -94,6 +94,19 @@ CommandAction add_run_command(CLI::App& app) {
                   "Daily period in local time, HH:MM-HH:MM (e.g. 22:00-07:30), during which the screen is powered "
                   "down (DPMS) and nothing is drawn; empty: never");
   sub->add_option("--label-font", a->label_font, "The label's font file (TrueType or OpenType)")->capture_default_str();
+  sub->add_option("--connector", a->connector,
+                  "The screen's connector, as /sys/class/drm names it (HDMI-A-1, DP-2, ...); empty: the first connected "
+                  "(weft.service: WEFT_CONNECTOR)");
+  sub->add_option("--mode", a->mode, "The screen's mode: WIDTHxHEIGHT or WIDTHxHEIGHT@HZ; empty or preferred: the monitor's own "
+                                     "(weft.service: WEFT_MODE)");
+  sub->add_option("--rotation", a->rotation,
+                  "The picture turned clockwise on the screen for one mounted turned: 0, 90, 180 or 270 degrees "
+                  "(weft.service: WEFT_ROTATION)")
+      ->capture_default_str();
+  sub->add_option("--display-wait", a->display_wait_s,
+                  "Seconds without a screen (from start, or since it was unplugged) before the kiosk reports it: a "
+                  "journal warning, the service status, `weft status`; 0: never (weft.service: WEFT_DISPLAY_WAIT)")
+      ->capture_default_str();
   // Under systemd the RuntimeDirectory holds it (weft status reads it there); elsewhere none unless asked for.
   if (std::getenv("RUNTIME_DIRECTORY")) a->status_file = default_status_path().string();
   sub->add_option("--status-file", a->status_file, "Health file for `weft status` and a fleet (JSON, rewritten every 2 s); empty: none")

@@ -96,7 +96,7 @@ EglContext EglContext::headless() {
   return ctx;
 }
 
-EglContext EglContext::on_gbm(gbm_device* device, gbm_surface* surface, unsigned format) {
+EglContext EglContext::on_gbm(gbm_device* device, unsigned format) {
   EglContext ctx;
   auto get_platform_display =
       reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
@@ -104,31 +104,46 @@ EglContext EglContext::on_gbm(gbm_device* device, gbm_surface* surface, unsigned
   ctx.display_ = get_platform_display(EGL_PLATFORM_GBM_KHR, device, nullptr);
   EGLint major, minor;
   if (ctx.display_ == EGL_NO_DISPLAY || !eglInitialize(ctx.display_, &major, &minor)) fail("EGL on GBM");
+  // Without a screen the context stays current with no surface at all.
+  if (!has_extension(eglQueryString(ctx.display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
+    throw GpuError("EGL on GBM lacks EGL_KHR_surfaceless_context (needed to keep drawing while no screen is connected)");
   const EGLint want[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
                          EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
   EGLint n = 0;
   eglChooseConfig(ctx.display_, want, nullptr, 0, &n);
   std::vector<EGLConfig> configs(n);
   if (n < 1 || !eglChooseConfig(ctx.display_, want, configs.data(), n, &n)) fail("eglChooseConfig(ES3, window)");
-  // The scan-out format must match the config's native visual exactly.
-  EGLConfig chosen = nullptr;
+  // The scan-out format must match the config's native visual exactly. The context is made with
+  // this config, so every later window surface (one per screen connected) is compatible with it.
   for (EGLConfig c : configs) {
     EGLint id = 0;
     if (eglGetConfigAttrib(ctx.display_, c, EGL_NATIVE_VISUAL_ID, &id) && static_cast<unsigned>(id) == format) {
-      chosen = c;
+      ctx.config_ = c;
       break;
     }
   }
-  if (!chosen) throw GpuError("no EGL config matches the scan-out format");
-  ctx.context_ = create_gles3_context(ctx.display_, chosen);
-  ctx.surface_ = eglCreateWindowSurface(ctx.display_, chosen, reinterpret_cast<EGLNativeWindowType>(surface), nullptr);
-  if (ctx.surface_ == EGL_NO_SURFACE) fail("eglCreateWindowSurface(GBM)");
+  if (!ctx.config_) throw GpuError("no EGL config matches the scan-out format");
+  ctx.context_ = create_gles3_context(ctx.display_, ctx.config_);
   ctx.make_current();
   return ctx;
 }
 
+void EglContext::attach_window(gbm_surface* surface) {
+  detach_window();
+  surface_ = eglCreateWindowSurface(display_, config_, reinterpret_cast<EGLNativeWindowType>(surface), nullptr);
+  if (surface_ == EGL_NO_SURFACE) fail("eglCreateWindowSurface(GBM)");
+  make_current();
+}
+
+void EglContext::detach_window() {
+  if (surface_ == EGL_NO_SURFACE) return;
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
+  eglDestroySurface(display_, surface_);
+  surface_ = EGL_NO_SURFACE;
+}
+
 EglContext::EglContext(EglContext&& o) noexcept
-    : display_(o.display_), context_(o.context_), surface_(o.surface_) {
+    : display_(o.display_), context_(o.context_), surface_(o.surface_), config_(o.config_) {
   o.display_ = EGL_NO_DISPLAY;
   o.context_ = EGL_NO_CONTEXT;
   o.surface_ = EGL_NO_SURFACE;

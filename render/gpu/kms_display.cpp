@@ -7,58 +7,69 @@
 #include <xf86drm.h>
 #include <xf86drmMode.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <algorithm>
 #include <optional>
 #include <vector>
 
 namespace weft::gpu {
 
+namespace {
+
+constexpr std::uint32_t kFormat = GBM_FORMAT_XRGB8888;
+
+}  // namespace
+
 struct KmsDisplay::State {
   int fd = -1;
   std::string card;
-  uint32_t connector_id = 0, crtc_id = 0;
+  gbm_device* gbm = nullptr;
+  std::optional<EglContext> egl;
+  bool removed = false;  // ENODEV seen
+
+  // The screen shown; connector_id 0 when none.
+  std::uint32_t connector_id = 0, crtc_id = 0;
   std::string connector_name;
   drmModeModeInfo mode{};
-  drmModeCrtc* saved_crtc = nullptr;
-  gbm_device* gbm = nullptr;
   gbm_surface* surface = nullptr;
-  std::optional<EglContext> egl;
   gbm_bo* front = nullptr;
   bool mode_set = false;
+  bool flipped = false;  // the page flip asked for has completed
+  // The CRTC as found before the first screen was shown: put back when the kiosk exits.
+  drmModeCrtc* saved_crtc = nullptr;
+  std::uint32_t saved_connector = 0;
+
+  void note(int err) {
+    if (err == ENODEV) removed = true;
+  }
+
+  // The window surface and its buffers (the CRTC, if it scans one out, must be off first).
+  void drop_surface() {
+    if (egl) egl->detach_window();
+    if (front && surface) gbm_surface_release_buffer(surface, front);
+    front = nullptr;
+    if (surface) gbm_surface_destroy(surface);
+    surface = nullptr;
+  }
 
   ~State() {
+    const bool restore = saved_crtc && connector_id == saved_connector && !removed;
+    if (restore)  // put the console (or whatever ran before) back
+      drmModeSetCrtc(fd, saved_crtc->crtc_id, saved_crtc->buffer_id, saved_crtc->x, saved_crtc->y, &saved_connector, 1,
+                     &saved_crtc->mode);
+    else if (connector_id && !removed)
+      drmModeSetCrtc(fd, crtc_id, 0, 0, 0, nullptr, 0, nullptr);
+    if (saved_crtc) drmModeFreeCrtc(saved_crtc);
+    drop_surface();
     egl.reset();
-    if (saved_crtc) {  // put the console (or whatever ran before) back
-      drmModeSetCrtc(fd, saved_crtc->crtc_id, saved_crtc->buffer_id, saved_crtc->x, saved_crtc->y, &connector_id,
-                     1, &saved_crtc->mode);
-      drmModeFreeCrtc(saved_crtc);
-    }
-    if (front && surface) gbm_surface_release_buffer(surface, front);
-    if (surface) gbm_surface_destroy(surface);
     if (gbm) gbm_device_destroy(gbm);
     if (fd >= 0) close(fd);
   }
 };
 
 namespace {
-
-const char* connector_type_name(uint32_t type) {
-  switch (type) {
-    case DRM_MODE_CONNECTOR_VGA: return "VGA";
-    case DRM_MODE_CONNECTOR_DVII: return "DVI-I";
-    case DRM_MODE_CONNECTOR_DVID: return "DVI-D";
-    case DRM_MODE_CONNECTOR_HDMIA: return "HDMI-A";
-    case DRM_MODE_CONNECTOR_DisplayPort: return "DP";
-    case DRM_MODE_CONNECTOR_eDP: return "eDP";
-    case DRM_MODE_CONNECTOR_VIRTUAL: return "Virtual";
-    case DRM_MODE_CONNECTOR_DSI: return "DSI";
-    default: return "Unknown";
-  }
-}
-
 
 uint32_t framebuffer_for(int fd, gbm_bo* bo) {
   // The framebuffer id lives with the buffer object so each bo is added once.
@@ -77,131 +88,196 @@ uint32_t framebuffer_for(int fd, gbm_bo* bo) {
   return fb;
 }
 
+DrmMode drm_mode(const drmModeModeInfo& m) {
+  return {m.hdisplay, m.vdisplay, int(m.vrefresh), (m.type & DRM_MODE_TYPE_PREFERRED) != 0};
+}
+
+// A CRTC that can drive `c`: the one its encoder drives now, else the first its encoders allow.
+uint32_t crtc_for(int fd, const drmModeRes* res, const drmModeConnector* c) {
+  uint32_t crtc = 0;
+  if (drmModeEncoder* enc = c->encoder_id ? drmModeGetEncoder(fd, c->encoder_id) : nullptr) {
+    crtc = enc->crtc_id;
+    drmModeFreeEncoder(enc);
+  }
+  for (int e = 0; e < c->count_encoders && !crtc; ++e) {
+    drmModeEncoder* enc = drmModeGetEncoder(fd, c->encoders[e]);
+    if (!enc) continue;
+    for (int k = 0; k < res->count_crtcs; ++k)
+      if (enc->possible_crtcs & (1u << k)) {
+        crtc = res->crtcs[k];
+        break;
+      }
+    drmModeFreeEncoder(enc);
+  }
+  return crtc;
+}
+
 }  // namespace
 
-KmsDisplay::KmsDisplay(const std::string& device) : s_(std::make_unique<State>()) {
-  std::vector<std::string> candidates;
-  if (!device.empty()) {
-    candidates.push_back(device);
-  } else {
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator("/dev/dri", ec))
-      if (e.path().filename().string().rfind("card", 0) == 0) candidates.push_back(e.path().string());
-    std::sort(candidates.begin(), candidates.end());
-    if (candidates.empty()) throw GpuError("no DRM device: /dev/dri has no card* (no KMS driver loaded?)");
-  }
-  std::string why;
-  for (const auto& path : candidates) {
+std::vector<std::string> KmsDisplay::cards() {
+  std::vector<std::string> paths, found;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator("/dev/dri", ec))
+    if (e.path().filename().string().rfind("card", 0) == 0) paths.push_back(e.path().string());
+  std::sort(paths.begin(), paths.end());
+  for (const auto& path : paths) {
     const int fd = open(path.c_str(), O_RDWR | O_CLOEXEC);
-    if (fd < 0) {
-      why += path + ": " + std::strerror(errno) + "; ";
-      continue;
+    if (fd < 0) continue;
+    if (drmModeRes* res = drmModeGetResources(fd)) {  // null: a render-only GPU
+      if (res->count_connectors > 0) found.push_back(path);
+      drmModeFreeResources(res);
     }
-    drmModeRes* res = drmModeGetResources(fd);
-    if (!res) {
-      why += path + ": not a KMS device; ";
-      close(fd);
-      continue;
-    }
-    for (int i = 0; i < res->count_connectors && !s_->connector_id; ++i) {
-      drmModeConnector* c = drmModeGetConnector(fd, res->connectors[i]);
-      if (!c) continue;
-      if (c->connection == DRM_MODE_CONNECTED && c->count_modes > 0) {
-        s_->mode = c->modes[0];
-        for (int m = 0; m < c->count_modes; ++m)
-          if (c->modes[m].type & DRM_MODE_TYPE_PREFERRED) {
-            s_->mode = c->modes[m];
-            break;
-          }
-        // A CRTC this connector's encoders can drive; the current one if any.
-        uint32_t crtc = 0;
-        if (drmModeEncoder* enc = c->encoder_id ? drmModeGetEncoder(fd, c->encoder_id) : nullptr) {
-          crtc = enc->crtc_id;
-          drmModeFreeEncoder(enc);
-        }
-        for (int e = 0; e < c->count_encoders && !crtc; ++e) {
-          drmModeEncoder* enc = drmModeGetEncoder(fd, c->encoders[e]);
-          if (!enc) continue;
-          for (int k = 0; k < res->count_crtcs; ++k)
-            if (enc->possible_crtcs & (1u << k)) {
-              crtc = res->crtcs[k];
-              break;
-            }
-          drmModeFreeEncoder(enc);
-        }
-        if (crtc) {
-          s_->connector_id = c->connector_id;
-          s_->crtc_id = crtc;
-          s_->connector_name = std::string(connector_type_name(c->connector_type)) + "-" +
-                               std::to_string(c->connector_type_id);
-        }
-      }
-      drmModeFreeConnector(c);
-    }
-    drmModeFreeResources(res);
-    if (s_->connector_id) {
-      s_->fd = fd;
-      s_->card = std::filesystem::path(path).filename().string();
-      break;
-    }
-    why += path + ": no connected display with a mode and a CRTC; ";
     close(fd);
   }
-  if (s_->fd < 0) throw GpuError("no usable display: " + why);
+  return found;
+}
 
+KmsDisplay::KmsDisplay(const std::string& card) : s_(std::make_unique<State>()) {
+  s_->card = std::filesystem::path(card).filename().string();
+  s_->fd = open(card.c_str(), O_RDWR | O_CLOEXEC);
+  if (s_->fd < 0) throw GpuError(card + ": " + std::strerror(errno));
   s_->gbm = gbm_create_device(s_->fd);
   if (!s_->gbm) throw GpuError("gbm_create_device failed on " + s_->card);
-  const uint32_t format = GBM_FORMAT_XRGB8888;
-  s_->surface = gbm_surface_create(s_->gbm, s_->mode.hdisplay, s_->mode.vdisplay, format,
-                                   GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
-  if (!s_->surface) throw GpuError("gbm_surface_create failed for " + description());
-  s_->egl.emplace(EglContext::on_gbm(s_->gbm, s_->surface, format));
-  s_->saved_crtc = drmModeGetCrtc(s_->fd, s_->crtc_id);
+  s_->egl.emplace(EglContext::on_gbm(s_->gbm, kFormat));
 }
 
 KmsDisplay::~KmsDisplay() = default;
 
+std::string KmsDisplay::card() const { return s_->card; }
+
+std::vector<DrmConnectorInfo> KmsDisplay::connectors(bool probe) const {
+  std::vector<DrmConnectorInfo> out;
+  drmModeRes* res = drmModeGetResources(s_->fd);
+  if (!res) {
+    s_->note(errno);
+    return out;
+  }
+  for (int i = 0; i < res->count_connectors; ++i) {
+    drmModeConnector* c = probe ? drmModeGetConnector(s_->fd, res->connectors[i])
+                                : drmModeGetConnectorCurrent(s_->fd, res->connectors[i]);
+    if (!c) {
+      s_->note(errno);
+      continue;
+    }
+    DrmConnectorInfo info;
+    info.id = c->connector_id;
+    info.name = connector_name(c->connector_type, c->connector_type_id);
+    info.connected = c->connection == DRM_MODE_CONNECTED;
+    for (int m = 0; m < c->count_modes; ++m) info.modes.push_back(drm_mode(c->modes[m]));
+    out.push_back(std::move(info));
+    drmModeFreeConnector(c);
+  }
+  drmModeFreeResources(res);
+  return out;
+}
+
+void KmsDisplay::show_on(const DrmConnectorInfo& connector, const DrmMode& mode) {
+  let_go();
+  State& s = *s_;
+  drmModeRes* res = drmModeGetResources(s.fd);
+  if (!res) {
+    s.note(errno);
+    throw GpuError(s.card + ": " + std::strerror(errno));
+  }
+  drmModeConnector* c = drmModeGetConnectorCurrent(s.fd, connector.id);
+  if (!c) {
+    drmModeFreeResources(res);
+    throw GpuError(s.card + " " + connector.name + ": gone");
+  }
+  std::optional<drmModeModeInfo> info;
+  for (int m = 0; m < c->count_modes && !info; ++m) {
+    const DrmMode d = drm_mode(c->modes[m]);
+    if (d.width == mode.width && d.height == mode.height && d.refresh_hz == mode.refresh_hz && d.preferred == mode.preferred)
+      info = c->modes[m];
+  }
+  const uint32_t crtc = crtc_for(s.fd, res, c);
+  drmModeFreeConnector(c);
+  drmModeFreeResources(res);
+  if (!info) throw GpuError(s.card + " " + connector.name + " no longer offers " + mode_text(mode));
+  if (!crtc) throw GpuError(s.card + " " + connector.name + ": no CRTC can drive it");
+  if (!s.saved_crtc) {
+    s.saved_crtc = drmModeGetCrtc(s.fd, crtc);
+    s.saved_connector = connector.id;
+  }
+  s.surface = gbm_surface_create(s.gbm, info->hdisplay, info->vdisplay, kFormat, GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
+  if (!s.surface) throw GpuError("gbm_surface_create failed for " + s.card + " " + connector.name + " " + mode_text(mode));
+  try {
+    s.egl->attach_window(s.surface);
+  } catch (...) {
+    s.drop_surface();
+    throw;
+  }
+  s.connector_id = connector.id;
+  s.crtc_id = crtc;
+  s.connector_name = connector.name;
+  s.mode = *info;
+  s.mode_set = false;
+}
+
+void KmsDisplay::let_go() {
+  State& s = *s_;
+  if (!s.connector_id) return;
+  // Off before its buffers go: a CRTC must not scan out a framebuffer being freed.
+  if (!s.removed && drmModeSetCrtc(s.fd, s.crtc_id, 0, 0, 0, nullptr, 0, nullptr) != 0) s.note(errno);
+  s.drop_surface();
+  s.connector_id = s.crtc_id = 0;
+  s.connector_name.clear();
+  s.mode = {};
+  s.mode_set = false;
+}
+
+bool KmsDisplay::showing() const { return s_->connector_id != 0; }
 int KmsDisplay::width() const { return s_->mode.hdisplay; }
 int KmsDisplay::height() const { return s_->mode.vdisplay; }
 EglContext& KmsDisplay::context() { return *s_->egl; }
-
 std::string KmsDisplay::connector() const { return s_->connector_name; }
+bool KmsDisplay::card_removed() const { return s_->removed; }
 
 std::string KmsDisplay::description() const {
-  return s_->card + " " + s_->connector_name + " " + std::to_string(width()) + "x" + std::to_string(height()) + "@" +
-         std::to_string(s_->mode.vrefresh);
+  if (!showing()) return s_->card;
+  return s_->card + " " + s_->connector_name + " " + mode_text(drm_mode(s_->mode));
 }
 
 void KmsDisplay::present() {
-  s_->egl->swap_buffers();
-  gbm_bo* next = gbm_surface_lock_front_buffer(s_->surface);
+  State& s = *s_;
+  if (!showing()) throw GpuError("no screen to present on");
+  s.egl->swap_buffers();
+  gbm_bo* next = gbm_surface_lock_front_buffer(s.surface);
   if (!next) throw GpuError("gbm_surface_lock_front_buffer failed");
-  const uint32_t fb = framebuffer_for(s_->fd, next);
-  if (!s_->mode_set) {
-    if (drmModeSetCrtc(s_->fd, s_->crtc_id, fb, 0, 0, &s_->connector_id, 1, &s_->mode) != 0)
-      throw GpuError(std::string("drmModeSetCrtc (mode ") + s_->mode.name + "): " + std::strerror(errno));
-    s_->mode_set = true;
+  // On a throw below `next` stays locked (a flip may still be queued on it): the caller lets the
+  // screen go, which turns the CRTC off before the surface and all its buffers are destroyed.
+  const uint32_t fb = framebuffer_for(s.fd, next);
+  if (!s.mode_set) {
+    if (drmModeSetCrtc(s.fd, s.crtc_id, fb, 0, 0, &s.connector_id, 1, &s.mode) != 0) {
+      s.note(errno);
+      throw GpuError(std::string("drmModeSetCrtc (mode ") + s.mode.name + "): " + std::strerror(errno));
+    }
+    s.mode_set = true;
   } else {
-    bool flipped = false;
-    if (drmModePageFlip(s_->fd, s_->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, &flipped) != 0)
+    // The flag lives with the card, not on this stack: a flip that timed out may still report later.
+    s.flipped = false;
+    if (drmModePageFlip(s.fd, s.crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, &s.flipped) != 0) {
+      s.note(errno);
       throw GpuError(std::string("drmModePageFlip: ") + std::strerror(errno));
+    }
     drmEventContext ev{};
     ev.version = 2;
     ev.page_flip_handler = [](int, unsigned, unsigned, unsigned, void* data) { *static_cast<bool*>(data) = true; };
-    while (!flipped) {
-      pollfd p{s_->fd, POLLIN, 0};
-      // A flip that never completes must not hang the kiosk forever: the watchdog sees it.
+    while (!s.flipped) {
+      pollfd p{s.fd, POLLIN, 0};
+      // A flip that never completes must not hang the kiosk: the screen is treated as gone.
       const int r = poll(&p, 1, 1000);
       if (r < 0 && errno == EINTR) continue;
       if (r <= 0) throw GpuError("page flip did not complete within 1 s");
-      drmHandleEvent(s_->fd, &ev);
+      drmHandleEvent(s.fd, &ev);
     }
   }
-  if (s_->front) gbm_surface_release_buffer(s_->surface, s_->front);
-  s_->front = next;
+  if (s.front) gbm_surface_release_buffer(s.surface, s.front);
+  s.front = next;
 }
 
 void KmsDisplay::set_power(bool on) {
+  if (!s_->connector_id) throw GpuError("DPMS: " + s_->card + " shows no screen");
   drmModeObjectProperties* props = drmModeObjectGetProperties(s_->fd, s_->connector_id, DRM_MODE_OBJECT_CONNECTOR);
   if (!props) throw GpuError("DPMS: cannot read the properties of " + s_->connector_name);
   uint32_t dpms = 0;

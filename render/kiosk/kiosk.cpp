@@ -62,9 +62,9 @@ int Kiosk::run(const std::atomic<bool>& stop) {
   arm_fault_injection();
   loop_start_ = last_stats_ = Clock::now();
   rss_start_kib_ = resident_set_kib();
-  while (!stop && (config_.frames <= 0 || ticks_ < config_.frames)) tick();
+  while (!stop && !restart_ && (config_.frames <= 0 || ticks_ < config_.frames)) tick();
   shut_down();
-  return 0;  // KmsDisplay's destructor puts the previous CRTC back
+  return restart_ ? 3 : 0;  // KmsDisplay's destructor puts the previous CRTC back
 }
 
 void Kiosk::check_config() {
@@ -123,7 +123,7 @@ void Kiosk::load_bundle() {
 
 bool Kiosk::open_display() {
   try {
-    display_ = std::make_unique<KioskDisplay>(config_.display, config_.size[0], config_.size[1]);
+    display_ = std::make_unique<KioskDisplay>(display_settings());
   } catch (const NoDisplayError& e) {
     kiosk_log_error(std::string("no display: ") + e.what());
     notifier_.status(std::string("no display: ") + e.what());
@@ -132,6 +132,8 @@ bool Kiosk::open_display() {
   }
   width_ = display_->width();
   height_ = display_->height();
+  const auto since_boot = std::chrono::duration_cast<std::chrono::seconds>(Clock::now() - boot_).count();
+  screen_wait_.emplace(config_.display_wait_s, boot_, std::time(nullptr) - since_boot);
   return true;
 }
 
@@ -208,6 +210,7 @@ void Kiosk::tick() {
   ++ticks_;
   hang_if_injected();
   const auto tick_start = Clock::now();
+  follow_display(tick_start);
   const double turn = config_.turntable * std::chrono::duration<double>(tick_start - loop_start_).count();
   const int64_t report_ns = knobs_->last_report_ns();
   const bool knobs_changed = poll_knobs();

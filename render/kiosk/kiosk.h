@@ -9,14 +9,14 @@
 //   check_config      flag values, the state directory
 //   watch_bundle      inotify on the bundle's directory (content updates, kiosk/bundle_watcher.h)
 //   load_bundle       the bundle, or the last good copy (bundle/bundle_fallback.h); the method
-//   open_display      KMS, else (display auto) headless (kiosk/kiosk_display.h)
+//   open_display      KMS (with or without a screen yet), else (display auto) headless (kiosk/kiosk_display.h)
 //   start_knobs       knob controller (state restored from STATE_DIR/knobs.json), knob sources
 //                     (kiosk/kiosk_knobs.h)
 //   start_renderer    scene renderer (kiosk/kiosk_renderer.h), offscreen target
 //   start_probe       the light probe, when asked for
 //   show_first_frame  first frame, then READY=1 to systemd
 //   knobs_->listen    the knob sources' threads start
-//   tick …            poll knobs, light and bundle, redraw if the view, knobs, light or scene
+//   tick …            follow the screen (plugged, unplugged: kiosk_screen.cpp), poll knobs, light and bundle, redraw if the view, knobs, light or scene
 //                     changed (present again if only the label is fading: kiosk/kiosk_label.h),
 //                     WATCHDOG=1, a stats line every stats_every seconds
 //   shut_down         sources stopped, knob state saved, screenshot, the exit line, STOPPING=1
@@ -60,6 +60,7 @@
 #include "kiosk/idle_return.h"
 #include "kiosk/kiosk_status_file.h"
 #include "kiosk/screen_schedule.h"
+#include "kiosk/screen_wait.h"
 #include "kiosk/service_notifier.h"
 #include "panel/appearance_state.h"
 
@@ -77,7 +78,8 @@ public:
   Kiosk(const Kiosk&) = delete;
   Kiosk& operator=(const Kiosk&) = delete;
 
-  // Returns 0 after a clean stop, 1 when display kms finds no display. Throws KioskConfigError
+  // Returns 0 after a clean stop, 1 when display kms finds no display, 3 when the display card
+  // came or went (kiosk_display.h: the service starts the kiosk again on it). Throws KioskConfigError
   // for bad configuration (exit 2), bundle::BundleError when neither the bundle nor its last good
   // copy is usable.
   int run(const std::atomic<bool>& stop);
@@ -124,6 +126,14 @@ private:
   // powered down during --screen-off.
   bool return_when_idle(Clock::time_point now);  // true when the look shown changed
   bool screen_asleep(Clock::time_point now);      // true while the schedule has the screen off
+
+  // The screen coming and going (kiosk_screen.cpp): hotplug followed each tick, the frame made
+  // again at a new screen's size, the report when there has been none for --display-wait seconds.
+  DisplaySettings display_settings() const;
+  void follow_display(Clock::time_point now);
+  void resize_frame();
+  void report_screen(Clock::time_point now);
+  std::string display_status() const;  // the status file's "display": drm:NAME, none since TIME, headless
 
   KioskConfig config_;
   ServiceNotifier notifier_;
@@ -186,6 +196,10 @@ private:
   bool screen_off_ = false, screen_checked_ = false;
   Clock::time_point screen_checked_at_;
   RecentSamples frame_ms_, since_stats_ms_, latency_ms_;
+
+  // The screen: how long it has been missing; set when the display card came or went.
+  std::optional<ScreenWait> screen_wait_;
+  bool restart_ = false;
 };
 
 }  // namespace weft

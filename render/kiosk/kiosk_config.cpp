@@ -1,14 +1,36 @@
 #include "kiosk/kiosk_config.h"
 
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
+#include "gpu/display_choice.h"
 #include "kiosk/kiosk_config_error.h"
 #include "kiosk/screen_schedule.h"
 #include "label/label_overlay.h"
 #include "methods/registry.h"
 
 namespace weft {
+
+namespace {
+
+void check_screen_config(const KioskConfig& c) {
+  try {
+    gpu::parse_mode_request(c.mode);
+  } catch (const std::invalid_argument& e) {
+    throw KioskConfigError(std::string("--mode: ") + e.what());
+  }
+  if (c.rotation != 0 && c.rotation != 90 && c.rotation != 180 && c.rotation != 270)
+    throw KioskConfigError("--rotation: degrees clockwise, 0, 90, 180 or 270, got " + std::to_string(c.rotation));
+  if (!(c.display_wait_s >= 0.0 && c.display_wait_s <= 86400.0))
+    throw KioskConfigError("--display-wait: seconds in [0, 86400] (0: never report a missing screen)");
+  for (const char ch : c.connector)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_')
+      throw KioskConfigError("--connector: a connector name such as HDMI-A-1 or DP-2 (letters, digits, '-'), got '" +
+                             c.connector + "'");
+}
+
+}  // namespace
 
 void check_kiosk_config(const KioskConfig& c) {
   if (c.display != "auto" && c.display != "kms" && c.display != "headless")
@@ -41,6 +63,7 @@ void check_kiosk_config(const KioskConfig& c) {
   if (c.label_size < 8 || c.label_size > 256) throw KioskConfigError("--label-size: pixels in [8, 256], got " + std::to_string(c.label_size));
   if (!(c.label_idle_s >= 0.0 && c.label_idle_s <= 86400.0))
     throw KioskConfigError("--label-idle: seconds in [0, 86400] (0: never fades)");
+  check_screen_config(c);
   if (c.method != "auto") try {
       methods::method(c.method);
     } catch (const std::invalid_argument& e) {

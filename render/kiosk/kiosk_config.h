@@ -56,6 +56,13 @@ struct KioskConfig {
   std::string screen_off;
   double label_idle_s = 8;                // shown this long after start or a knob change, then fades; 0: never fades
   std::string label_font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // label::kDefaultFontFile
+
+  // The screen (kiosk/kiosk_display.h): which connector, in which mode, turned for a portrait
+  // screen; and how long the kiosk may go without one before it reports it (kiosk/screen_wait.h).
+  std::string connector;       // "HDMI-A-1"; empty: the first connected
+  std::string mode;            // WxH or WxH@R; empty or "preferred": the monitor's preferred mode
+  int rotation = 0;            // degrees clockwise: 0, 90, 180 or 270
+  double display_wait_s = 60;  // seconds without a screen before the report; 0: never
 };
 
 // Throws KioskConfigError (kiosk/kiosk_config_error.h) naming the flag of the first bad value.

@@ -49,7 +49,7 @@ KioskStatus Kiosk::status(const char* state) const {
   s.last_good = shown_.is_last_good;
   if (scene_) s.scene = scene_->scene.name;
   if (method_) s.method = method_->name;
-  s.display = display_ ? display_->name() : "none";
+  s.display = display_ ? display_status() : "none";
   if (screen_off_) s.display += ", off by the schedule " + screen_schedule_.text();
   s.ticks = ticks_;
   s.drawn = drawn_;

@@ -2,9 +2,9 @@
 # End to end on a real kernel, from the Debian package: builds the .deb from BUILD_DIR's install
 # rules (the kiosk's package `weft` alone, prefix /usr), boots Debian 12's kernel under QEMU (TCG) with this machine's root
 # shared read-only over virtio-9p and the package's contents (dpkg-deb -x) laid over it, runs the
-# packaged /usr/bin/weft on bochs' /dev/dri/card0 (real DRM/KMS + GBM + EGL, Mesa kms_swrast) and
-# the packaged panel simulator as a real uhid device, turns a knob, unplugs and replugs the panel,
-# and checks the screen through QEMU's `screendump`.
+# packaged /usr/bin/weft on virtio-gpu's /dev/dri/card0 (real DRM/KMS + GBM + EGL, Mesa kms_swrast)
+# and the packaged panel simulator as a real uhid device, turns a knob, unplugs and replugs the
+# panel, then the display itself, and checks the screen through QEMU's `screendump`.
 # How to run it and what it proves: tests/kiosk/KIOSK_VM.md.
 #
 # usage: kiosk_vm_test.sh WEFT BUILD_DIR UHID_PANEL_TEST OUT_DIR
@@ -46,6 +46,7 @@ command -v qemu-system-x86_64 >/dev/null || need+=(qemu-system-x86)
 dpkg-query -W -f='${Status}' busybox-static 2>/dev/null | grep -q "install ok installed" || need+=(busybox-static)
 command -v depmod >/dev/null || need+=(kmod)
 command -v cpio >/dev/null || need+=(cpio)
+command -v dbus-daemon >/dev/null || need+=(dbus-daemon)  # the display's plug (QEMU's D-Bus display)
 if [ ${#need[@]} -gt 0 ]; then
   say "installing ${need[*]}"
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo -n"
@@ -74,7 +75,7 @@ rm -rf "$ird" && mkdir -p "$ird"/{bin,proc,sys,dev,modules}
 cp /bin/busybox "$ird/bin/busybox"
 cp "$here/kiosk_vm/guest_init.sh" "$ird/init" && chmod +x "$ird/init"
 : >"$ird/modules/order"
-for m in virtio_pci 9pnet_virtio 9p overlay bochs uhid hid_generic; do
+for m in virtio_pci 9pnet_virtio 9p overlay virtio_gpu uhid hid_generic; do
   modprobe -d "$kdir" -S "$kver" --show-depends "$m" >"$work/deps.txt" 2>&1 || fail "no module $m in $kver: $(cat "$work/deps.txt")"
   while read -r _ ko _; do
     name=$(basename "$ko")
@@ -145,22 +146,30 @@ ENV
 printf 'OUT=%s\nGUEST_STEPS=%s\nDEB=%s\n' "$out" "$here/kiosk_vm/guest_steps.sh" "$deb" >"$ird/vm.env"
 (cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$work/initramfs.cpio.gz" || fail "cannot pack the initramfs"
 
-# 6. Boot. TCG (no KVM here): 2 vCPUs, 2 GiB; the bochs display (QEMU's -vga std) advertises
-#    MODE_W x MODE_H as its preferred mode through EDID; the monitor answers screendump on a socket.
+# 6. Boot. TCG (no KVM here): 2 vCPUs, 2 GiB; virtio-gpu advertises MODE_W x MODE_H as its
+#    preferred mode through EDID; the monitor answers screendump on a socket. The display's plug:
+#    QEMU's D-Bus display on a bus of the test's own, whose console's SetUIInfo turns virtio-gpu's
+#    output off (0x0: the guest's connector disconnected, as a cable pulled) and on again.
 mon="$work/monitor.sock"
 rm -f "$mon" "$work/console.log"
+dbus-daemon --session --fork --print-address=3 --print-pid=4 3>"$work/dbus.address" 4>"$work/dbus.pid" ||
+  fail "cannot start a D-Bus daemon for QEMU's display"
+bus=$(cat "$work/dbus.address")
+display_plug() {  # WIDTH HEIGHT; 0 0: unplugged
+  busctl --address="$bus" call org.qemu /org/qemu/Display1/Console_0 org.qemu.Display1.Console SetUIInfo qqiiuu 0 0 0 0 "$1" "$2"
+}
 boot_start=$(date +%s.%N)
-qemu-system-x86_64 -nodefaults -no-reboot -display none \
+DBUS_SESSION_BUS_ADDRESS=$bus qemu-system-x86_64 -nodefaults -no-reboot -display dbus,p2p=no \
   -accel tcg,thread=multi -cpu "${KIOSK_VM_CPU:-qemu64}" -smp 2 -m 2048 \
   -kernel "$vmlinuz" -initrd "$work/initramfs.cpio.gz" \
   -append "console=ttyS0 loglevel=4 panic=-1 mitigations=off rdinit=/init" \
-  -device "VGA,edid=on,xres=$MODE_W,yres=$MODE_H" \
+  -device "virtio-gpu-pci,xres=$MODE_W,yres=$MODE_H" \
   -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on,multidevs=remap \
   -virtfs "local,path=$out,mount_tag=out,security_model=none" \
   -monitor "unix:$mon,server=on,wait=off" \
   -serial "file:$work/console.log" &
 qemu_pid=$!
-trap 'kill $qemu_pid 2>/dev/null' EXIT
+trap 'kill $qemu_pid $(cat "$work/dbus.pid") 2>/dev/null' EXIT
 trap 'exit 1' TERM INT  # so a ctest timeout or ^C still takes the VM down
 since_boot() { echo "$(date +%s.%N) $boot_start" | awk '{printf "%.1f", $1 - $2}'; }
 
@@ -182,6 +191,8 @@ screendump() {  # NAME
 }
 
 guest_reached userspace
+# The console's size as the guest sees it already: from here on 0x0 is a change (an unplug).
+display_plug "$MODE_W" "$MODE_H" >/dev/null || fail "QEMU's D-Bus display does not answer SetUIInfo"
 guest_reached first-frame
 screendump vm_before
 touch "$out/go-before-shot"
@@ -191,6 +202,19 @@ touch "$out/go-after-shot"
 guest_reached replugged
 screendump vm_replug
 touch "$out/go-replug-shot"
+display_plug 0 0 >/dev/null || fail "cannot unplug the display (SetUIInfo 0x0)"
+unplugged=$(date +%s.%N)
+guest_reached display-gone "display unplugged; the kiosk let it go"
+say "the kiosk let the display go $(echo "$(date +%s.%N) $unplugged" | awk '{printf "%.1f", $1 - $2}') s after the unplug (host clock, 0.2 s polling)"
+screendump vm_display_gone
+display_plug "$MODE_W" "$MODE_H" >/dev/null || fail "cannot plug the display back (SetUIInfo)"
+plugged=$(date +%s.%N)
+touch "$out/go-display-gone-shot"
+guest_reached display-back "display plugged back; the kiosk showed its picture again"
+back_s=$(echo "$(date +%s.%N) $plugged" | awk '{printf "%.1f", $1 - $2}')
+say "display back on screen $back_s s after the replug (host clock, 0.2 s polling)"
+screendump vm_display_back
+touch "$out/go-display-back-shot"
 guest_reached done
 wait $qemu_pid
 trap - EXIT TERM INT
@@ -208,6 +232,8 @@ echo "--- kiosk log (guest) ---"; grep -v 'stats: ' "$out/kiosk.log"; echo "---"
 grep -q "PASSED.*1 test" "$out/uhid_test.log" || { say "FAIL: the real-uhid unit test did not run in the guest"; status=1; }
 [ "$(cat "$out/kiosk.rc")" = 0 ] || { say "FAIL: weft run exited with $(cat "$out/kiosk.rc")"; status=1; }
 grep -q "display card0 " "$out/kiosk.log" || { say "FAIL: the kiosk did not run on the KMS display card0"; status=1; }
+grep -q "display card0 .* disconnected" "$out/kiosk.log" || { say "FAIL: the kiosk did not see the display unplugged"; status=1; }
+[ "$(grep -c "^weft run: display card0 Virtual-1 " "$out/kiosk.log")" -ge 2 ] || { say "FAIL: the kiosk did not take the display again"; status=1; }
 [ "$(grep -c 'USB knob panel 1209:57ef connected' "$out/kiosk.log")" -ge 2 ] ||
   { say "FAIL: the kiosk did not connect to the panel twice (plug, replug)"; status=1; }
 cmp -s "$out/state/knobs.json" "$work/ref/replug/knobs.json" ||
@@ -218,6 +244,7 @@ cmp -s "$out/state/knobs.json" "$work/ref/replug/knobs.json" ||
 echo "--- timings (TCG, 2 vCPUs) ---"
 awk '{printf "guest uptime %7.2f s: %s\n", $1, $2}' "$out/marks"
 grep -E "first frame after|stopping after" "$out/kiosk.log"
-say "screenshots: $shots/vm_before.png $shots/vm_after.png $shots/vm_replug.png"
+"$python" "$frames_py" back "$shots/vm_replug.ppm" "$shots/vm_display_gone.ppm" "$shots/vm_display_back.ppm" "display replug" || status=1
+say "screenshots: $shots/vm_before.png $shots/vm_after.png $shots/vm_replug.png $shots/vm_display_gone.png $shots/vm_display_back.png"
 [ $status -eq 0 ] && say "PASS" || say "FAIL"
 exit $status

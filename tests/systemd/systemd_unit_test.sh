@@ -25,7 +25,7 @@ done
 grep -qw "dev-dri-card0.device" <<<"$(value After)" || fail "After= does not wait for the display (dev-dri-card0.device)"
 grep -qw "dev-dri-card0.device" <<<"$(value Wants)" || fail "Wants= does not pull in the display (dev-dri-card0.device)"
 [ "$(value EnvironmentFile)" = "-/etc/weft/weft.conf " ] || fail "EnvironmentFile= is '$(value EnvironmentFile)', not -/etc/weft/weft.conf"
-for var in WEFT_BUNDLE WEFT_PANEL_CONFIG WEFT_PROBE WEFT_EXPOSURE WEFT_EXPOSURE_BIAS WEFT_LABEL WEFT_LABEL_POSITION WEFT_LABEL_SIZE WEFT_LABEL_IDLE WEFT_IDLE_RETURN WEFT_SCREEN_OFF WEFT_RUN_FLAGS; do
+for var in WEFT_BUNDLE WEFT_PANEL_CONFIG WEFT_PROBE WEFT_EXPOSURE WEFT_EXPOSURE_BIAS WEFT_LABEL WEFT_LABEL_POSITION WEFT_LABEL_SIZE WEFT_LABEL_IDLE WEFT_IDLE_RETURN WEFT_SCREEN_OFF WEFT_CONNECTOR WEFT_MODE WEFT_ROTATION WEFT_DISPLAY_WAIT WEFT_RUN_FLAGS; do
   grep -q "$var" <<<"$(value ExecStart)" || fail "ExecStart= does not use $var"
   grep -q "$var=" <<<"$(value Environment)" || fail "Environment= has no default for $var"
 done

@@ -8,6 +8,9 @@
       turn. The cloth is where those two differ (the knobs only change the fabric). Checks that
       the VM's screen matches its reference before, that the cloth's colour changed on the VM
       as in the references, and that nothing outside the cloth changed.
+  frames.py back SHOWN.ppm GONE.ppm BACK.ppm LABEL
+      The display unplugged and plugged back: the screen while it was gone (SHOWN vs GONE)
+      differs from the kiosk's picture, and the picture after (BACK) equals the one before.
 
 Standard library only (Debian's python3): PPM P6 and 8-bit non-interlaced PNG (RGB/RGBA).
 """
@@ -164,6 +167,27 @@ def check(ref_a_path, ref_b_path, vm_a_path, vm_b_path, label):
     return 1 if problems else 0
 
 
+def back(shown_path, gone_path, back_path, label):
+    shown, gone, again = (load(p) for p in (shown_path, gone_path, back_path))
+    if (shown[0], shown[1]) != (again[0], again[1]):
+        print(f"{label}: FAIL: the screen came back at {again[0]}x{again[1]}, not {shown[0]}x{shown[1]}")
+        return 1
+    n = shown[0] * shown[1]
+    mad = lambda p, q: sum(abs(a - b) for a, b in zip(p, q)) / (3 * n)
+    gone_mad = mad(shown[2], gone[2]) if (gone[0], gone[1]) == (shown[0], shown[1]) else float("inf")
+    back_mad = mad(shown[2], again[2])
+    print(f"{label}: while unplugged vs before (mean |d|): {gone_mad:.2f} ({gone[0]}x{gone[1]})")
+    print(f"{label}: after the replug vs before (mean |d|): {back_mad:.2f}")
+    problems = []
+    if gone_mad < 8:
+        problems.append("the screen still showed the picture while the display was unplugged")
+    if back_mad > 2:
+        problems.append("the picture did not come back as it was")
+    for p in problems:
+        print(f"{label}: FAIL: {p}")
+    return 1 if problems else 0
+
+
 def main(argv):
     if len(argv) >= 2 and argv[1] in ("-h", "--help"):
         print(__doc__)
@@ -177,6 +201,8 @@ def main(argv):
             return 0
         if len(argv) == 7 and argv[1] == "check":
             return check(*argv[2:7])
+        if len(argv) == 6 and argv[1] == "back":
+            return back(*argv[2:6])
     except (OSError, ValueError, RuntimeError) as e:
         print(f"frames.py: {e}", file=sys.stderr)
         return 1

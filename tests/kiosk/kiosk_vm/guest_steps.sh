@@ -95,6 +95,15 @@ wait_idle "$since" "$WAIT_S"
 mark replugged
 wait_go replug-shot
 
+# The display unplugged (the host turns virtio-gpu's output off) and plugged back: the kiosk
+# lets the screen go, then takes it again and shows its picture without a restart.
+wait_log " disconnected" "$WAIT_S"
+mark display-gone
+wait_go display-gone-shot
+wait_log "after [0-9.]* s without a screen" "$WAIT_S"
+mark display-back
+wait_go display-back-shot
+
 kill -TERM "$kiosk"
 wait "$kiosk"
 echo $? >"$OUT/kiosk.rc"
