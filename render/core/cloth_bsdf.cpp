@@ -54,26 +54,35 @@ double ClothBsdf::Point::weights(const dvec3& wi, const dvec3& wo, std::span<dou
   return q;
 }
 
-dvec3 ClothBsdf::Point::integrand(const dvec3& wi, const dvec3& wo) {
-  if (glm::dot(frame_.n, wi) <= 0.0 || glm::dot(frame_.n, wo) <= 0.0) return dvec3(0.0);
+ClothBsdf::Point::Split ClothBsdf::Point::integrand_split(const dvec3& wi, const dvec3& wo) {
+  Split out;
+  if (glm::dot(frame_.n, wi) <= 0.0 || glm::dot(frame_.n, wo) <= 0.0) return out;
   const double q = prepare(wi, wo);
-  if (q <= kQFloor) return dvec3(0.0);
-  dvec3 total(0.0);
+  if (q <= kQFloor) return out;
   size_t s = 0;
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& p = bsdf_->fabric_.threads[j];
     const int n = bsdf_->sample_count(j);
-    dvec3 sum(0.0);
+    glm::dvec2 sum(0.0);
     for (int k = 0; k < n; ++k, ++s) {
       if (proj_[s] <= 0.0) continue;
       const double w = p.coverage * masking(in_[s], out_[s]) * proj_[s] / q;
       if (w <= 0.0) continue;
-      sum += scattering(p, in_[s], out_[s]) * (w * std::cos(in_[s].theta));
+      sum += scattering_split(p, in_[s], out_[s]) * (w * std::cos(in_[s].theta));
     }
-    total += sum / double(n);
+    out.surface += sum.x / double(n);
+    out.volume[j] = sum.y / double(n);
   }
-  return total;
+  return out;
 }
+
+dvec3 ClothBsdf::Point::integrand(const dvec3& wi, const dvec3& wo, const std::array<dvec3, 2>& tint) {
+  const Split s = integrand_split(wi, wo);
+  const auto& t = bsdf_->fabric_.threads;
+  return dvec3(s.surface) + s.volume[0] * t[0].albedo * tint[0] + s.volume[1] * t[1].albedo * tint[1];
+}
+
+dvec3 ClothBsdf::Point::integrand(const dvec3& wi, const dvec3& wo) { return integrand(wi, wo, {dvec3(1.0), dvec3(1.0)}); }
 
 dvec3 ClothBsdf::Point::resolved_integrand(int thread, double tilt, const dvec3& wi, const dvec3& wo) {
   if (glm::dot(frame_.n, wi) <= 0.0 || glm::dot(frame_.n, wo) <= 0.0) return dvec3(0.0);

@@ -33,6 +33,14 @@ public:
     // Σ_j ⟨f_s · W · cos θ_i⟩_j: what L_o integrates against L·V over n·ω_i > 0.
     // Zero when ω_i or ω_o is below the surface.
     dvec3 integrand(const dvec3& wi, const dvec3& wo);
+    // The same with each thread's albedo multiplied by tint[j] (a texture's texel at the point).
+    dvec3 integrand(const dvec3& wi, const dvec3& wo, const std::array<dvec3, 2>& tint);
+    // The integrand as surface + Σ_j A_j·volume[j]: its parts per unit albedo.
+    struct Split {
+      double surface = 0.0;
+      std::array<double, 2> volume{0.0, 0.0};
+    };
+    Split integrand_split(const dvec3& wi, const dvec3& wo);
     // The resolved weave at one point of the repeat (core/weave_layout.h): the one tangent sample
     // that lies there, thread j at tilt α, as f_s · M · P · cos θ_i / Q with the fabric-level Q.
     // Its average over the repeat, thread j covering a_j, is integrand(). Zero below the surface.

@@ -69,12 +69,22 @@ double surface_scattering(const ThreadParams& p, const FiberAngles& in, const Fi
          normal_gaussian(h.theta_h, p.gamma_s);
 }
 
-dvec3 volume_scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out) {
+double volume_scattering_per_albedo(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out) {
   const HalfAngles h = half_angles(in, out);
   const double t = 1.0 - fresnel_dielectric(p.eta, effective_cos(h));
   const double lobe = (1.0 - p.kd) * normal_gaussian(h.theta_h, p.gamma_v) + p.kd;
   const double denom = std::max(std::cos(in.theta) + std::cos(out.theta), kModelDenominatorFloor);
-  return (t * t * lobe / denom) * p.albedo;
+  return t * t * lobe / denom;
+}
+
+dvec3 volume_scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out) {
+  return volume_scattering_per_albedo(p, in, out) * p.albedo;
+}
+
+glm::dvec2 scattering_split(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out) {
+  const double cos_d = std::cos((in.theta - out.theta) / 2.0);
+  const double inv = 1.0 / std::max(cos_d * cos_d, kModelDenominatorFloor);
+  return glm::dvec2(surface_scattering(p, in, out), volume_scattering_per_albedo(p, in, out)) * inv;
 }
 
 dvec3 scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out) {

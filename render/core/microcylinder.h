@@ -64,6 +64,10 @@ dvec3 scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles
 // The separate lobes, for tests and for methods that split them.
 double surface_scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out);  // f_rs
 dvec3 volume_scattering(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out);    // f_rv
+// f_rv per unit albedo (f_rv = A times it): the part a texture's texel scales.
+double volume_scattering_per_albedo(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out);
+// f_s split as (surface part, volume part per unit albedo): f_s = x + A·y.
+glm::dvec2 scattering_split(const ThreadParams& p, const FiberAngles& in, const FiberAngles& out);
 // M: shadowing–masking; P: projection.
 double masking(const FiberAngles& in, const FiberAngles& out);
 double projection(const FiberAngles& in, const FiberAngles& out);

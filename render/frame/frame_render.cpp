@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 
 #include "bake/tables/table_baker.h"
 #include "gpu/egl_context.h"
@@ -18,6 +19,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
   std::vector<Fabric> cloth;
   for (const auto& o : scene.cloth_objects()) cloth.push_back(object_base_fabric(o, fabrics));
   gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(iwasaki), table_baker());
+  for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "weft render: %s\n", w.c_str());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);
   renderer.set_weave(weave);

@@ -3,6 +3,7 @@
 // method's shader, Lambertian surfaces (floor, occluders) with their SG irradiance, shadowed by
 // the bundle's baked visibility when it has theirs (computed per vertex on the CPU whenever the
 // lighting changes, not per pixel per frame).
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -68,6 +69,9 @@ public:
   // Knob edits: new thread albedo / gloss for a cloth object, no re-bake.
   void set_fabric(size_t cloth_index, const Fabric& fabric);
   void set_backdrop(Backdrop backdrop);  // default: measure
+  // What the operator should know about how the scene is drawn: a textured cloth object the method
+  // draws without its texture (one line each).
+  const std::vector<std::string>& warnings() const { return warnings_; }
   // Temporal reuse of the cloth's per-vertex work (ClothMethod::set_vertex_refresh): each draw
   // recomputes 1/shares of the vertices; refresh_all(): every vertex on the next draw (the eye
   // jumped). Default 1: all, every draw.
@@ -94,6 +98,8 @@ private:
   std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
   bool weave_on_ = false;
+  std::map<const TextureImage*, std::unique_ptr<ThreadMapTexture>> textures_;  // each image once
+  std::vector<std::string> warnings_;
   Backdrop backdrop_ = Backdrop::measure;
 };
 

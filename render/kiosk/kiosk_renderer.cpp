@@ -18,6 +18,7 @@ std::unique_ptr<gpu::SceneRenderer> make_kiosk_renderer(const SceneBundle& sb, c
                                                         std::shared_ptr<const IwasakiBundleData> iwasaki) {
   auto r = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth, method, 16, std::move(iwasaki));
   r->set_backdrop(gpu::Backdrop::showroom);
+  for (const std::string& w : r->warnings()) kiosk_log_warning("scene '" + sb.scene.name + "': " + w);
   try {
     r->set_weave(true);
   } catch (const std::exception& e) {

@@ -12,6 +12,7 @@
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "methods/sg_visibility.h"
+#include "methods/thread_map_textures.h"
 #include "scene/mesh.h"
 
 namespace weft::gpu {
@@ -31,6 +32,12 @@ public:
   // Scene object `scene_index` (cloth), with its mesh (kept by the caller for the method's
   // lifetime) and fabric; returns the handle the calls below take. Needs a current GLES 3 context.
   virtual size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) = 0;
+  // A textured cloth's thread maps (methods/thread_map_textures.h: each thread's albedo times the
+  // texel), after add_object. Returns false when the method draws the object without them.
+  virtual bool set_thread_maps(size_t handle, const ThreadMaps& maps) {
+    (void)handle, (void)maps;
+    return false;
+  }
   // A knob edit: new thread albedo / gloss, no re-bake. Throws GpuError (and changes nothing)
   // for a fabric the method cannot show.
   virtual void set_fabric(size_t handle, const Fabric& fabric) = 0;

@@ -89,13 +89,16 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
     tilt = weave_tilt(bsdf->fabric(), w);
   }
 
+  // A textured cloth: each thread's albedo times its map's texel here (sample_texture, bilinear at
+  // the finest level; the supersampled pixel averages it as the GPU's mip levels do).
+  const std::array<dvec3, 2> tint = {thread_tint(obj, 0, s.uv), thread_tint(obj, 1, s.uv)};
   if (!lighting_.sgs.empty()) {
     SgQuadratureOptions opt;
     opt.fixed_polar = options_.sg_grid << level;
     opt.parallel = false;
     opt.visible = visible;
     if (bsdf && thread >= 0) return integrate_sg_resolved(*bsdf, frame, thread, tilt, wo, lighting_.sgs, opt).radiance;
-    if (bsdf) return integrate_sg_lighting(*bsdf, frame, wo, lighting_.sgs, opt).radiance;
+    if (bsdf) return integrate_sg_lighting(*bsdf, frame, wo, lighting_.sgs, tint, opt).radiance;
     return integrate_sg_lambertian(s.normal, obj.albedo, lighting_.sgs, opt).radiance;
   }
   // Directional samples: Σ_k power_k · V · f(ω_k).
@@ -106,7 +109,7 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
     ClothBsdf::Point point = bsdf->at(frame);
     for (const auto& d : samples)
       if (glm::dot(d.direction, frame.n) > 0.0 && visible(d.direction))
-        sum += d.power * (thread >= 0 ? point.resolved_integrand(thread, tilt, d.direction, wo) : point.integrand(d.direction, wo));
+        sum += d.power * (thread >= 0 ? point.resolved_integrand(thread, tilt, d.direction, wo) : point.integrand(d.direction, wo, tint));
   } else {
     const dvec3 brdf = obj.albedo / std::numbers::pi;
     for (const auto& d : samples) {

@@ -85,13 +85,19 @@ SgQuadratureResult integrate(const MakeIntegrand& make_f, const dvec3& normal, s
 
 SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
                                          std::span<const SphericalGaussian> sgs, const SgQuadratureOptions& opt) {
+  return integrate_sg_lighting(bsdf, frame, wo, sgs, {dvec3(1.0), dvec3(1.0)}, opt);
+}
+
+SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                         std::span<const SphericalGaussian> sgs, const std::array<dvec3, 2>& tint,
+                                         const SgQuadratureOptions& opt) {
   if (glm::dot(wo, frame.n) <= 0.0 || sgs.empty()) {
     SgQuadratureResult res;
     res.converged = true;
     return res;
   }
   auto make_f = [&] {
-    return [point = bsdf.at(frame), &wo](const dvec3& wi) mutable { return point.integrand(wi, wo); };
+    return [point = bsdf.at(frame), &wo, &tint](const dvec3& wi) mutable { return point.integrand(wi, wo, tint); };
   };
   return integrate(make_f, frame.n, sgs, opt);
 }

@@ -40,6 +40,10 @@ struct SgQuadratureResult {
 SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
                                          std::span<const SphericalGaussian> sgs,
                                          const SgQuadratureOptions& options = {});
+// The same with each thread's albedo multiplied by tint[j] (a texture's texel at the point).
+SgQuadratureResult integrate_sg_lighting(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                                         std::span<const SphericalGaussian> sgs, const std::array<dvec3, 2>& tint,
+                                         const SgQuadratureOptions& options = {});
 
 // The resolved weave at one point of the repeat: thread `thread`'s sample at tilt `tilt`
 // (ClothBsdf::Point::resolved_integrand) in place of the fabric-level integrand.

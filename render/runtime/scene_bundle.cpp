@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lighting/sg_set_io.h"
+#include "scene/thread_maps.h"
 
 namespace weft {
 
@@ -12,6 +13,7 @@ namespace scene_section {
 std::string mesh(size_t object, const char* attribute) {
   return "mesh/" + std::to_string(object) + "/" + attribute;
 }
+std::string texture(size_t index) { return "texture/" + std::to_string(index); }
 }  // namespace scene_section
 
 namespace {
@@ -66,6 +68,37 @@ std::vector<V> read_rows(const bundle::BundleReader& r, const std::string& name,
   return out;
 }
 
+// The scene's "textures": each decoded from its section's PNG, its size as the list says.
+std::vector<std::shared_ptr<const TextureImage>> read_textures(const bundle::BundleReader& r, const json& j,
+                                                               std::vector<std::string>& names) {
+  std::vector<std::shared_ptr<const TextureImage>> out;
+  if (!j.contains("textures")) return out;
+  const json& list = j.at("textures");
+  const std::string S = scene_section::kScene;
+  if (!list.is_array() || list.empty() || list.size() > kMaxSceneTextures)
+    throw bad(r, S, "textures: expected a list of 1 to " + std::to_string(kMaxSceneTextures) + " images");
+  for (size_t n = 0; n < list.size(); ++n) {
+    const std::string name = scene_section::texture(n);
+    const auto& info = r.section(name);  // throws naming it when absent
+    if (info.type != bundle::ElementType::U8 || info.shape.size() != 1)
+      throw bad(r, name, "expected the bytes of a PNG (u8, rank 1)");
+    const auto bytes = r.array<std::uint8_t>(name);
+    TextureImage image;
+    try {
+      image = decode_texture(std::span<const std::uint8_t>(bytes.data(), bytes.size()), "texture");
+    } catch (const TextureError& e) {
+      throw bad(r, name, e.what());
+    }
+    const json& t = list[n];
+    if (t.at("width").get<long>() != image.width || t.at("height").get<long>() != image.height)
+      throw bad(r, name, "the image is " + std::to_string(image.width) + "×" + std::to_string(image.height) +
+                             ", the scene section says " + t.at("width").dump() + "×" + t.at("height").dump());
+    names.push_back(t.at("name").get<std::string>());
+    out.push_back(std::make_shared<const TextureImage>(std::move(image)));
+  }
+  return out;
+}
+
 }  // namespace
 
 SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
@@ -103,6 +136,8 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
     };
     s.camera = camera(j.at("camera"), "camera");
     if (j.contains("closeup_camera")) s.closeup = camera(j.at("closeup_camera"), "closeup_camera");
+    std::vector<std::string> texture_names;
+    const auto textures = read_textures(r, j, texture_names);
     const json& objects = j.at("objects");
     if (!objects.is_array() || objects.empty()) throw bad(r, S, "no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
@@ -135,6 +170,28 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
           if (const std::string why = fabric_text_problem(*into); !why.empty())
             throw bad(r, S, "object '" + o.name + "': " + key + ": " + why);
         }
+        if (jo.contains("thread_maps")) {
+          const json& maps = jo.at("thread_maps");
+          const std::string w = "object '" + o.name + "': thread_maps";
+          if (!maps.is_array() || maps.size() != 2) throw bad(r, S, w + ": expected [warp, weft]");
+          for (int t = 0; t < 2; ++t) {
+            if (maps[t].is_null()) continue;
+            const json& m = maps[t];
+            const long index = m.at("texture").get<long>();
+            if (index < 0 || size_t(index) >= textures.size())
+              throw bad(r, S, w + ": texture " + std::to_string(index) + " is not among the " +
+                                  std::to_string(textures.size()) + " textures");
+            ThreadMap tm;
+            tm.image = textures[size_t(index)];
+            tm.name = texture_names[size_t(index)];
+            tm.transform.offset = {m.at("offset").at(0).get<double>(), m.at("offset").at(1).get<double>()};
+            tm.transform.scale = {m.at("scale").at(0).get<double>(), m.at("scale").at(1).get<double>()};
+            tm.transform.rotation = m.at("rotation").get<double>();
+            if (const std::string why = texture_transform_problem(tm.transform); !why.empty())
+              throw bad(r, S, w + ": " + why);
+            o.thread_maps[t] = tm;
+          }
+        }
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
       } else {
@@ -147,6 +204,8 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
       if (r.has(scene_section::mesh(i, "uvs"))) m.uvs = read_rows<glm::dvec2>(r, scene_section::mesh(i, "uvs"), 2, n);
       if (r.has(scene_section::mesh(i, "warps")))
         m.warps = read_rows<glm::dvec3>(r, scene_section::mesh(i, "warps"), 3, n);
+      if (o.textured() && m.uvs.empty())
+        throw bad(r, scene_section::mesh(i, "uvs"), "textured cloth object '" + o.name + "' has no UVs");
       if (o.material == Material::cloth && m.warps.empty())
         throw bad(r, scene_section::mesh(i, "warps"), "cloth object '" + o.name + "' has no warp directions");
       const std::string is = scene_section::mesh(i, "indices");

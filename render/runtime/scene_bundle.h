@@ -20,6 +20,7 @@ inline constexpr const char* kScene = "scene";            // json: name, camera,
 inline constexpr const char* kSgs = "lighting/sgs";       // json: weft-sg-set
 inline constexpr const char* kFabrics = "fabrics";         // json: {preset: fabric file object, ...}
 std::string mesh(size_t object, const char* attribute);   // "mesh/<i>/<attribute>"
+std::string texture(size_t index);                        // "texture/<n>": u8, a PNG
 }  // namespace scene_section
 
 struct SceneBundle {

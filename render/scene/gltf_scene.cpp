@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -20,6 +21,8 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "scene/thread_maps.h"
+
 namespace weft {
 
 namespace {
@@ -32,10 +35,19 @@ const glm::dmat4 kToWeft(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dv
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Textures are not used: images are skipped without decoding.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are decoded by the importer, and only those a cloth's texture uses (thread_maps.h, with
+// its caps). tinygltf hands a data URI's decoded bytes here, kept as they are; a bufferView's
+// image is read by the importer within its buffer's bounds, an external file from its uri.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                      int size, void*) {
+  if (image->bufferView < 0 && bytes && size > 0) {
+    image->image.assign(bytes, bytes + size);
+    image->as_is = true;
+  }
   return true;
 }
+
+constexpr const char* kTextureTransform = "KHR_texture_transform";
 
 // External buffers: only regular files within the size cap (no devices, no FIFOs, nothing that
 // would take the whole memory), and nothing is ever written.
@@ -110,6 +122,11 @@ private:
   // The product colour of cloth material `index`: its baseColorFactor's RGB when the file gives
   // one (absent, glTF's default white is no colour of the product's: the fabric's own stays).
   std::optional<glm::dvec3> cloth_colour(size_t index) const;
+  // Cloth material `index`'s textures (baseColorTexture on both threads, extras.weft.weft_texture
+  // the weft's own); none when it has no baseColorTexture.
+  std::array<std::optional<ThreadMap>, 2> cloth_maps(size_t index);
+  ThreadMap thread_map(const tinygltf::Value* info, int texture, int texcoord, const std::string& where);
+  std::shared_ptr<const TextureImage> image(int index, const std::string& where);
   void read_variants();  // KHR_materials_variants: the file's list of variants
   void map_variants(const tinygltf::Primitive& p, const std::string& where);  // one primitive's mappings
   std::vector<Colourway> colourways(const std::vector<std::string>& object_names);
@@ -130,6 +147,7 @@ private:
   std::vector<std::vector<std::set<size_t>>> variant_materials_;
   // Per material (index + 1): extras.weft.display_name and .composition, empty when absent.
   std::vector<std::string> display_names_, compositions_;
+  std::map<int, std::shared_ptr<const TextureImage>> images_;  // decoded, by image index
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
   size_t vertices_ = 0, triangles_ = 0;
@@ -265,6 +283,112 @@ std::optional<glm::dvec3> Importer::cloth_colour(size_t index) const {
   } catch (const SceneError& e) {
     fail(e.what());
   }
+}
+
+std::shared_ptr<const TextureImage> Importer::image(int index, const std::string& where) {
+  if (index < 0 || size_t(index) >= m_.images.size())
+    fail(where + ": image " + std::to_string(index) + " does not exist (" + std::to_string(m_.images.size()) + " images)");
+  if (auto it = images_.find(index); it != images_.end()) return it->second;
+  if (images_.size() >= kMaxSceneTextures)
+    fail(where + ": more than " + std::to_string(kMaxSceneTextures) + " images on cloth (the importer's limit)");
+  const tinygltf::Image& im = m_.images[size_t(index)];
+  const std::string what = origin_ + ": " + where + " (images[" + std::to_string(index) + "]" +
+                           (im.name.empty() ? std::string() : " '" + im.name + "'") + ")";
+  std::shared_ptr<const TextureImage> decoded;
+  try {
+    if (im.bufferView >= 0) {
+      if (size_t(im.bufferView) >= m_.bufferViews.size())
+        throw SceneError(what + ": buffer view " + std::to_string(im.bufferView) + " does not exist");
+      const tinygltf::BufferView& v = m_.bufferViews[size_t(im.bufferView)];
+      if (v.buffer < 0 || size_t(v.buffer) >= m_.buffers.size())
+        throw SceneError(what + ": buffer " + std::to_string(v.buffer) + " does not exist");
+      const auto& data = m_.buffers[size_t(v.buffer)].data;
+      if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
+        throw SceneError(what + ": buffer view " + std::to_string(im.bufferView) + " runs past the end of its buffer");
+      decoded = std::make_shared<const TextureImage>(
+          decode_texture(std::span<const std::uint8_t>(data.data() + v.byteOffset, v.byteLength), what));
+    } else if (im.as_is && !im.image.empty()) {  // a data URI
+      decoded = std::make_shared<const TextureImage>(decode_texture(im.image, what));
+    } else if (!im.uri.empty()) {
+      if (im.uri.find("://") != std::string::npos) throw SceneError(what + ": '" + im.uri + "' is not a local file");
+      decoded = load_texture_file((base_dir_ / im.uri).lexically_normal(), what);
+    } else {
+      throw SceneError(what + ": the image has no data (no uri, no bufferView)");
+    }
+  } catch (const TextureError& e) {
+    throw SceneError(e.what());
+  }
+  images_.emplace(index, decoded);
+  return decoded;
+}
+
+// A number pair of KHR_texture_transform ("offset", "scale"), or `fallback` when absent.
+glm::dvec2 transform_pair(const tinygltf::Value& t, const char* key, glm::dvec2 fallback, const std::string& where,
+                          const std::function<void(const std::string&)>& fail) {
+  if (!t.Has(key)) return fallback;
+  const tinygltf::Value& v = t.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+    fail(where + "." + key + ": expected two numbers");
+  return {v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble()};
+}
+
+ThreadMap Importer::thread_map(const tinygltf::Value* transform, int texture, int texcoord, const std::string& where) {
+  if (texture < 0 || size_t(texture) >= m_.textures.size())
+    fail(where + ".index: texture " + std::to_string(texture) + " does not exist (" + std::to_string(m_.textures.size()) +
+         " textures)");
+  ThreadMap m;
+  const std::function<void(const std::string&)> failing = [this](const std::string& w) { fail(w); };
+  if (transform) {
+    const std::string tw = where + ".extensions." + kTextureTransform;
+    if (!transform->IsObject()) fail(tw + ": expected an object");
+    m.transform.offset = transform_pair(*transform, "offset", glm::dvec2(0.0), tw, failing);
+    m.transform.scale = transform_pair(*transform, "scale", glm::dvec2(1.0), tw, failing);
+    if (transform->Has("rotation")) {
+      if (!transform->Get("rotation").IsNumber()) fail(tw + ".rotation: expected a number (radians)");
+      m.transform.rotation = transform->Get("rotation").GetNumberAsDouble();
+    }
+    if (transform->Has("texCoord")) {
+      if (!transform->Get("texCoord").IsNumber()) fail(tw + ".texCoord: expected a number");
+      texcoord = int(transform->Get("texCoord").GetNumberAsDouble());
+    }
+    if (const std::string why = texture_transform_problem(m.transform); !why.empty()) fail(tw + ": " + why);
+  }
+  if (texcoord != 0) fail(where + ": reads TEXCOORD_" + std::to_string(texcoord) + "; Weft keeps TEXCOORD_0 only");
+  const tinygltf::Texture& t = m_.textures[size_t(texture)];
+  if (t.source < 0) fail(where + ": texture " + std::to_string(texture) + " has no image (source)");
+  m.image = image(t.source, where);
+  const tinygltf::Image& im = m_.images[size_t(t.source)];
+  m.name = !im.name.empty() ? im.name : !im.uri.empty() ? std::filesystem::path(im.uri).filename().string()
+                                                        : "image_" + std::to_string(t.source);
+  return m;
+}
+
+std::array<std::optional<ThreadMap>, 2> Importer::cloth_maps(size_t index) {
+  const tinygltf::Material& mat = m_.materials[index];
+  const std::string at = "materials[" + std::to_string(index) + "] ('" + mat.name + "')";
+  std::array<std::optional<ThreadMap>, 2> out;
+  const tinygltf::TextureInfo& base = mat.pbrMetallicRoughness.baseColorTexture;
+  const bool weft_own = mat.extras.IsObject() && mat.extras.Has("weft") && mat.extras.Get("weft").Has("weft_texture");
+  if (base.index < 0) {
+    if (weft_own) fail(at + ".extras.weft.weft_texture: give the warp's pbrMetallicRoughness.baseColorTexture too");
+    return out;
+  }
+  const auto ext = base.extensions.find(kTextureTransform);
+  out[0] = thread_map(ext == base.extensions.end() ? nullptr : &ext->second, base.index, base.texCoord,
+                      at + ".pbrMetallicRoughness.baseColorTexture");
+  out[1] = out[0];
+  if (weft_own) {
+    const std::string w = at + ".extras.weft.weft_texture";
+    const tinygltf::Value& v = mat.extras.Get("weft").Get("weft_texture");
+    if (!v.IsObject() || !v.Has("index") || !v.Get("index").IsNumber())
+      fail(w + ": expected a texture reference {\"index\", \"extensions\": {\"" + kTextureTransform + "\": ...}}");
+    const tinygltf::Value* transform = nullptr;
+    if (v.Has("extensions") && v.Get("extensions").Has(kTextureTransform))
+      transform = &v.Get("extensions").Get(kTextureTransform);
+    const int texcoord = v.Has("texCoord") && v.Get("texCoord").IsNumber() ? int(v.Get("texCoord").GetNumberAsDouble()) : 0;
+    out[1] = thread_map(transform, int(v.Get("index").GetNumberAsDouble()), texcoord, w);
+  }
+  return out;
 }
 
 constexpr const char* kVariants = "KHR_materials_variants";
@@ -611,6 +735,9 @@ Scene Importer::run() {
       o.optical_thickness = thickness_[i];
       o.weave_repeats_per_uv = repeats_[i];
       if (i > 0) o.colour = cloth_colour(i - 1);
+      if (i > 0) o.thread_maps = cloth_maps(i - 1);
+      if (o.textured() && o.mesh.uvs.empty())
+        fail(material_label(m_, i) + ": its texture needs TEXCOORD_0 on every primitive, and one has none");
       o.display_name = display_names_[i];
       o.composition = compositions_[i];
     } else {
@@ -646,7 +773,7 @@ bool is_gltf_path(const std::string& name) {
 Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, const std::filesystem::path& base_dir,
                        const GltfImportOptions& options) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skip_image, nullptr);
+  loader.SetImageLoader(keep_image_bytes, nullptr);
   loader.SetFsCallbacks({tinygltf::FileExists, tinygltf::ExpandFilePath, read_buffer_file, refuse_write, nullptr});
   tinygltf::Model model;
   std::string err, warn;
@@ -669,11 +796,12 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
   // No extension is read yet: a required one is refused by name (its data would read as garbage,
   // e.g. a Draco mesh's missing buffer views), an optional one is a remark for the log.
   for (const std::string& e : model.extensionsRequired)
-    throw SceneError(origin + ": requires the glTF extension " + e +
+    if (e != kTextureTransform)
+      throw SceneError(origin + ": requires the glTF extension " + e +
                      ", which Weft cannot read (export the file without it, e.g. without mesh compression)");
   std::vector<std::string> remarks;
   for (const std::string& e : model.extensionsUsed)
-    if (e != kVariants) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
+    if (e != kVariants && e != kTextureTransform) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
   Scene s = Importer(model, origin, base_dir, options).run();
   for (const std::string& r : remarks) s.warnings.push_back(origin + ": " + r);
   // tinygltf's warnings, one per line, for the log: what it let through is worth a look.

@@ -9,6 +9,7 @@
 
 #include "scene/gltf_scene.h"
 #include "scene/procedural_meshes.h"
+#include "scene/thread_maps.h"
 
 namespace weft {
 
@@ -260,6 +261,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
 
   const json& objects = field(j, "objects", origin);
   if (!objects.is_array() || objects.empty()) throw SceneError(origin + ": objects: expected a non-empty array");
+  TextureFiles textures;
   for (size_t i = 0; i < objects.size(); ++i) {
     const json& o = objects[i];
     const std::string where = origin + ": objects[" + std::to_string(i) + "]";
@@ -274,6 +276,14 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
         throw SceneError(where + ".optical_thickness: must be > 0 (leave it out for the fabric's own)");
       if (o.contains("weave_repeats_per_uv")) obj.weave_repeats_per_uv = repeats_per_uv(o["weave_repeats_per_uv"], where + ".weave_repeats_per_uv");
       if (o.contains("colour")) obj.colour = colour_field(o["colour"], where + ".colour");
+      if (o.contains("texture")) {
+        obj.thread_maps[0] = parse_thread_map(o["texture"], where + ".texture", base_dir, textures);
+        obj.thread_maps[1] = obj.thread_maps[0];
+      }
+      if (o.contains("weft_texture")) {
+        if (!o.contains("texture")) throw SceneError(where + ".weft_texture: give the warp's \"texture\" too");
+        obj.thread_maps[1] = parse_thread_map(o["weft_texture"], where + ".weft_texture", base_dir, textures);
+      }
     } else if (material == "lambertian") {
       obj.material = Material::lambertian;
       obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");

@@ -2,14 +2,17 @@
 // A showroom scene: camera, default lighting, and objects (cloth with a fabric, or Lambertian
 // occluders with an albedo) whose meshes are generated from the parameters in the scene file.
 // Format: assets/scenes/README.md.
+#include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/fabric.h"
+#include "image/texture_image.h"
 #include "scene/mesh.h"
 
 namespace weft {
@@ -33,6 +36,28 @@ glm::dvec3 camera_ray(const Camera& camera, int width, int height, double px, do
 
 enum class Material { cloth, lambertian };
 
+// Where a texture is read for a mesh UV: KHR_texture_transform's uv' = T(offset)·R(rotation)·S(scale)·uv,
+// that is u' = o_x + s_x·cos r·u + s_y·sin r·v, v' = o_y − s_x·sin r·u + s_y·cos r·v.
+struct TextureTransform {
+  glm::dvec2 offset{0.0}, scale{1.0};
+  double rotation = 0.0;  // radians
+  bool operator==(const TextureTransform&) const = default;
+};
+glm::dvec2 transformed_uv(const TextureTransform& t, glm::dvec2 uv);
+// The same as the 3×3 matrix (column-major, as GLSL's mat3) acting on (u, v, 1).
+glm::dmat3 texture_matrix(const TextureTransform& t);
+
+// A texture on a cloth's threads: the thread's albedo is multiplied by the texel (linear RGB) at
+// the point's UV, so a knob's colour edit recolours the pattern relative to it. `image` may be
+// shared by several objects; `name` names it in messages and the bundle.
+struct ThreadMap {
+  std::shared_ptr<const TextureImage> image;
+  std::string name;
+  TextureTransform transform;
+};
+// The most texture images a scene may hold (the bundle's scene section lists them).
+inline constexpr size_t kMaxSceneTextures = 64;
+
 struct SceneObject {
   std::string name;
   Material material = Material::lambertian;
@@ -43,11 +68,20 @@ struct SceneObject {
   // cloth: the kiosk label's text for this object, over its fabric's when not empty (glTF
   // extras.weft.display_name and .composition; core/fabric.h's rules).
   std::string display_name, composition;
+  // cloth: per thread (warp, weft) its texture, none: untextured. A single map (glTF
+  // baseColorTexture) is on both; extras.weft.weft_texture (or a scene's "weft_texture") gives
+  // the weft its own.
+  std::array<std::optional<ThreadMap>, 2> thread_maps;
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
   bool is_cloth() const { return material == Material::cloth; }
+  bool textured() const { return thread_maps[0] || thread_maps[1]; }
 };
+
+// What thread j's albedo is multiplied by at mesh UV `uv`: the texel of its map (linear RGB,
+// sample_texture), or 1 without one.
+glm::dvec3 thread_tint(const SceneObject& o, int thread, glm::dvec2 uv);
 
 // The most weave repeats per UV unit a scene or glTF may give.
 inline constexpr double kMaxWeaveRepeatsPerUv = 1e6;

@@ -67,7 +67,9 @@ FiberDirection fiber_direction(vec3 t, vec3 np, vec3 b, float theta, float phi) 
   return FiberDirection(st * t + ct * radial, ct * t - st * radial, ct * (-sp * np + cp * b));
 }
 
-vec3 scattering(Thread p, FiberAngles i, FiberAngles o) {
+// f_s as (surface part, volume part per unit albedo): f_s = x + A·y (microcylinder.cpp's
+// surface_scattering and volume_scattering over cos² θ_d).
+vec2 scattering_split(Thread p, FiberAngles i, FiberAngles o) {
   float theta_d = 0.5 * (i.theta - o.theta), theta_h = 0.5 * (i.theta + o.theta);
   float phi_d = wrap_angle(i.phi - o.phi);
   float c = cos(theta_d) * cos(0.5 * phi_d);
@@ -75,8 +77,12 @@ vec3 scattering(Thread p, FiberAngles i, FiberAngles o) {
   float f_rs = fr * cos(0.5 * phi_d) * normal_gaussian(theta_h, p.gamma_s);
   float t = 1.0 - fr;
   float lobe = (1.0 - p.kd) * normal_gaussian(theta_h, p.gamma_v) + p.kd;
-  vec3 f_rv = (t * t * lobe / max(cos(i.theta) + cos(o.theta), DENOMINATOR_FLOOR)) * p.albedo;
-  return (vec3(f_rs) + f_rv) / max(cos(theta_d) * cos(theta_d), DENOMINATOR_FLOOR);
+  float f_rv = t * t * lobe / max(cos(i.theta) + cos(o.theta), DENOMINATOR_FLOOR);
+  return vec2(f_rs, f_rv) / max(cos(theta_d) * cos(theta_d), DENOMINATOR_FLOOR);
+}
+vec3 scattering(Thread p, FiberAngles i, FiberAngles o) {
+  vec2 f = scattering_split(p, i, o);
+  return vec3(f.x) + f.y * p.albedo;
 }
 float masking_term(FiberAngles i, FiberAngles o) {
   return masking_mix(masking_gaussian(wrap_angle(i.phi - o.phi)), max(cos(i.phi), 0.0), max(cos(o.phi), 0.0));
@@ -109,9 +115,10 @@ Thread widened(Thread p, float widen2) {
   return p;
 }
 
-// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u), each lobe widened by `widen2`
-// (0: ClothBsdf::Point::integrand itself).
-vec3 cloth_integrand_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u), each lobe widened by `widen2`,
+// split as (surface part, thread 0's volume part per unit albedo, thread 1's): the integrand is
+// x + A_0·y + A_1·z (ClothBsdf::Point::integrand_split).
+vec3 cloth_integrand_split_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
   if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
   vec3 v = cross(n, u);
   // Q needs ⟨P⟩ of both threads before any W.
@@ -120,7 +127,7 @@ vec3 cloth_integrand_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
   vec3 total = vec3(0.0);
   for (int j = 0; j < 2; ++j) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-    vec3 sum = vec3(0.0);
+    vec2 sum = vec2(0.0);
     for (int k = 0; k < u_threads[j].samples; ++k) {
       float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
       FiberAngles fi = fiber_angles(along, axis, n, alpha, wi);
@@ -129,11 +136,19 @@ vec3 cloth_integrand_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
       if (p <= 0.0) continue;
       float w = u_threads[j].coverage * masking_term(fi, fo) * p / q;
       if (w <= 0.0) continue;
-      sum += scattering(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
+      sum += scattering_split(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
     }
-    total += sum / float(u_threads[j].samples);
+    sum /= float(u_threads[j].samples);
+    total.x += sum.x;
+    if (j == 0) total.y = sum.y; else total.z = sum.y;
   }
   return total;
+}
+vec3 cloth_integrand_split(vec3 n, vec3 u, vec3 wi, vec3 wo) { return cloth_integrand_split_widened(n, u, wi, wo, 0.0); }
+// The integrand in colour, each lobe widened by `widen2` (0: ClothBsdf::Point::integrand itself).
+vec3 cloth_integrand_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
+  vec3 s = cloth_integrand_split_widened(n, u, wi, wo, widen2);
+  return vec3(s.x) + s.y * u_threads[0].albedo + s.z * u_threads[1].albedo;
 }
 
 // Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u): ClothBsdf::Point::integrand.

@@ -210,3 +210,38 @@ TEST(SceneBundle, RoundTripsTheColourwaysAndRefusesBadOnes) {
   bundle::BundleWriter w2;
   EXPECT_THROW(add_scene_sections(w2, missing), std::invalid_argument);  // the writer refuses it first
 }
+
+TEST(SceneBundle, CarriesTexturesAsVerifiedPngSections) {
+  SceneBundleInput in = pillow_input();
+  in.scene = load_scene_preset("plaid_pillow", fs::path(WEFT_SOURCE_ASSETS) / "scenes");
+  ThreadMap weft = *in.scene.objects[0].thread_maps[0];
+  weft.transform = {{0.1, 0.2}, {3.0, 5.0}, 0.4};
+  in.scene.objects[0].thread_maps[1] = weft;  // the same image, its own transform
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const auto reader = bundle::BundleReader::view(bytes, "memory");
+  ASSERT_TRUE(reader.has("texture/0"));
+  EXPECT_FALSE(reader.has("texture/1"));  // one image, stored once
+  EXPECT_GT(reader.section("texture/0").size, 0u);
+  const SceneBundle out = read_scene_bundle(reader);
+  const SceneObject& a = in.scene.objects[0];
+  const SceneObject& b = out.scene.objects[0];
+  for (int j = 0; j < 2; ++j) {
+    ASSERT_TRUE(b.thread_maps[j]);
+    EXPECT_EQ(b.thread_maps[j]->image->rgba, a.thread_maps[j]->image->rgba);  // lossless
+    EXPECT_EQ(b.thread_maps[j]->transform, a.thread_maps[j]->transform);
+    EXPECT_EQ(b.thread_maps[j]->name, "plaid.png");
+  }
+  EXPECT_EQ(b.thread_maps[0]->image, b.thread_maps[1]->image);
+  EXPECT_FALSE(out.scene.objects[1].textured());
+  // A flipped bit in the texture fails its checksum, named.
+  auto flipped = bytes;
+  flipped[reader.section("texture/0").offset + 20] ^= std::byte{4};
+  try {
+    read_scene_bundle(bundle::BundleReader::view(flipped, "memory"));
+    FAIL() << "accepted a flipped bit";
+  } catch (const bundle::BundleError& e) {
+    EXPECT_EQ(e.section(), "texture/0") << e.what();
+  }
+}

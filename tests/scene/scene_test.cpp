@@ -23,7 +23,7 @@ static std::string read(const std::filesystem::path& p) {
 
 TEST(Scene, AllPresetsLoadWithClothFramesFromUVs) {
   EXPECT_EQ(list_scene_presets(kDir),
-            (std::vector<std::string>{"curtain", "drape", "pillow", "showroom", "swatch", "teapot"}));
+            (std::vector<std::string>{"curtain", "drape", "pillow", "plaid_pillow", "showroom", "swatch", "teapot"}));
   SceneLoadOptions options;  // the showroom's glTF names its fabrics by preset
   options.fabrics_dir = WEFT_SOURCE_ASSETS "/fabrics";
   for (const auto& name : list_scene_presets(kDir)) {

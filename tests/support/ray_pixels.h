@@ -28,6 +28,7 @@ inline bool interior_pixel(const RayScene& rays, const Camera& camera, int width
 // A triangle's position, normal and warp at barycentric `b`, as the vertex shader interpolates them.
 struct MeshPoint {
   glm::dvec3 position{0}, normal{0}, warp{0};
+  glm::dvec2 uv{0};  // zero for a mesh without UVs
 };
 
 inline MeshPoint mesh_point(const TriangleMesh& mesh, const std::array<uint32_t, 3>& triangle, glm::dvec3 b) {
@@ -36,6 +37,7 @@ inline MeshPoint mesh_point(const TriangleMesh& mesh, const std::array<uint32_t,
     m.position += b[k] * mesh.positions[triangle[k]];
     m.normal += b[k] * mesh.normals[triangle[k]];
     m.warp += b[k] * mesh.warps[triangle[k]];
+    if (!mesh.uvs.empty()) m.uv += b[k] * mesh.uvs[triangle[k]];
   }
   return m;
 }

@@ -12,6 +12,11 @@ using nlohmann::json;
 
 json vec3(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
+json thread_map_json(const ThreadMap& m, size_t texture) {
+  const TextureTransform& t = m.transform;
+  return {{"texture", texture}, {"offset", {t.offset.x, t.offset.y}}, {"scale", {t.scale.x, t.scale.y}}, {"rotation", t.rotation}};
+}
+
 template <class V>
 std::vector<float> flatten(const std::vector<V>& values, int n) {
   std::vector<float> out;
@@ -41,6 +46,19 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
   if (s.closeup)
     scene["closeup_camera"] = {{"position", vec3(s.closeup->position)}, {"target", vec3(s.closeup->target)},
                                {"up", vec3(s.closeup->up)}, {"fov_deg", s.closeup->fov_deg}};
+  // Each image once, in order of first use: its PNG in section texture/<n>.
+  std::map<const TextureImage*, size_t> texture_index;
+  json textures = json::array();
+  for (const SceneObject& o : s.objects)
+    for (const auto& m : o.thread_maps) {
+      if (!m || texture_index.count(m->image.get())) continue;
+      const size_t n = texture_index.size();
+      texture_index.emplace(m->image.get(), n);
+      const std::vector<std::uint8_t> png = encode_png(*m->image);
+      writer.add_array<std::uint8_t>(scene_section::texture(n), png, {png.size()});
+      textures.push_back({{"name", m->name}, {"width", m->image->width}, {"height", m->image->height}});
+    }
+  if (!textures.empty()) scene["textures"] = textures;
   json objects = json::array();
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
@@ -56,6 +74,11 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
       if (o.colour) jo["colour"] = vec3(*o.colour);
       if (!o.display_name.empty()) jo["display_name"] = o.display_name;
       if (!o.composition.empty()) jo["composition"] = o.composition;
+      if (o.textured()) {
+        json maps = json::array();
+        for (const auto& m : o.thread_maps) maps.push_back(m ? thread_map_json(*m, texture_index.at(m->image.get())) : json());
+        jo["thread_maps"] = maps;
+      }
     } else {
       jo["material"] = "lambertian";
       jo["albedo"] = vec3(o.albedo);

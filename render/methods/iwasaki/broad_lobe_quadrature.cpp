@@ -7,28 +7,42 @@
 
 namespace weft {
 
-dvec3 broad_lobe_radiance(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
-                          std::span<const SphericalGaussian> sgs, std::span<const int> slots,
-                          std::span<const std::uint32_t> bits) {
-  dvec3 out(0.0);
+IwasakiTerms broad_lobe_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                              std::span<const SphericalGaussian> sgs, std::span<const int> slots,
+                              std::span<const std::uint32_t> bits) {
+  IwasakiTerms out;
   if (glm::dot(wo, frame.n) <= 0.0) return out;
   ClothBsdf::Point point = bsdf.at(frame);
+  const auto& threads = bsdf.fabric().threads;
   for (size_t k = 0; k < sgs.size(); ++k) {
     if (slots[k] < 0) continue;
     const SgWarpedGrid grid(sgs[k].axis, sgs[k].sharpness, kBroadLobeGrid);
-    dvec3 sum(0.0);
+    ClothBsdf::Point::Split sum;
     for (int i = 0, c = 0; i < grid.polar(); ++i) {
       const double cos_t = grid.polar_cosine(i);
       for (int j = 0; j < grid.azimuthal(); ++j, ++c) {
         const dvec3 wi = grid.direction(cos_t, j);
         if (glm::dot(wi, frame.n) <= 0.0) continue;  // below the surface: the model is zero there
         if (!bits.empty() && !((bits[slots[k] * kBroadLobeWordsPerSg + c / 32] >> (c % 32)) & 1u)) continue;
-        sum += point.integrand(wi, wo);
+        const ClothBsdf::Point::Split s = point.integrand_split(wi, wo);
+        sum.surface += s.surface;
+        sum.volume[0] += s.volume[0];
+        sum.volume[1] += s.volume[1];
       }
     }
-    out += sgs[k].amplitude * sum * grid.cell_weight();
+    const dvec3 mu = sgs[k].amplitude * grid.cell_weight();
+    out.surface += mu * sum.surface;
+    for (int j = 0; j < 2; ++j) out.thread_volume[j] += mu * threads[j].albedo * sum.volume[j];
   }
+  out.volume = out.thread_volume[0] + out.thread_volume[1];
+  out.radiance = out.surface + out.volume;
   return out;
+}
+
+dvec3 broad_lobe_radiance(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                          std::span<const SphericalGaussian> sgs, std::span<const int> slots,
+                          std::span<const std::uint32_t> bits) {
+  return broad_lobe_terms(bsdf, frame, wo, sgs, slots, bits).radiance;
 }
 
 IwasakiTerms iwasaki_narrow_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,
@@ -41,6 +55,7 @@ IwasakiTerms iwasaki_narrow_radiance(const ClothBsdf& bsdf, const WeightingTable
     out.surface += t.surface;
     out.volume += t.volume;
     out.radiance += t.radiance;
+    for (int j = 0; j < 2; ++j) out.thread_volume[j] += t.thread_volume[j];
   }
   return out;
 }

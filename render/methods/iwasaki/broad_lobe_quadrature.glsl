@@ -1,6 +1,6 @@
 // The broad lobes' quadrature at a mesh vertex (methods/iwasaki/broad_lobe_quadrature.cpp's
 // broad_lobe_radiance): for each SG with u_sg_broad[k] = s + 1, its SgWarpedGrid of n × 2n cells,
-// each open cell's direction weighted by the canonical model (cloth_integrand). Needs
+// each open cell's direction weighted by the canonical model (cloth_integrand_split). Needs
 // microcylinder.glsl and sg_lighting.glsl before it.
 uniform int u_broad_grid;                  // n (kBroadLobeGrid)
 uniform int u_broad_words_per_sg;          // kBroadLobeWordsPerSg
@@ -16,32 +16,31 @@ uint broad_word(int vertex, int word) {
   return c == 0 ? w.x : (c == 1 ? w.y : (c == 2 ? w.z : w.w));
 }
 
-// From SGs first … end − 1 (the per-vertex rung takes one SG at a time: iwasaki_quadrature_pass.frag).
-vec3 broad_lobe_radiance(int vertex, vec3 position, vec3 normal, vec3 warp, int first, int end) {
+// SG k's part at unit amplitude, split as cloth_integrand_split: (surface, thread 0's volume per
+// unit albedo, thread 1's); zero for an SG that is not broad. The radiance is
+// μ_k·(x + A_0·y + A_1·z): the per-vertex rungs keep the split, so the albedo (a knob, a texel)
+// applies per pixel.
+vec3 broad_lobe_split(int vertex, vec3 position, vec3 normal, vec3 warp, int k) {
+  int slot = u_sg_broad[k] - 1;
+  if (slot < 0) return vec3(0.0);
   vec3 n = normalize(normal);
   vec3 wo = normalize(u_eye - position);
   if (dot(n, wo) < 0.0) n = -n;  // as iwasaki_radiance: the side facing the eye
   vec3 u = normalize(warp - dot(warp, n) * n);
-  vec3 sum = vec3(0.0);
-  for (int k = first; k < min(end, u_sg_count); ++k) {
-    int slot = u_sg_broad[k] - 1;
-    if (slot < 0) continue;
-    float lambda = u_sg_sharpness[k];
-    vec3 axis = u_sg_axis[k];
-    vec3 lobe = vec3(0.0);
-    int cells_per_row = 2 * u_broad_grid;
-    for (int i = 0; i < u_broad_grid; ++i) {
-      float cos_t = sg_grid_polar_cosine(lambda, u_broad_grid, i);
-      for (int j = 0; j < cells_per_row; ++j) {
-        vec3 wi = sg_grid_direction(axis, cos_t, u_broad_grid, j);
-        if (dot(wi, n) <= 0.0) continue;  // below the surface: the model is zero there
-        int c = i * cells_per_row + j;
-        uint word = broad_word(vertex, slot * u_broad_words_per_sg + c / 32);
-        if (((word >> uint(c - (c / 32) * 32)) & 1u) == 0u) continue;
-        lobe += cloth_integrand(n, u, wi, wo);
-      }
+  float lambda = u_sg_sharpness[k];
+  vec3 axis = u_sg_axis[k];
+  vec3 lobe = vec3(0.0);
+  int cells_per_row = 2 * u_broad_grid;
+  for (int i = 0; i < u_broad_grid; ++i) {
+    float cos_t = sg_grid_polar_cosine(lambda, u_broad_grid, i);
+    for (int j = 0; j < cells_per_row; ++j) {
+      vec3 wi = sg_grid_direction(axis, cos_t, u_broad_grid, j);
+      if (dot(wi, n) <= 0.0) continue;  // below the surface: the model is zero there
+      int c = i * cells_per_row + j;
+      uint word = broad_word(vertex, slot * u_broad_words_per_sg + c / 32);
+      if (((word >> uint(c - (c / 32) * 32)) & 1u) == 0u) continue;
+      lobe += cloth_integrand_split(n, u, wi, wo);
     }
-    sum += u_sg_amplitude[k] * lobe * sg_grid_cell_weight(lambda, u_broad_grid);
   }
-  return sum;
+  return lobe * sg_grid_cell_weight(lambda, u_broad_grid);
 }

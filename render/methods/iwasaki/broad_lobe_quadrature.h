@@ -29,6 +29,11 @@ dvec3 broad_lobe_radiance(const ClothBsdf& bsdf, const SurfaceFrame& frame, cons
                           std::span<const SphericalGaussian> sgs, std::span<const int> slots,
                           std::span<const std::uint32_t> bits);
 
+// The same split into terms (IwasakiTerms: surface and each thread's volume part), for a textured cloth.
+IwasakiTerms broad_lobe_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
+                              std::span<const SphericalGaussian> sgs, std::span<const int> slots,
+                              std::span<const std::uint32_t> bits);
+
 // Iwasaki over the SGs with slot −1 only (each SG as iwasaki_radiance shades it, `visibility`
 // called with the SG's index in `sgs`).
 IwasakiTerms iwasaki_narrow_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, const SurfaceFrame& frame,

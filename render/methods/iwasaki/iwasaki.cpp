@@ -235,6 +235,7 @@ IwasakiTerms radiance_of(const ClothBsdf& bsdf, const WeightingTables& tables, c
       if (visibility) amplitude *= facet_horizon_factor(sgs[sg_index], frame.n, visibility->facet_normal);
       out.surface += amplitude * surf / double(n);
       out.volume += amplitude * vol / double(n);
+      out.thread_volume[j] += amplitude * vol / double(n);
     }
   }
   out.radiance = out.surface + out.volume;
@@ -261,6 +262,19 @@ dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::s
   dvec3 sum(0.0);
   for (size_t k = 0; k < sgs.size(); ++k) {
     const dvec3 blended = bary[0] * vertex_sgs[0][k] + bary[1] * vertex_sgs[1][k] + bary[2] * vertex_sgs[2][k];
+    const bool broad = k < broad_slots.size() && broad_slots[k] >= 0;
+    sum += broad ? blended : blended * facet_horizon_factor(sgs[k], shading_normal, facet_normal);
+  }
+  return sum;
+}
+
+dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
+                                  const std::array<std::span<const IwasakiTerms>, 3>& vertex_sgs, const dvec3& bary,
+                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint) {
+  dvec3 sum(0.0);
+  for (size_t k = 0; k < sgs.size(); ++k) {
+    dvec3 blended(0.0);
+    for (int i = 0; i < 3; ++i) blended += bary[i] * vertex_sgs[i][k].tinted(tint);
     const bool broad = k < broad_slots.size() && broad_slots[k] >= 0;
     sum += broad ? blended : blended * facet_horizon_factor(sgs[k], shading_normal, facet_normal);
   }

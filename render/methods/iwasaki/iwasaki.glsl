@@ -191,24 +191,29 @@ float horizon_sharpness_for_mean_cosine(float mean_cosine, float min_lambda) {
 vec3 iwasaki_facet_normal = vec3(0.0);
 void set_facet_normal(vec3 position) { iwasaki_facet_normal = facet_normal(position, u_eye); }
 
-// Outgoing radiance at a cloth point from SGs first … end − 1: `corners` are the vertices whose SDF
-// grids are blended with weights `bary` (the triangle's three at a pixel; one vertex, weight 1, per
-// vertex). The per-vertex pass takes one SG at a time (iwasaki_vertex_pass.frag).
-vec3 iwasaki_sg_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary, int first, int end) {
+// What multiplies each thread's albedo A_j at the point shaded: its texel where the cloth is textured
+// (thread_maps.glsl), else 1. A per-pixel caller sets it before iwasaki_radiance.
+vec3 iwasaki_thread_tint[2] = vec3[2](vec3(1.0), vec3(1.0));
+
+// SG k's light at a cloth point at unit amplitude (μ_k = 1), split into (surface part, thread 0's
+// volume part per unit albedo, thread 1's): the radiance is μ_k·(x + A_0·y + A_1·z), every factor
+// of the SG's (its share above the horizon, the facet's cut, the visible share) a scalar in x, y, z.
+// `corners` are the vertices whose SDF grids are blended with weights `bary` (the triangle's three
+// at a pixel; one vertex, weight 1, per vertex). Zero for a broad SG (broad_lobe_quadrature.glsl).
+vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary, int k) {
   vec3 n = normalize(normal);
   vec3 wo = normalize(u_eye - position);
   if (dot(n, wo) < 0.0) n = -n;  // thin cloth seen from behind: shade the side facing the eye
   vec3 u = normalize(warp - dot(warp, n) * n);
   vec3 v = cross(n, u);
   vec3 wo_local = vec3(dot(wo, u), dot(wo, v), dot(wo, n));
-  vec3 surface = vec3(0.0), volume = vec3(0.0);
-  if (wo_local.z > 0.0) {
+  vec3 split = vec3(0.0);
+  if (wo_local.z > 0.0 && u_sg_broad[k] == 0) {
     vec2 wo_tc = node_texcoord(node_square_from_hemisphere(normalize(wo_local)), u_wo_n);
-    for (int k = first; k < min(end, u_sg_count); ++k) {
-      if (u_sg_broad[k] != 0) continue;  // shaded by the broad lobes' quadrature (broad_lobe_quadrature.glsl)
+    {
       vec3 xi = u_sg_axis[k];
       float sigma_k = u_sg_sigma[k];
-      vec3 amplitude = u_sg_amplitude[k] * facet_horizon_factor(u_sg_sharpness[k], xi, n, iwasaki_facet_normal);
+      float amplitude = facet_horizon_factor(u_sg_sharpness[k], xi, n, iwasaki_facet_normal);
       int l0 = u_sg_levels[k].x, l1 = u_sg_levels[k].y;
       float lw = u_sg_level_w[k];
       // core's above_horizon: a lobe whose axis is below the surface as its part above it.
@@ -252,8 +257,7 @@ vec3 iwasaki_sg_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, v
         Thread p = u_threads[j];
         int count = p.samples;
         vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-        float surf = 0.0;
-        vec3 vol = vec3(0.0);
+        float surf = 0.0, vol = 0.0;
         for (int q = 0; q < count; ++q) {
           int d = u_sample_table[j * MAX_TANGENT_SAMPLES + q];
           float T = max(table_t(d, l0, l1, lw, xi_tc, wo_tc), 0.0);
@@ -307,15 +311,26 @@ vec3 iwasaki_sg_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, v
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
                         lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz) * spread_k;
-            vol += (T_lobe * lobe + T * iso) * p.albedo;
+            vol += T_lobe * lobe + T * iso;
           }
         }
-        surface += amplitude * surf / float(count);
-        volume += amplitude * vol / float(count);
+        split.x += amplitude * surf / float(count);
+        if (j == 0) split.y = amplitude * vol / float(count); else split.z = amplitude * vol / float(count);
       }
     }
   }
-  return surface + volume;
+  return split;
+}
+
+// Outgoing radiance at a cloth point from SGs first … end − 1, each thread's albedo times its tint.
+vec3 iwasaki_sg_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary, int first, int end) {
+  vec3 a0 = u_threads[0].albedo * iwasaki_thread_tint[0], a1 = u_threads[1].albedo * iwasaki_thread_tint[1];
+  vec3 sum = vec3(0.0);
+  for (int k = first; k < min(end, u_sg_count); ++k) {
+    vec3 s = iwasaki_sg_split(position, normal, warp, corners, bary, k);
+    sum += u_sg_amplitude[k] * (vec3(s.x) + a0 * s.y + a1 * s.z);
+  }
+  return sum;
 }
 // From every SG.
 vec3 iwasaki_radiance(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary) {

@@ -45,6 +45,11 @@ struct IwasakiTerms {
   dvec3 radiance{0.0};
   dvec3 surface{0.0};  // Σ over the f_rs part
   dvec3 volume{0.0};   // Σ over the f_rv part
+  // The f_rv part of each thread (volume = their sum): what a texture's texel on thread j scales
+  // (radiance = surface + Σ_j tint_j·thread_volume[j]).
+  std::array<dvec3, 2> thread_volume{dvec3(0.0), dvec3(0.0)};
+  // The radiance with thread j's albedo times tint[j].
+  dvec3 tinted(const std::array<dvec3, 2>& tint) const { return surface + tint[0] * thread_volume[0] + tint[1] * thread_volume[1]; }
 };
 
 // `bsdf` supplies the thread parameters (A, γ_s, γ_v, η, k_d: the knobs) and the tangent
@@ -84,5 +89,12 @@ IwasakiTerms iwasaki_sg_radiance(const ClothBsdf& bsdf, const WeightingTables& t
 dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
                                   const std::array<std::span<const dvec3>, 3>& vertex_sgs, const dvec3& bary,
                                   const dvec3& shading_normal, const dvec3& facet_normal);
+
+// The same for a textured cloth (iwasaki_vertex.frag with thread_maps.glsl): per vertex and SG the
+// terms (surface and each thread's volume part), blended and cut alike, each thread's part times
+// its texel at the pixel, tint[j].
+dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
+                                  const std::array<std::span<const IwasakiTerms>, 3>& vertex_sgs, const dvec3& bary,
+                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint);
 
 }  // namespace weft

@@ -32,6 +32,13 @@ SgLighting shaded(const SgLighting& sgs) {
   return out;
 }
 
+// The mesh's UVs as (u, v, 0): the attribute thread_maps.glsl's callers read at location 6.
+std::vector<glm::vec3> uv_attribute(const TriangleMesh& m) {
+  std::vector<glm::vec3> out(m.uvs.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = glm::vec3(float(m.uvs[i].x), float(m.uvs[i].y), 0.0f);
+  return out;
+}
+
 bool same_lighting(const SgLighting& a, const SgLighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
@@ -49,9 +56,12 @@ bool identical_lighting(const SgLighting& a, const SgLighting& b) {
 
 const std::vector<std::string_view>& iwasaki_glsl() {
   static const std::vector<std::string_view> parts = {"microcylinder.glsl", "erf.glsl",          "sg_lighting.glsl",
-                                                      "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl"};
+                                                      "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl",
+                                                      "thread_maps.glsl"};
   return parts;
 }
+
+bool pass_holds_albedo(const IwasakiShaders& s) { return !(s.facet_per_sg || s.broad_lobe_quadrature); }
 
 IwasakiShaders iwasaki_shaders() {
   IwasakiShaders s;
@@ -62,8 +72,9 @@ IwasakiShaders iwasaki_shaders() {
   s.pass_fs.push_back("vertex_pass.glsl");
   s.pass_fs.push_back("iwasaki_vertex_pass.frag");
   s.vertex_vs = {"iwasaki_vertex.vert"};
-  s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "iwasaki_vertex.frag"};
+  s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "thread_maps.glsl", "iwasaki_vertex.frag"};
   s.facet_per_sg = true;
+  s.thread_maps = true;
   return s;
 }
 
@@ -93,7 +104,22 @@ struct IwasakiCloth::Object {
   std::unique_ptr<SgVisibilityTexture> sg_visibility;
   SgLighting computed_for;
   SgLighting passed_for;  // the lighting the per-vertex pass's kept values were computed under
+  ThreadMaps maps;        // a textured cloth's (set_thread_maps)
 };
+
+namespace {
+// The same fabric but for its threads' albedos: what a colour knob changes.
+bool same_but_albedo(const Fabric& a, const Fabric& b) {
+  if (a.name != b.name || a.optical_thickness != b.optical_thickness) return false;
+  for (int j = 0; j < 2; ++j) {
+    const ThreadParams &p = a.threads[j], &q = b.threads[j];
+    if (p.eta != q.eta || p.kd != q.kd || p.gamma_s != q.gamma_s || p.gamma_v != q.gamma_v || p.coverage != q.coverage ||
+        p.curve.offsets_deg() != q.curve.offsets_deg() || p.curve.lengths() != q.curve.lengths())
+      return false;
+  }
+  return true;
+}
+}  // namespace
 
 IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation, IwasakiShaders shaders)
     : data_(std::move(data)), evaluation_(evaluation), shaders_(std::move(shaders)), program_(make_program(evaluation, shaders_)) {
@@ -124,11 +150,14 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   const bool quadrature = shaders_.broad_lobe_quadrature;
   if ((vis || quadrature) && !per_vertex) {  // per pixel, drawn de-indexed: every corner carries the triangle's three vertices
     std::vector<glm::vec3> corners, bary;
-    o = std::make_unique<Object>(GpuMesh(deindexed(mesh, corners, bary)));
+    const TriangleMesh drawn = deindexed(mesh, corners, bary);
+    o = std::make_unique<Object>(GpuMesh(drawn));
     o->mesh.add_attribute(4, corners);
     o->mesh.add_attribute(5, bary);
+    if (!drawn.uvs.empty()) o->mesh.add_attribute(6, uv_attribute(drawn));
   } else {
     o = std::make_unique<Object>(GpuMesh(mesh));
+    if (!mesh.uvs.empty()) o->mesh.add_attribute(6, uv_attribute(mesh));
   }
   // Each vertex reads its own SDF values; per pixel, the pass computes the broad lobes' part.
   if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh);
@@ -213,9 +242,17 @@ void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
     for (int k = 0; k < bsdf->sample_count(j); ++k, ++s)
       if (std::abs(bsdf->tilt(j, k) - t.tables().tilts[s]) > 1e-9)
         throw GpuError("method iwasaki: the tables of fabric '" + fabric.name + "' were baked for other tangent samples");
+  const bool colour_only = o.bsdf && same_but_albedo(o.bsdf->fabric(), fabric) && !pass_holds_albedo(shaders_);
   o.bsdf = std::move(bsdf);
   o.tables = &t;
-  if (o.pass) o.pass->invalidate();
+  if (o.pass && !colour_only) o.pass->invalidate();
+}
+
+bool IwasakiCloth::set_thread_maps(size_t handle, const ThreadMaps& maps) {
+  Object& o = *objects_.at(handle);
+  if (!shaders_.thread_maps) return false;
+  o.maps = maps;
+  return true;
 }
 
 void IwasakiCloth::refresh_all() {
@@ -285,11 +322,12 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     if (!o.sg_visibility) glUniform1i(p.uniform("u_sg_visibility"), 2);
     if (!kappa_) glUniform1i(p.uniform("u_kappa"), 3);
     if (o.broad_bits) o.broad_bits->bind(p, 7);
+    bind_thread_maps(p, o.maps, white_.id(), 9);
   };
   if (broad_pass_) {  // per pixel: the broad lobes' part per vertex first (units 4–6: the pass's inputs)
     set_up(*broad_pass_);
     glUniform1i(broad_pass_->uniform("u_pass_narrow"), 0);
-    o.pass->run_share(*broad_pass_, 4, 1, std::max(vertex_shares_, broad_shares_));
+    o.pass->run_share(*broad_pass_, 4, 3, std::max(vertex_shares_, broad_shares_));  // the split's three parts
   }
   set_up(program_);
   if (!o.pass) {
@@ -330,7 +368,13 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     }
     glUniform3fv(d.uniform("u_sg_hemisphere_terms"), count, terms.data());
     glUniform1iv(d.uniform("u_sg_broad"), count, broad.data());
+    glUniform3fv(d.uniform("u_sg_amplitude"), count, amplitudes.data());
   }
+  float albedo[6];
+  for (int j = 0; j < 2; ++j)
+    for (int c = 0; c < 3; ++c) albedo[3 * j + c] = float(o.bsdf->fabric().threads[j].albedo[c]);
+  glUniform3fv(d.uniform("u_thread_albedo"), 2, albedo);
+  bind_thread_maps(d, o.maps, white_.id(), 9);
   o.pass->bind_result(d, 0);
   o.mesh.draw();
 }

@@ -55,10 +55,15 @@ struct IwasakiShaders {
   // (vertex_vs, vertex_fs, built with SG_GROUPS = ⌈SGs/4⌉) cuts each by the facet's plane
   // (iwasaki_vertex.vert and .frag); false: one value per vertex, the draw interpolates it.
   bool facet_per_sg = false;
+  // The programs read a textured cloth's thread maps (thread_maps.glsl) where the albedos apply.
+  bool thread_maps = false;
 };
 // iwasaki's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):
 // what every program on its data links before its own parts, and what the parity tests compile.
 const std::vector<std::string_view>& iwasaki_glsl();
+// Whether the per-vertex pass's values depend on the threads' albedos: not for iwasaki's own
+// passes (they keep the light per unit albedo), for a layer's that may (sheer).
+bool pass_holds_albedo(const IwasakiShaders& shaders);
 IwasakiShaders iwasaki_shaders();
 IwasakiShaders iwasaki_quadrature_shaders();
 
@@ -69,7 +74,10 @@ public:
                         IwasakiShaders shaders = iwasaki_shaders());
   ~IwasakiCloth() override;
   size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) override;
+  // A colour-only edit (the albedos alone changed) keeps the per-vertex pass's values: they hold
+  // the light per unit albedo (iwasaki_vertex_pass.frag), the draw applies the albedo.
   void set_fabric(size_t handle, const Fabric& fabric) override;
+  bool set_thread_maps(size_t handle, const ThreadMaps& maps) override;
   // draw() computes the object's per-(vertex, SG) visibility itself when the lighting's axes or
   // sharpnesses changed since it was last set; a kiosk computes it off the render thread instead:
   // prepare_lighting is safe on any thread (it reads only what add_object fixed), set_lighting
@@ -95,6 +103,7 @@ private:
   std::map<int, std::unique_ptr<GlProgram>> facet_draws_;  // IwasakiShaders::facet_per_sg: the draw per SG_GROUPS
   const GlProgram& facet_draw(int sgs);
   std::unique_ptr<KappaTexture> kappa_;
+  WhiteTexture white_;  // thread_maps.glsl's samplers on untextured cloth
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;
   int vertex_shares_ = 1;

@@ -179,6 +179,7 @@ TriangleMesh deindexed(const TriangleMesh& m, std::vector<glm::vec3>& corners, s
       out.positions.push_back(m.positions[i]);
       out.normals.push_back(i < m.normals.size() ? m.normals[i] : glm::dvec3(0, 0, 1));
       out.warps.push_back(i < m.warps.size() ? m.warps[i] : glm::dvec3(1, 0, 0));
+      if (!m.uvs.empty()) out.uvs.push_back(m.uvs[i]);
       corners.push_back(ids);
       glm::vec3 b(0.0f);
       b[k] = 1.0f;
