@@ -13,6 +13,7 @@ PACKAGES=(
   libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libembree-dev libtbb-dev libopenexr-dev libpng-dev libtinygltf-dev
   libjpeg62-turbo-dev  # JPEG textures in glTF files (render/image/texture_image.h)
+  libdraco-dev libmeshoptimizer-dev  # compressed glTF meshes: Draco and meshopt (render/scene/gltf_draco.h, gltf_meshopt.h)
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd
   libudev-dev  # the kiosk follows displays being plugged (render/kiosk/display_watch.h)

@@ -21,6 +21,10 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "scene/gltf_draco.h"
+#include "scene/gltf_loadable.h"
+#include "scene/gltf_meshopt.h"
+#include "scene/gltf_names.h"
 #include "scene/thread_maps.h"
 
 namespace weft {
@@ -48,6 +52,12 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
 }
 
 constexpr const char* kTextureTransform = "KHR_texture_transform";
+// Compressed and quantized geometry, decoded before any accessor is read (gltf_draco.h,
+// gltf_meshopt.h) or read as it is (integer accessors).
+constexpr const char* kDracoCompression = "KHR_draco_mesh_compression";
+constexpr const char* kMeshoptCompression = "EXT_meshopt_compression";
+constexpr const char* kKhrMeshoptCompression = "KHR_meshopt_compression";
+constexpr const char* kMeshQuantization = "KHR_mesh_quantization";
 
 // External buffers: only regular files within the size cap (no devices, no FIFOs, nothing that
 // would take the whole memory), and nothing is ever written.
@@ -84,9 +94,19 @@ struct AccessorData {
         std::memcpy(&v, p + 4 * c, 4);
         return v;
       }
+      // Normalized signed integers per glTF 2.0 (3.11): max(c / 127, −1), so that −128 is −1 too.
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const double v = static_cast<int8_t>(p[c]);
+        return normalized ? std::max(v / 127.0, -1.0) : v;
+      }
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
         const double v = p[c];
         return normalized ? v / 255.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        int16_t v;
+        std::memcpy(&v, p + 2 * c, 2);
+        return normalized ? std::max(v / 32767.0, -1.0) : v;
       }
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
         uint16_t v;
@@ -116,8 +136,11 @@ public:
 private:
   [[noreturn]] void fail(const std::string& what) const { throw SceneError(origin_ + ": " + what); }
 
+  // Integer components: whether the accessor must say normalized (NORMAL, TANGENT), must not
+  // (indices), or either (POSITION, TEXCOORD_0: KHR_mesh_quantization).
+  enum class Integers { normalized, plain, either };
   AccessorData accessor(int index, const std::string& where, std::initializer_list<int> types,
-                        std::initializer_list<int> component_types);
+                        std::initializer_list<int> component_types, Integers integers = Integers::either);
   void resolve_materials();
   // The product colour of cloth material `index`: its baseColorFactor's RGB when the file gives
   // one (absent, glTF's default white is no colour of the product's: the fabric's own stays).
@@ -154,18 +177,33 @@ private:
 };
 
 AccessorData Importer::accessor(int index, const std::string& where, std::initializer_list<int> types,
-                                std::initializer_list<int> component_types) {
+                                std::initializer_list<int> component_types, Integers integers) {
   if (index < 0 || static_cast<size_t>(index) >= m_.accessors.size())
     fail(where + ": accessor " + std::to_string(index) + " does not exist (" + std::to_string(m_.accessors.size()) +
          " accessors)");
   const tinygltf::Accessor& a = m_.accessors[index];
   const std::string at = where + " (accessor " + std::to_string(index) + ")";
+  auto listed = [](auto names, auto list) {
+    std::string out;
+    for (int x : list) out += (out.empty() ? "" : ", ") + names(x);
+    return out;
+  };
   if (std::find(types.begin(), types.end(), a.type) == types.end())
-    fail(at + ": wrong element type " + std::to_string(a.type));
+    fail(at + ": wrong element type " + gltf_element_type_name(a.type) + " (expected " +
+         listed(gltf_element_type_name, types) + ")");
   if (std::find(component_types.begin(), component_types.end(), a.componentType) == component_types.end())
-    fail(at + ": wrong component type " + std::to_string(a.componentType));
+    fail(at + ": wrong component type " + gltf_component_type_name(a.componentType) + " (expected " +
+         listed(gltf_component_type_name, component_types) + ")");
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && integers == Integers::normalized && !a.normalized)
+    fail(at + ": component type " + gltf_component_type_name(a.componentType) +
+         " without normalized (integers here must be normalized, KHR_mesh_quantization)");
+  if (integers == Integers::plain && a.normalized)
+    fail(at + ": component type " + gltf_component_type_name(a.componentType) + " marked normalized (indices never are)");
   if (a.sparse.isSparse) fail(at + ": sparse accessors are not supported");
-  if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= m_.bufferViews.size())
+  if (a.bufferView < 0)
+    fail(at + ": has no buffer view (its data would come from an extension; is the file compressed with one Weft "
+              "does not read?)");
+  if (static_cast<size_t>(a.bufferView) >= m_.bufferViews.size())
     fail(at + ": buffer view " + std::to_string(a.bufferView) + " does not exist");
   const tinygltf::BufferView& v = m_.bufferViews[a.bufferView];
   if (v.buffer < 0 || static_cast<size_t>(v.buffer) >= m_.buffers.size())
@@ -532,7 +570,8 @@ std::vector<std::pair<int, glm::dmat4>> Importer::mesh_instances() {
 
 void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world, const std::string& where) {
   if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES)
-    fail(where + ": mode " + std::to_string(p.mode) + " is not triangles (only mode 4 is supported)");
+    fail(where + ": mode " + std::to_string(p.mode) + " (" + gltf_mode_name(p.mode) +
+         ") is not TRIANGLES (4), the only mode Weft reads");
   if (p.material < -1 || p.material >= static_cast<int>(m_.materials.size()))
     fail(where + ": material " + std::to_string(p.material) + " does not exist");
   map_variants(p, where);
@@ -545,8 +584,12 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
   const int pos_i = attribute("POSITION"), nrm_i = attribute("NORMAL"), uv_i = attribute("TEXCOORD_0"),
             tan_i = attribute("TANGENT");
   if (pos_i < 0) fail(where + ": no POSITION attribute");
-  constexpr int F = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  const AccessorData pos = accessor(pos_i, where + ".POSITION", {TINYGLTF_TYPE_VEC3}, {F});
+  constexpr int F = TINYGLTF_COMPONENT_TYPE_FLOAT, B = TINYGLTF_COMPONENT_TYPE_BYTE,
+                UB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, S = TINYGLTF_COMPONENT_TYPE_SHORT,
+                US = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  // Integer positions and UVs (KHR_mesh_quantization) are read as numbers; the node transform
+  // that the quantizer wrote scales them back.
+  const AccessorData pos = accessor(pos_i, where + ".POSITION", {TINYGLTF_TYPE_VEC3}, {F, B, UB, S, US});
   const size_t nv = pos.count;
   if (nv > kGltfMaxVertices - vertices_)
     fail("more than " + std::to_string(kGltfMaxVertices) + " vertices in all (the importer's limit)");
@@ -559,21 +602,20 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
       fail(where + "." + name + ": " + std::to_string(a.count) + " elements for " + std::to_string(nv) + " positions");
   };
   if (nrm_i >= 0) {
-    const AccessorData a = accessor(nrm_i, where + ".NORMAL", {TINYGLTF_TYPE_VEC3}, {F});
+    const AccessorData a = accessor(nrm_i, where + ".NORMAL", {TINYGLTF_TYPE_VEC3}, {F, B, S}, Integers::normalized);
     same_count(a, "NORMAL");
     mesh.normals.resize(nv);
     for (size_t v = 0; v < nv; ++v) mesh.normals[v] = {a.component(v, 0), a.component(v, 1), a.component(v, 2)};
   }
   if (uv_i >= 0) {
-    const AccessorData a = accessor(uv_i, where + ".TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
-                                    {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    const AccessorData a = accessor(uv_i, where + ".TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {F, B, UB, S, US});
     same_count(a, "TEXCOORD_0");
     mesh.uvs.resize(nv);
     for (size_t v = 0; v < nv; ++v) mesh.uvs[v] = {a.component(v, 0), a.component(v, 1)};
   }
   std::vector<glm::dvec3> tangents;
   if (tan_i >= 0) {
-    const AccessorData a = accessor(tan_i, where + ".TANGENT", {TINYGLTF_TYPE_VEC4}, {F});
+    const AccessorData a = accessor(tan_i, where + ".TANGENT", {TINYGLTF_TYPE_VEC4}, {F, B, S}, Integers::normalized);
     same_count(a, "TANGENT");
     tangents.resize(nv);
     for (size_t v = 0; v < nv; ++v) {
@@ -588,7 +630,8 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
   if (p.indices >= 0) {
     const AccessorData a = accessor(p.indices, where + ".indices", {TINYGLTF_TYPE_SCALAR},
                                     {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                                    Integers::plain);
     if (a.count % 3 != 0) fail(where + ".indices: " + std::to_string(a.count) + " indices are not whole triangles");
     if (a.count / 3 > kGltfMaxTriangles - triangles_)
       fail("more than " + std::to_string(kGltfMaxTriangles) + " triangles in all (the importer's limit)");
@@ -780,9 +823,10 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
   const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   bool ok = false;
   try {
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                              static_cast<unsigned int>(bytes.size()), base_dir.string())
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+    const std::string loadable = loadable_by_tinygltf(bytes);
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(loadable.data()),
+                                              static_cast<unsigned int>(loadable.size()), base_dir.string())
+                : loader.LoadASCIIFromString(&model, &err, &warn, loadable.data(), static_cast<unsigned int>(loadable.size()),
                                              base_dir.string());
   } catch (const std::exception& e) {
     ok = false;
@@ -793,15 +837,19 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
     std::replace(err.begin(), err.end(), '\n', ';');
     throw SceneError(origin + ": not a usable glTF 2.0 file (" + (err.empty() ? std::string("no reason given") : err) + ")");
   }
-  // No extension is read yet: a required one is refused by name (its data would read as garbage,
-  // e.g. a Draco mesh's missing buffer views), an optional one is a remark for the log.
+  // A required extension Weft does not read is refused by name (its data would read as garbage),
+  // an optional one is a remark for the log.
+  const std::set<std::string> read = {kTextureTransform,          kVariants,           kDracoCompression,
+                                      kMeshoptCompression,        kKhrMeshoptCompression, kMeshQuantization};
   for (const std::string& e : model.extensionsRequired)
-    if (e != kTextureTransform)
+    if (!read.count(e))
       throw SceneError(origin + ": requires the glTF extension " + e +
-                     ", which Weft cannot read (export the file without it, e.g. without mesh compression)");
+                     ", which Weft cannot read (export the file without it)");
   std::vector<std::string> remarks;
   for (const std::string& e : model.extensionsUsed)
-    if (e != kVariants && e != kTextureTransform) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
+    if (!read.count(e)) remarks.push_back("uses the glTF extension " + e + ", which Weft ignores");
+  decode_meshopt_buffer_views(model, origin);
+  decode_draco_primitives(model, origin);
   Scene s = Importer(model, origin, base_dir, options).run();
   for (const std::string& r : remarks) s.warnings.push_back(origin + ": " + r);
   // tinygltf's warnings, one per line, for the log: what it let through is worth a look.
