@@ -71,11 +71,18 @@ void decode_primitive(tinygltf::Model& m, tinygltf::Primitive& p, const std::str
   draco::DecoderBuffer encoded;
   encoded.Init(reinterpret_cast<const char*>(source.data() + view.byteOffset), view.byteLength);
   draco::Decoder decoder;
-  auto decoded = decoder.DecodeMeshFromBuffer(&encoded);
-  if (!decoded.ok() || !decoded.value())
-    fail("the Draco data in buffer view " + std::to_string(view_index) + " does not decode (" +
-         (decoded.ok() ? std::string("no mesh") : decoded.status().error_msg_string()) + ")");
-  const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+  std::unique_ptr<draco::Mesh> mesh;
+  std::string why = "no mesh";
+  try {  // a hostile header can ask libdraco for more memory than there is
+    auto decoded = decoder.DecodeMeshFromBuffer(&encoded);
+    if (decoded.ok())
+      mesh = std::move(decoded).value();
+    else
+      why = decoded.status().error_msg_string();
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  if (!mesh) fail("the Draco data in buffer view " + std::to_string(view_index) + " does not decode (" + why + ")");
   const uint32_t points = mesh->num_points(), faces = mesh->num_faces();
   if (points > kGltfMaxVertices || faces > kGltfMaxTriangles)
     fail(std::to_string(points) + " points and " + std::to_string(faces) + " triangles exceed the importer's limit");

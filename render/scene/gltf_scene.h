@@ -1,7 +1,8 @@
 #pragma once
 // glTF 2.0 import (.gltf and .glb, through tinygltf): a showroom scene from a model file.
 // Indexed or plain triangle primitives with POSITION, NORMAL, TEXCOORD_0 and TANGENT, node
-// hierarchies (TRS or matrix), several meshes and materials. glTF's +Y-up metres become Weft's
+// hierarchies (TRS or matrix), several meshes and materials; Draco, meshopt and quantized
+// geometry (gltf_draco.h, gltf_meshopt.h, KHR_mesh_quantization). glTF's +Y-up metres become Weft's
 // +Z-up frame: (x, y, z)_glTF → (x, −z, y). One scene object per material (its primitives merged).
 // Format notes: assets/scenes/README.md ("glTF scenes").
 #include <filesystem>

@@ -386,6 +386,25 @@ TEST(GltfCompressed, DracoEngineImportsWithItsDeclaredCountsAndBounds) {
   EXPECT_EQ(got_vertices, vertices);
   EXPECT_EQ(got_triangles + dropped, triangles);
 
+  // The same engine uncompressed (assimp's .glb of it): the same box in Weft's frame, within a
+  // step of 10 bits over the whole engine.
+  const fs::path plain_engine = kDracoEngine.parent_path().parent_path() / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  if (fs::exists(plain_engine)) {
+    auto bounds = [](const Scene& scene) {
+      glm::dvec3 lo(1e300), hi(-1e300);
+      for (const auto& o : scene.objects)
+        for (const auto& p : o.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+      return std::pair{lo, hi};
+    };
+    const auto [draco_lo, draco_hi] = bounds(s);
+    const auto [plain_lo, plain_hi] = bounds(load_gltf_scene(plain_engine, GltfImportOptions{}));
+    const double step = glm::length(plain_hi - plain_lo) / 1024.0;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(draco_lo[k], plain_lo[k], step) << "axis " << k;
+      EXPECT_NEAR(draco_hi[k], plain_hi[k], step) << "axis " << k;
+    }
+  }
+
   // Per primitive, before any transform: the decoded positions' box is the accessor's min/max
   // within Draco's quantization (the exporter's box may round outward by a step).
   tinygltf::Model model;
