@@ -12,19 +12,9 @@
 #include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk.h"
 #include "kiosk/kiosk_log.h"
+#include "kiosk/kiosk_status.h"
 
 namespace weft {
-namespace {
-
-std::string utc(std::time_t t) {
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-}  // namespace
 
 DisplaySettings Kiosk::display_settings() const {
   DisplaySettings s;

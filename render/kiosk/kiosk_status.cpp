@@ -10,13 +10,6 @@ using json = nlohmann::ordered_json;
 
 constexpr int kVersion = 1;
 
-std::string utc(std::time_t t) {
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 std::time_t from_utc(const std::string& text, const char* field) {
   std::tm tm{};
@@ -61,6 +54,14 @@ std::string duration(double s) {
 }
 
 }  // namespace
+
+std::string utc(std::time_t t) {
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
 
 std::string status_json(const KioskStatus& s) {
   json j;

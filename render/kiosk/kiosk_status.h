@@ -42,6 +42,8 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// A time as the status file and the journal write it: ISO 8601 in UTC ("2026-12-04T05:07:37Z").
+std::string utc(std::time_t t);
 std::string status_json(const KioskStatus& s);
 KioskStatus parse_status_json(const std::string& text);  // throws StatusFormatError saying what is wrong
 // For a person: one "name: value" line each; `now` gives the status's age.

@@ -1,5 +1,5 @@
 // The kiosk's frame settings are checked before anything starts, each refusal naming its flag:
-// the per-stage profile's clock, the per-vertex passes' reuse, the label's settings.
+// the per-stage profile's clock, the per-vertex passes' reuse, the label's settings, the screen.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -46,4 +46,16 @@ TEST(KioskConfig, LabelSettingsNameTheirFlag) {
   EXPECT_EQ(error([](KioskConfig& c) { c.label_size = 1000; }).rfind("--label-size:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = -1; }).rfind("--label-idle:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.label_idle_s = std::numeric_limits<double>::quiet_NaN(); }).rfind("--label-idle:", 0), 0u);
+}
+
+TEST(ScreenSettings, EachRefusalNamesItsFlag) {
+  for (int deg : {0, 90, 180, 270}) EXPECT_EQ(error([&](KioskConfig& c) { c.rotation = deg; }), "") << deg;
+  for (int deg : {-90, 45, 360}) EXPECT_EQ(error([&](KioskConfig& c) { c.rotation = deg; }).rfind("--rotation:", 0), 0u) << deg;
+  for (const char* m : {"", "preferred", "1920x1080", "1080x1920@60"}) EXPECT_EQ(error([&](KioskConfig& c) { c.mode = m; }), "") << m;
+  EXPECT_EQ(error([](KioskConfig& c) { c.mode = "1920x1080p"; }).rfind("--mode: expected WIDTHxHEIGHT", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.connector = "HDMI-A-1"; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.connector = "HDMI A 1"; }).rfind("--connector:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = 0; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = -1; }).rfind("--display-wait:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = std::numeric_limits<double>::quiet_NaN(); }).rfind("--display-wait:", 0), 0u);
 }

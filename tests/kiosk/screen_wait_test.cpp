@@ -1,12 +1,8 @@
 // When a kiosk without a screen says so (kiosk/screen_wait.h), on a clock driven by the test:
 // once after --display-wait seconds with none, from boot or from an unplug; again when one is
-// back; never with a wait of 0. And the screen flags' checks, each refusal naming its flag.
+// back; never with a wait of 0.
 #include <gtest/gtest.h>
 
-#include <limits>
-
-#include "kiosk/kiosk_config.h"
-#include "kiosk/kiosk_config_error.h"
 #include "kiosk/screen_wait.h"
 
 using namespace weft;
@@ -61,31 +57,4 @@ TEST(ScreenWait, ZeroNeverReports) {
   ScreenWait w(0, t0, kBootUtc);
   for (double s = 0; s < 100000; s += 997) EXPECT_EQ(w.update(false, at(s), kBootUtc + long(s)), Report::none);
   EXPECT_FALSE(w.missing());
-}
-
-namespace {
-template <class Edit>
-std::string error(Edit edit) {
-  KioskConfig c;
-  c.bundle = "x.weft";
-  edit(c);
-  try {
-    check_kiosk_config(c);
-  } catch (const KioskConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
-}  // namespace
-
-TEST(ScreenSettings, EachRefusalNamesItsFlag) {
-  for (int deg : {0, 90, 180, 270}) EXPECT_EQ(error([&](KioskConfig& c) { c.rotation = deg; }), "") << deg;
-  for (int deg : {-90, 45, 360}) EXPECT_EQ(error([&](KioskConfig& c) { c.rotation = deg; }).rfind("--rotation:", 0), 0u) << deg;
-  for (const char* m : {"", "preferred", "1920x1080", "1080x1920@60"}) EXPECT_EQ(error([&](KioskConfig& c) { c.mode = m; }), "") << m;
-  EXPECT_EQ(error([](KioskConfig& c) { c.mode = "1920x1080p"; }).rfind("--mode: expected WIDTHxHEIGHT", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.connector = "HDMI-A-1"; }), "");
-  EXPECT_EQ(error([](KioskConfig& c) { c.connector = "HDMI A 1"; }).rfind("--connector:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = 0; }), "");
-  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = -1; }).rfind("--display-wait:", 0), 0u);
-  EXPECT_EQ(error([](KioskConfig& c) { c.display_wait_s = std::numeric_limits<double>::quiet_NaN(); }).rfind("--display-wait:", 0), 0u);
 }

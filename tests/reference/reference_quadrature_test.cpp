@@ -126,7 +126,7 @@ TEST_P(ReferenceVsAdaptive, AgreeWithinOnePercent) {
       ASSERT_TRUE(ref.converged);
       auto point = bsdf.at(SurfaceFrame{});
       AdaptiveHemisphere adaptive(point, wo, sgs);
-      const dvec3 independent = adaptive.integrate(5e-4);
+      const dvec3 independent = adaptive.integrate(2e-3);  // a bound 5× inside the 1 % asserted
       worst = std::max(worst, relative_difference(ref.radiance, independent));
       EXPECT_LT(relative_difference(ref.radiance, independent), 0.01)
           << GetParam() << " view " << view_theta << "° λ " << lambda << ": reference (" << ref.radiance.r << ", "

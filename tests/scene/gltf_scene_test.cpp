@@ -12,6 +12,7 @@
 
 #include "scene/gltf_scene.h"
 #include "scene/scene.h"
+#include "support/base64_text.h"
 
 using namespace weft;
 using glm::dvec3;
@@ -78,20 +79,7 @@ Counts imported_counts(const Scene& s, size_t* dropped = nullptr) {
   return c;
 }
 
-std::string base64(const std::string& bytes) {
-  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    uint32_t v = uint8_t(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) v |= uint8_t(bytes[i + 1]) << 8;
-    if (i + 2 < bytes.size()) v |= uint8_t(bytes[i + 2]);
-    out += k[(v >> 18) & 63];
-    out += k[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? k[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? k[v & 63] : '=';
-  }
-  return out;
-}
+using test::base64;
 
 // A one-buffer glTF built attribute by attribute (floats, or uint16 indices).
 struct GltfBuilder {

@@ -16,7 +16,8 @@ namespace {
 void leading_singular(const Eigen::MatrixXf& x, int rank, int exact_limit, Eigen::MatrixXf& u,
                       Eigen::VectorXd& s) {
   if (std::min(x.rows(), x.cols()) <= exact_limit) {
-    Eigen::BDCSVD<Eigen::MatrixXf> svd(x, Eigen::ComputeThinU);
+    // Jacobi (after a QR to the small side) rather than BDCSVD: as exact, and far cheaper to compile.
+    Eigen::JacobiSVD<Eigen::MatrixXf> svd(x, Eigen::ComputeThinU);
     u = svd.matrixU().leftCols(rank);
     s = svd.singularValues().head(rank).cast<double>();
     return;
@@ -37,7 +38,7 @@ void leading_singular(const Eigen::MatrixXf& x, int rank, int exact_limit, Eigen
     q = orthonormal(x * w);
   }
   const Eigen::MatrixXf b = q.transpose() * x;
-  Eigen::BDCSVD<Eigen::MatrixXf> svd(b, Eigen::ComputeThinU);
+  Eigen::JacobiSVD<Eigen::MatrixXf> svd(b, Eigen::ComputeThinU);
   u = q * svd.matrixU().leftCols(rank);
   s = svd.singularValues().head(rank).cast<double>();
 }
