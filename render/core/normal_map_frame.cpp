@@ -1,13 +1,17 @@
 #include "core/normal_map_frame.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace weft {
 
 dvec3 tangent_space_normal(dvec3 texel, double scale) {
   dvec3 t = 2.0 * texel - 1.0;
-  t.x *= scale;
-  t.y *= scale;
+  auto flat_codes_to_zero = [](double x) {
+    return std::copysign(std::max(std::abs(x) - kNormalMapHalfStep, 0.0) / (1.0 - kNormalMapHalfStep), x);
+  };
+  t.x = scale * flat_codes_to_zero(t.x);
+  t.y = scale * flat_codes_to_zero(t.y);
   t.z = std::max(t.z, kMinNormalMapZ);
   return glm::normalize(t);
 }

@@ -12,7 +12,10 @@ namespace weft {
 // A normal map texel (its RGB in [0, 1], stored linearly) as a unit tangent-space normal: glTF's
 // (2c − 1) with x and y multiplied by `scale` (normalTexture.scale), renormalized (a mip level's
 // average of unit normals is shorter than 1), z kept at least kMinNormalMapZ so n' never leaves
-// the hemisphere of n.
+// the hemisphere of n. An 8-bit map cannot hold 0.5: its flat codes 127 and 128 read ±1/255, a
+// tilt a sharp highlight shows, so x and y are moved towards 0 by that half step (continuously,
+// ±1 kept) and a painted flat map is flat.
+inline constexpr double kNormalMapHalfStep = 1.0 / 255.0;
 dvec3 tangent_space_normal(dvec3 texel, double scale);
 inline constexpr double kMinNormalMapZ = 1e-3;
 

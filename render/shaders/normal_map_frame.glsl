@@ -3,7 +3,8 @@
 // core/normal_map_frame.h (tangent_space_normal, normal_mapped_frame).
 vec3 tangent_space_normal(vec3 texel, float scale) {
   vec3 t = 2.0 * texel - 1.0;
-  t.xy *= scale;
+  // 8-bit flat codes (127, 128) read as 0: core/normal_map_frame.h.
+  t.xy = scale * sign(t.xy) * max(abs(t.xy) - 1.0 / 255.0, 0.0) / (1.0 - 1.0 / 255.0);
   t.z = max(t.z, 1e-3);
   return normalize(t);
 }

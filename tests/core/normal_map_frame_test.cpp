@@ -33,8 +33,10 @@ TEST(NormalMapFrame, FlatTexelKeepsTheFrame) {
 TEST(NormalMapFrame, TangentSpaceNormalDecodesScalesAndRenormalizes) {
   expect_near(tangent_space_normal(dvec3(1.0, 0.5, 0.5), 1.0), dvec3(1, 0, kMinNormalMapZ) / std::hypot(1.0, kMinNormalMapZ),
               1e-12, "x, clamped z");
-  const dvec3 t = tangent_space_normal(dvec3(0.6, 0.4, 0.9), 2.0);
-  expect_near(t, glm::normalize(dvec3(0.4, -0.4, 0.8)), 1e-12, "scaled");
+  const double h = kNormalMapHalfStep, x = (0.2 - h) / (1.0 - h);
+  expect_near(tangent_space_normal(dvec3(0.6, 0.4, 0.9), 2.0), glm::normalize(dvec3(2 * x, -2 * x, 0.8)), 1e-12, "scaled");
+  // An 8-bit map's flat codes, 127 and 128, are flat.
+  for (double c : {127.0, 128.0}) expect_near(tangent_space_normal(dvec3(c / 255, c / 255, 1.0), 1.0), dvec3(0, 0, 1), 1e-12, "flat");
   // A mip level's average of two opposite tilts is short; it reads as the flat normal.
   expect_near(tangent_space_normal(dvec3(0.5, 0.5, 0.8), 1.0), dvec3(0, 0, 1), 1e-12, "short");
 }
