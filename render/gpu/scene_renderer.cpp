@@ -59,15 +59,26 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->fabric = object_fabric(o, fabrics[cloth]);
       obj->handle = cloth_->add_object(i, o.mesh, obj->fabric);
-      if (o.textured()) {
-        const ThreadMaps maps = thread_maps_of(o, [&](const TextureImage& image) {
-          auto& t = textures_[&image];
-          if (!t) t = std::make_unique<ThreadMapTexture>(image);
-          return t->id();
-        });
-        if (!cloth_->set_thread_maps(obj->handle, maps))
+      if (o.textured() || o.normal_map) {
+        const ThreadMaps maps = thread_maps_of(
+            o,
+            [&](const TextureImage& image) {
+              auto& t = textures_[&image];
+              if (!t) t = std::make_unique<ThreadMapTexture>(image);
+              return t->id();
+            },
+            [&](const TextureImage& image) {
+              auto& t = normal_textures_[&image];
+              if (!t) t = std::make_unique<NormalMapTexture>(image);
+              return t->id();
+            });
+        const bool drawn = cloth_->set_thread_maps(obj->handle, maps);
+        if (!drawn && o.textured())
           warnings_.push_back("method " + method.name + " draws cloth object '" + o.name +
                               "' without its texture (the iwasaki rungs draw it)");
+        if (o.normal_map && !(drawn && cloth_->draws_normal_maps()))
+          warnings_.push_back("method " + method.name + " ignores the normal map of cloth object '" + o.name +
+                              "' (the per-pixel iwasaki rungs draw it)");
       }
       ++cloth;
     } else {

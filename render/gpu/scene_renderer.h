@@ -99,6 +99,7 @@ private:
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
   bool weave_on_ = false;
   std::map<const TextureImage*, std::unique_ptr<ThreadMapTexture>> textures_;  // each image once
+  std::map<const TextureImage*, std::unique_ptr<NormalMapTexture>> normal_textures_;  // linear, each once
   std::vector<std::string> warnings_;
   Backdrop backdrop_ = Backdrop::measure;
 };

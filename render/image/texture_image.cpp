@@ -107,6 +107,11 @@ glm::dvec3 TextureImage::linear(int x, int y) const {
   return {srgb_to_linear(t[0] / 255.0), srgb_to_linear(t[1] / 255.0), srgb_to_linear(t[2] / 255.0)};
 }
 
+glm::dvec3 TextureImage::stored(int x, int y) const {
+  const std::uint8_t* t = rgba.data() + (size_t(y) * size_t(width) + size_t(x)) * 4;
+  return glm::dvec3(t[0], t[1], t[2]) / 255.0;
+}
+
 TextureImage decode_texture(std::span<const std::uint8_t> bytes, const std::string& what) {
   if (is_png(bytes)) return decode_png(bytes, what);
   if (is_jpeg(bytes)) return decode_jpeg(bytes, what);
@@ -132,8 +137,11 @@ std::vector<std::uint8_t> encode_png(const TextureImage& image) {
 
 double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
-glm::dvec3 sample_texture(const TextureImage& image, glm::dvec2 uv) {
-  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return image.linear(0, 0);
+namespace {
+// Bilinear between texel centres, repeating in both directions; `texel(x, y)` gives one texel.
+template <class Texel>
+glm::dvec3 bilinear(const TextureImage& image, glm::dvec2 uv, Texel&& texel) {
+  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return texel(0, 0);
   // Texel centres at (i + ½)/size, as GL_LINEAR with GL_REPEAT places them.
   const double x = uv.x * image.width - 0.5, y = uv.y * image.height - 0.5;
   const double fx = std::floor(x), fy = std::floor(y);
@@ -144,8 +152,16 @@ glm::dvec3 sample_texture(const TextureImage& image, glm::dvec2 uv) {
   };
   const int x0 = wrap(fx, image.width), x1 = wrap(fx + 1, image.width);
   const int y0 = wrap(fy, image.height), y1 = wrap(fy + 1, image.height);
-  return (1 - wy) * ((1 - wx) * image.linear(x0, y0) + wx * image.linear(x1, y0)) +
-         wy * ((1 - wx) * image.linear(x0, y1) + wx * image.linear(x1, y1));
+  return (1 - wy) * ((1 - wx) * texel(x0, y0) + wx * texel(x1, y0)) + wy * ((1 - wx) * texel(x0, y1) + wx * texel(x1, y1));
+}
+}  // namespace
+
+glm::dvec3 sample_texture(const TextureImage& image, glm::dvec2 uv) {
+  return bilinear(image, uv, [&](int x, int y) { return image.linear(x, y); });
+}
+
+glm::dvec3 sample_stored_texture(const TextureImage& image, glm::dvec2 uv) {
+  return bilinear(image, uv, [&](int x, int y) { return image.stored(x, y); });
 }
 
 }  // namespace weft

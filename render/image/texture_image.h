@@ -26,6 +26,7 @@ struct TextureImage {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // sRGB-encoded RGBA, row 0 the image's top row (uv v = 0)
   glm::dvec3 linear(int x, int y) const;  // texel (x, y) in linear RGB (alpha ignored)
+  glm::dvec3 stored(int x, int y) const;  // texel (x, y) as stored, in [0, 1]: a normal map's values
 };
 
 // A PNG or JPEG file's bytes (told apart by their signatures) as RGBA. Throws TextureError
@@ -41,5 +42,8 @@ double srgb_to_linear(double encoded);
 // The texture at `uv` (glTF's convention: (0, 0) the top-left corner of the image, v downwards),
 // bilinear between texel centres in linear RGB, repeating in both directions.
 glm::dvec3 sample_texture(const TextureImage& image, glm::dvec2 uv);
+// The same lookup of the stored values, undecoded: what a linear (GL_RGBA8) sampler returns, as a
+// normal map is read.
+glm::dvec3 sample_stored_texture(const TextureImage& image, glm::dvec2 uv);
 
 }  // namespace weft

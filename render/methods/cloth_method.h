@@ -38,6 +38,9 @@ public:
     (void)handle, (void)maps;
     return false;
   }
+  // Whether the method applies a normal map given with set_thread_maps (per pixel); false: it
+  // draws the object with its surface's normals.
+  virtual bool draws_normal_maps() const { return false; }
   // A knob edit: new thread albedo / gloss, no re-bake. Throws GpuError (and changes nothing)
   // for a fabric the method cannot show.
   virtual void set_fabric(size_t handle, const Fabric& fabric) = 0;

@@ -19,6 +19,19 @@ ThreadMapTexture::ThreadMapTexture(const TextureImage& image) {
   check_gl("uploading a cloth texture");
 }
 
+NormalMapTexture::NormalMapTexture(const TextureImage& image) {
+  glBindTexture(GL_TEXTURE_2D, texture_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  check_gl("uploading a cloth normal map");
+}
+
 WhiteTexture::WhiteTexture() {
   const unsigned char white[4] = {255, 255, 255, 255};
   glBindTexture(GL_TEXTURE_2D, texture_.id());
@@ -37,6 +50,12 @@ void bind_thread_maps(const GlProgram& program, const ThreadMaps& maps, GLuint w
     glUniform1i(program.uniform(samplers[j]), first_unit + j);
     glUniformMatrix3fv(program.uniform(transforms[j]), 1, GL_FALSE, glm::value_ptr(maps.uv[j]));
   }
+  glUniform1i(program.uniform("u_normal_mapped"), maps.normal_texture ? 1 : 0);
+  glActiveTexture(GLenum(GL_TEXTURE0 + first_unit + 2));
+  glBindTexture(GL_TEXTURE_2D, maps.normal_texture ? maps.normal_texture : white);
+  glUniform1i(program.uniform("u_normal_map"), first_unit + 2);
+  glUniformMatrix3fv(program.uniform("u_normal_uv"), 1, GL_FALSE, glm::value_ptr(maps.normal_uv));
+  glUniform1f(program.uniform("u_normal_scale"), maps.normal_scale);
 }
 
 }  // namespace weft::gpu

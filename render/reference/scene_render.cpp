@@ -10,6 +10,7 @@
 
 #include <omp.h>
 
+#include "core/normal_map_frame.h"
 #include "methods/thin/thin.h"
 #include "reference/sg_quadrature.h"
 #include "reference/thin_quadrature.h"
@@ -78,6 +79,9 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   const ClothBsdf* bsdf = bsdfs_[level][hit.object].get();
   SurfaceFrame frame;
   if (bsdf) frame = SurfaceFrame::from_normal_warp(s.normal, s.warp);
+  // A normal map turns the frame at this point, as the per-pixel GPU rungs do (on the side facing
+  // the viewer); the geometric surface still blocks what lies below it.
+  if (bsdf && obj.normal_map) frame = normal_mapped_frame(frame, normal_map_tangent(obj, s.uv));
   // The resolved weave: the thread sample at this point of the repeat; a gap reflects nothing.
   int thread = -1;
   double tilt = 0.0;

@@ -192,6 +192,25 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
             o.thread_maps[t] = tm;
           }
         }
+        if (jo.contains("normal_map")) {
+          const json& m = jo.at("normal_map");
+          const std::string w = "object '" + o.name + "': normal_map";
+          const long index = m.at("texture").get<long>();
+          if (index < 0 || size_t(index) >= textures.size())
+            throw bad(r, S, w + ": texture " + std::to_string(index) + " is not among the " +
+                                std::to_string(textures.size()) + " textures");
+          NormalMap nm;
+          nm.map.image = textures[size_t(index)];
+          nm.map.name = texture_names[size_t(index)];
+          nm.map.transform.offset = {m.at("offset").at(0).get<double>(), m.at("offset").at(1).get<double>()};
+          nm.map.transform.scale = {m.at("scale").at(0).get<double>(), m.at("scale").at(1).get<double>()};
+          nm.map.transform.rotation = m.at("rotation").get<double>();
+          nm.scale = m.at("normal_scale").get<double>();
+          if (const std::string why = texture_transform_problem(nm.map.transform); !why.empty())
+            throw bad(r, S, w + ": " + why);
+          if (!std::isfinite(nm.scale)) throw bad(r, S, w + ": normal_scale is not finite");
+          o.normal_map = nm;
+        }
       } else if (material == "lambertian") {
         o.albedo = read_vec3(r, S, jo.at("albedo"));
       } else {
@@ -204,7 +223,7 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
       if (r.has(scene_section::mesh(i, "uvs"))) m.uvs = read_rows<glm::dvec2>(r, scene_section::mesh(i, "uvs"), 2, n);
       if (r.has(scene_section::mesh(i, "warps")))
         m.warps = read_rows<glm::dvec3>(r, scene_section::mesh(i, "warps"), 3, n);
-      if (o.textured() && m.uvs.empty())
+      if ((o.textured() || o.normal_map) && m.uvs.empty())
         throw bad(r, scene_section::mesh(i, "uvs"), "textured cloth object '" + o.name + "' has no UVs");
       if (o.material == Material::cloth && m.warps.empty())
         throw bad(r, scene_section::mesh(i, "warps"), "cloth object '" + o.name + "' has no warp directions");

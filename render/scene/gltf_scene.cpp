@@ -148,6 +148,8 @@ private:
   // Cloth material `index`'s textures (baseColorTexture on both threads, extras.weft.weft_texture
   // the weft's own); none when it has no baseColorTexture.
   std::array<std::optional<ThreadMap>, 2> cloth_maps(size_t index);
+  // Cloth material `index`'s normalTexture (with its scale), none when it has none.
+  std::optional<NormalMap> cloth_normal_map(size_t index);
   ThreadMap thread_map(const tinygltf::Value* info, int texture, int texcoord, const std::string& where);
   std::shared_ptr<const TextureImage> image(int index, const std::string& where);
   void read_variants();  // KHR_materials_variants: the file's list of variants
@@ -427,6 +429,17 @@ std::array<std::optional<ThreadMap>, 2> Importer::cloth_maps(size_t index) {
     out[1] = thread_map(transform, int(v.Get("index").GetNumberAsDouble()), texcoord, w);
   }
   return out;
+}
+
+std::optional<NormalMap> Importer::cloth_normal_map(size_t index) {
+  const tinygltf::Material& mat = m_.materials[index];
+  const tinygltf::NormalTextureInfo& info = mat.normalTexture;
+  if (info.index < 0) return std::nullopt;
+  const std::string at = "materials[" + std::to_string(index) + "] ('" + mat.name + "').normalTexture";
+  if (!std::isfinite(info.scale) || std::abs(info.scale) > 1e6) fail(at + ".scale: expected a finite number");
+  const auto ext = info.extensions.find(kTextureTransform);
+  return NormalMap{thread_map(ext == info.extensions.end() ? nullptr : &ext->second, info.index, info.texCoord, at),
+                   info.scale};
 }
 
 constexpr const char* kVariants = "KHR_materials_variants";
@@ -779,6 +792,9 @@ Scene Importer::run() {
       o.weave_repeats_per_uv = repeats_[i];
       if (i > 0) o.colour = cloth_colour(i - 1);
       if (i > 0) o.thread_maps = cloth_maps(i - 1);
+      if (i > 0) o.normal_map = cloth_normal_map(i - 1);
+      if (o.normal_map && o.mesh.uvs.empty())
+        fail(material_label(m_, i) + ": its normalTexture needs TEXCOORD_0 on every primitive, and one has none");
       if (o.textured() && o.mesh.uvs.empty())
         fail(material_label(m_, i) + ": its texture needs TEXCOORD_0 on every primitive, and one has none");
       o.display_name = display_names_[i];

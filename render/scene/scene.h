@@ -55,6 +55,13 @@ struct ThreadMap {
   std::string name;
   TextureTransform transform;
 };
+// A cloth's normal map (glTF normalTexture): tangent-space normals stored linearly (not sRGB), x and
+// y times `scale`, read through the map's transform. Applied per pixel as seed 002 does
+// (core/normal_map_frame.h: the threads' frame turned with the normal).
+struct NormalMap {
+  ThreadMap map;
+  double scale = 1.0;
+};
 // The most texture images a scene may hold (the bundle's scene section lists them).
 inline constexpr size_t kMaxSceneTextures = 64;
 
@@ -72,6 +79,7 @@ struct SceneObject {
   // baseColorTexture) is on both; extras.weft.weft_texture (or a scene's "weft_texture") gives
   // the weft its own.
   std::array<std::optional<ThreadMap>, 2> thread_maps;
+  std::optional<NormalMap> normal_map;  // cloth: none, the surface's own normals
   glm::dvec3 albedo{0.5};    // lambertian
   TriangleMesh mesh;
   MeshRepairReport repair;
@@ -82,6 +90,10 @@ struct SceneObject {
 // What thread j's albedo is multiplied by at mesh UV `uv`: the texel of its map (linear RGB,
 // sample_texture), or 1 without one.
 glm::dvec3 thread_tint(const SceneObject& o, int thread, glm::dvec2 uv);
+
+// The unit tangent-space normal of o's normal map at mesh UV `uv` (sample_stored_texture, then
+// tangent_space_normal), or (0, 0, 1) without one.
+glm::dvec3 normal_map_tangent(const SceneObject& o, glm::dvec2 uv);
 
 // The most weave repeats per UV unit a scene or glTF may give.
 inline constexpr double kMaxWeaveRepeatsPerUv = 1e6;

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/normal_map_frame.h"
+
 namespace weft {
 
 glm::dvec2 transformed_uv(const TextureTransform& t, glm::dvec2 uv) {
@@ -26,6 +28,12 @@ glm::dvec3 thread_tint(const SceneObject& o, int thread, glm::dvec2 uv) {
   const auto& m = o.thread_maps[thread];
   if (!m || !m->image) return glm::dvec3(1.0);
   return sample_texture(*m->image, transformed_uv(m->transform, uv));
+}
+
+glm::dvec3 normal_map_tangent(const SceneObject& o, glm::dvec2 uv) {
+  if (!o.normal_map || !o.normal_map->map.image) return glm::dvec3(0.0, 0.0, 1.0);
+  const ThreadMap& m = o.normal_map->map;
+  return tangent_space_normal(sample_stored_texture(*m.image, transformed_uv(m.transform, uv)), o.normal_map->scale);
 }
 
 std::string texture_transform_problem(const TextureTransform& t) {

@@ -49,8 +49,10 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
   // Each image once, in order of first use: its PNG in section texture/<n>.
   std::map<const TextureImage*, size_t> texture_index;
   json textures = json::array();
+  // A normal map's image is stored the same way; its object's "normal_map" says it is read linearly.
   for (const SceneObject& o : s.objects)
-    for (const auto& m : o.thread_maps) {
+    for (const auto& m : {o.thread_maps[0], o.thread_maps[1],
+                          o.normal_map ? std::optional<ThreadMap>(o.normal_map->map) : std::nullopt}) {
       if (!m || texture_index.count(m->image.get())) continue;
       const size_t n = texture_index.size();
       texture_index.emplace(m->image.get(), n);
@@ -78,6 +80,11 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
         json maps = json::array();
         for (const auto& m : o.thread_maps) maps.push_back(m ? thread_map_json(*m, texture_index.at(m->image.get())) : json());
         jo["thread_maps"] = maps;
+      }
+      if (o.normal_map) {
+        jo["normal_map"] = thread_map_json(o.normal_map->map, texture_index.at(o.normal_map->map.image.get()));
+        jo["normal_map"]["normal_scale"] = o.normal_map->scale;
+        jo["normal_map"]["colour_space"] = "linear";
       }
     } else {
       jo["material"] = "lambertian";

@@ -57,7 +57,8 @@ bool identical_lighting(const SgLighting& a, const SgLighting& b) {
 const std::vector<std::string_view>& iwasaki_glsl() {
   static const std::vector<std::string_view> parts = {"microcylinder.glsl", "erf.glsl",          "sg_lighting.glsl",
                                                       "hemisphere_grid.glsl", "facet_horizon.glsl", "iwasaki.glsl",
-                                                      "thread_maps.glsl"};
+                                                      "thread_maps.glsl", "normal_map_frame.glsl",
+                                                      "cloth_normal_map.glsl"};
   return parts;
 }
 
@@ -75,6 +76,7 @@ IwasakiShaders iwasaki_shaders() {
   s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "thread_maps.glsl", "iwasaki_vertex.frag"};
   s.facet_per_sg = true;
   s.thread_maps = true;
+  s.normal_maps = true;
   return s;
 }
 
@@ -253,6 +255,10 @@ bool IwasakiCloth::set_thread_maps(size_t handle, const ThreadMaps& maps) {
   if (!shaders_.thread_maps) return false;
   o.maps = maps;
   return true;
+}
+
+bool IwasakiCloth::draws_normal_maps() const {
+  return shaders_.thread_maps && shaders_.normal_maps && evaluation_ == Evaluation::per_pixel;
 }
 
 void IwasakiCloth::refresh_all() {

@@ -57,6 +57,9 @@ struct IwasakiShaders {
   bool facet_per_sg = false;
   // The programs read a textured cloth's thread maps (thread_maps.glsl) where the albedos apply.
   bool thread_maps = false;
+  // The per-pixel program turns the shading frame by a normal map (cloth_normal_map.glsl); the
+  // per-vertex passes cannot (a vertex has no texel) and draw the surface's normals.
+  bool normal_maps = false;
 };
 // iwasaki's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):
 // what every program on its data links before its own parts, and what the parity tests compile.
@@ -78,6 +81,7 @@ public:
   // the light per unit albedo (iwasaki_vertex_pass.frag), the draw applies the albedo.
   void set_fabric(size_t handle, const Fabric& fabric) override;
   bool set_thread_maps(size_t handle, const ThreadMaps& maps) override;
+  bool draws_normal_maps() const override;
   // draw() computes the object's per-(vertex, SG) visibility itself when the lighting's axes or
   // sharpnesses changed since it was last set; a kiosk computes it off the render thread instead:
   // prepare_lighting is safe on any thread (it reads only what add_object fixed), set_lighting
