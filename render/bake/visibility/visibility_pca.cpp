@@ -17,9 +17,9 @@ void leading_singular(const Eigen::MatrixXf& x, int rank, int exact_limit, Eigen
                       Eigen::VectorXd& s) {
   if (std::min(x.rows(), x.cols()) <= exact_limit) {
     // Jacobi (after a QR to the small side) rather than BDCSVD: as exact, and far cheaper to compile.
-    Eigen::JacobiSVD<Eigen::MatrixXf> svd(x, Eigen::ComputeThinU);
-    u = svd.matrixU().leftCols(rank);
-    s = svd.singularValues().head(rank).cast<double>();
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(x.cast<double>(), Eigen::ComputeThinU);
+    u = svd.matrixU().leftCols(rank).cast<float>();
+    s = svd.singularValues().head(rank);
     return;
   }
   const int probe = std::min<int>(rank + 16, std::min(x.rows(), x.cols()));
@@ -38,9 +38,11 @@ void leading_singular(const Eigen::MatrixXf& x, int rank, int exact_limit, Eigen
     q = orthonormal(x * w);
   }
   const Eigen::MatrixXf b = q.transpose() * x;
-  Eigen::JacobiSVD<Eigen::MatrixXf> svd(b, Eigen::ComputeThinU);
-  u = q * svd.matrixU().leftCols(rank);
-  s = svd.singularValues().head(rank).cast<double>();
+  // In double: the singular values choose the term count, and float Jacobi sweeps lose the last
+  // digits that the target error is measured against.
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(b.cast<double>(), Eigen::ComputeThinU);
+  u = q * svd.matrixU().leftCols(rank).cast<float>();
+  s = svd.singularValues().head(rank);
 }
 
 }  // namespace
