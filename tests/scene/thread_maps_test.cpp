@@ -111,6 +111,29 @@ TEST(GltfTextures, ReadsKhrTextureTransformAndAWeftsOwnMap) {
   for (const auto& w : s.warnings) EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
 }
 
+// normalTexture: its image, scale and transform on the cloth, the colour maps untouched; no
+// normal map gives the surface's own normal.
+TEST(GltfTextures, ReadsANormalTextureWithItsScaleAndTransform) {
+  if (!fs::exists(kBox)) GTEST_SKIP() << kBox << " absent";
+  const fs::path file = box_copy("normal", [](nlohmann::json& j) {
+    j["extensionsUsed"] = {"KHR_texture_transform"};
+    j["materials"][0]["normalTexture"] = {
+        {"index", 0}, {"scale", 0.5}, {"extensions", {{"KHR_texture_transform", {{"scale", {3.0, 3.0}}}}}}};
+  });
+  const Scene s = load_gltf_scene(file, linen());
+  const SceneObject& o = s.objects.at(0);
+  ASSERT_TRUE(o.normal_map);
+  EXPECT_DOUBLE_EQ(o.normal_map->scale, 0.5);
+  EXPECT_EQ(o.normal_map->map.transform, (TextureTransform{{0.0, 0.0}, {3.0, 3.0}, 0.0}));
+  ASSERT_TRUE(o.normal_map->map.image);
+  EXPECT_EQ(o.normal_map->map.image->width, 211);
+  EXPECT_EQ(o.thread_maps[0]->transform, TextureTransform{});  // the base colour keeps its own
+  const glm::dvec3 n = normal_map_tangent(o, {0.37, 0.61});
+  EXPECT_NEAR(glm::length(n), 1.0, 1e-9);
+  EXPECT_GT(n.z, 0.0);  // a tangent-space normal points out of the surface
+  EXPECT_EQ(normal_map_tangent(SceneObject{}, {0.37, 0.61}), glm::dvec3(0.0, 0.0, 1.0));
+}
+
 TEST(GltfTextures, RefusesBadImagesNamingTheFileMaterialAndImage) {
   if (!fs::exists(kBox)) GTEST_SKIP() << kBox << " absent";
   auto expect_refused = [](const fs::path& file, const std::vector<std::string>& parts) {
