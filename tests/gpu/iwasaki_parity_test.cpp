@@ -185,7 +185,7 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
     ASSERT_GE(*std::max_element(slots.begin(), slots.end()), 1) << "the lighting should hold two broad lobes";
     size_t closed = 0;
     for (std::uint32_t w : bits.words) closed += size_t(std::popcount(~w));
-    if (c.expect_visibility) EXPECT_GT(closed, 0u) << "no broad cell is blocked: the mask path went untested";
+    if (c.expect_visibility) { EXPECT_GT(closed, 0u) << "no broad cell is blocked: the mask path went untested"; }
   }
   // Textured: the GPU's filtered sRGB texels differ from the C++ side's exact bilinear ones by
   // about 1e−3 on llvmpipe (measured 0.9–1.3e−3 here, the same per pixel and per vertex, while the
@@ -315,8 +315,8 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
   std::printf("%s %s/%s: %d pixels compared, worst relative difference %.2e; visibility changes a pixel by up to %.1f %%\n",
               method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
-  if (c.expect_visibility) EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested";
-  if (quadrature) EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested";
+  if (c.expect_visibility) { EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested"; }
+  if (quadrature) { EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested"; }
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";
     EXPECT_GT(visibility_effect, 0.05) << "visibility hardly changes any compared pixel: the path went untested";

@@ -37,7 +37,7 @@ TEST(LabelText, CoverageIsAntiAliasedAndInsideThePadding) {
       const int c = img.at(x, y);
       full += c == 255;
       partial += c > 0 && c < 255;
-      if (x < 5 || y < 5 || x >= img.width - 5 || y >= img.height - 5) EXPECT_EQ(c, 0) << x << "," << y;
+      if (x < 5 || y < 5 || x >= img.width - 5 || y >= img.height - 5) { EXPECT_EQ(c, 0) << x << "," << y; }
     }
   EXPECT_GT(full, 100);
   EXPECT_GT(partial, 100);  // anti-aliased edges, not a 1-bit mask

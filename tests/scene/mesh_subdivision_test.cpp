@@ -90,7 +90,7 @@ void expect_refines(const TriangleMesh& m, const TriangleMesh& r, const std::str
   ASSERT_EQ(r.uvs.size(), m.uvs.empty() ? 0 : r.positions.size()) << what;
   ASSERT_EQ(r.warps.size(), m.warps.empty() ? 0 : r.positions.size()) << what;
   EXPECT_NEAR(area(r), area(m), 1e-12 * area(m)) << what;
-  if (!m.uvs.empty()) EXPECT_NEAR(uv_area(r), uv_area(m), 1e-12 * uv_area(m)) << what;
+  if (!m.uvs.empty()) { EXPECT_NEAR(uv_area(r), uv_area(m), 1e-12 * uv_area(m)) << what; }
   // Interior edges stay shared by exactly two triangles, boundary edges split into two each.
   EXPECT_EQ(boundary_edges(r), 2 * boundary_edges(m)) << what;
   int most = 0;  // triangles on one edge (2 on a manifold; more where a glTF joins more)
@@ -100,7 +100,7 @@ void expect_refines(const TriangleMesh& m, const TriangleMesh& r, const std::str
   for (size_t i = 0; i < m.positions.size(); ++i) {
     ASSERT_EQ(r.positions[i], m.positions[i]) << what;
     ASSERT_EQ(r.normals[i], m.normals[i]) << what;
-    if (!m.warps.empty()) ASSERT_EQ(r.warps[i], m.warps[i]) << what;
+    if (!m.warps.empty()) { ASSERT_EQ(r.warps[i], m.warps[i]) << what; }
   }
   // Each edge's new vertex: the first triangle using the edge names it (child 0 holds corner
   // a, ab, ca); its attributes are the edge's midpoint values.
@@ -117,7 +117,7 @@ void expect_refines(const TriangleMesh& m, const TriangleMesh& r, const std::str
       EXPECT_EQ(r.positions[v], 0.5 * (m.positions[a] + m.positions[b])) << what;
       const dvec3 n = glm::normalize(m.normals[a] + m.normals[b]);
       EXPECT_NEAR(glm::length(r.normals[v] - n), 0.0, 1e-15) << what;
-      if (!m.uvs.empty()) EXPECT_EQ(r.uvs[v], 0.5 * (m.uvs[a] + m.uvs[b])) << what;
+      if (!m.uvs.empty()) { EXPECT_EQ(r.uvs[v], 0.5 * (m.uvs[a] + m.uvs[b])) << what; }
       if (!m.warps.empty()) {
         const dvec3 w = 0.5 * (m.warps[a] + m.warps[b]);
         const dvec3 t = w - glm::dot(w, n) * n;
@@ -125,7 +125,7 @@ void expect_refines(const TriangleMesh& m, const TriangleMesh& r, const std::str
         EXPECT_NEAR(glm::dot(r.warps[v], r.normals[v]), 0.0, 1e-12) << what;
         // Where the mean warp lies along the normal (fixed tangents of an uv-less solid) any
         // tangent frames the vertex; elsewhere it is the mean made ⟂ n.
-        if (glm::length(t) > 1e-9) EXPECT_NEAR(glm::length(r.warps[v] - glm::normalize(t)), 0.0, 1e-12) << what;
+        if (glm::length(t) > 1e-9) { EXPECT_NEAR(glm::length(r.warps[v] - glm::normalize(t)), 0.0, 1e-12) << what; }
       }
     }
     // Winding: every child faces the parent's way.

@@ -63,7 +63,7 @@ TEST(TableTruncation, EveryOtherLevelIsTheBakeAtThoseLevels) {
   for (size_t l = 0; l < cut.lambdas.size(); ++l) EXPECT_NEAR(cut.lambdas[l], direct.lambdas[l], 1e-9 * direct.lambdas[l]);
   const int rows = full.xi_grid.size(), cols = full.wo_grid.size();
   for (size_t i = 0; i < cut.tables.size(); ++i)
-    if (direct.tables[i].norm > 0.0) EXPECT_LT(difference(direct.tables[i], cut.tables[i], rows, cols), 1e-3);
+    if (direct.tables[i].norm > 0.0) { EXPECT_LT(difference(direct.tables[i], cut.tables[i], rows, cols), 1e-3); }
   EXPECT_THROW(truncate_tables(full, 0.01, 3), std::invalid_argument);
 }
 
