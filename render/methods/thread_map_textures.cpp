@@ -6,30 +6,31 @@
 
 namespace weft::gpu {
 
-ThreadMapTexture::ThreadMapTexture(const TextureImage& image) {
-  glBindTexture(GL_TEXTURE_2D, texture_.id());
+namespace {
+
+// `image` into `texture` as `internal_format`, with its mipmaps, repeating.
+void upload_repeating(const GlTexture& texture, const TextureImage& image, GLenum internal_format, const char* what) {
+  glBindTexture(GL_TEXTURE_2D, texture.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.rgba.data());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  check_gl("uploading a cloth texture");
+  check_gl(what);
+}
+
+}  // namespace
+
+ThreadMapTexture::ThreadMapTexture(const TextureImage& image) {
+  upload_repeating(texture_, image, GL_SRGB8_ALPHA8, "uploading a cloth texture");
 }
 
 NormalMapTexture::NormalMapTexture(const TextureImage& image) {
-  glBindTexture(GL_TEXTURE_2D, texture_.id());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glGenerateMipmap(GL_TEXTURE_2D);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  check_gl("uploading a cloth normal map");
+  upload_repeating(texture_, image, GL_RGBA8, "uploading a cloth normal map");
 }
 
 WhiteTexture::WhiteTexture() {
