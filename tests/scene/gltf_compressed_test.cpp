@@ -31,6 +31,7 @@
 #include "scene/procedural_meshes.h"
 #include "scene/scene.h"
 #include "support/base64_text.h"
+#include "support/scene_refusal.h"
 
 using namespace weft;
 using json = nlohmann::json;
@@ -264,14 +265,7 @@ Scene parse(const std::string& bytes, const std::string& origin = "test.gltf") {
   return parse_gltf_scene(bytes, origin, fs::temp_directory_path(), GltfImportOptions{});
 }
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::refusal;
 
 struct Tolerance {
   double position, normal, uv;

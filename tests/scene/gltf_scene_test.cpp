@@ -13,6 +13,7 @@
 #include "scene/gltf_scene.h"
 #include "scene/scene.h"
 #include "support/base64_text.h"
+#include "support/scene_refusal.h"
 
 using namespace weft;
 using glm::dvec3;
@@ -132,14 +133,7 @@ void expect_near(const dvec3& a, const dvec3& b, double tol = 1e-9) {
   EXPECT_NEAR(a.z, b.z, tol);
 }
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::refusal;
 
 }  // namespace
 
