@@ -23,6 +23,11 @@ ProgramCloth::ProgramCloth(const std::vector<std::string_view>& fragment, const 
 
 size_t ProgramCloth::add_mesh(const TriangleMesh& mesh) {
   meshes_.emplace_back(mesh);
+  if (!mesh.uvs.empty()) {  // scene.vert's a_uv, for a method that reads textures
+    std::vector<glm::vec3> uv(mesh.uvs.size());
+    for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(float(mesh.uvs[i].x), float(mesh.uvs[i].y), 0.0f);
+    meshes_.back().add_attribute(6, uv);
+  }
   return meshes_.size() - 1;
 }
 

@@ -284,6 +284,7 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
         if (!o.contains("texture")) throw SceneError(where + ".weft_texture: give the warp's \"texture\" too");
         obj.thread_maps[1] = parse_thread_map(o["weft_texture"], where + ".weft_texture", base_dir, textures);
       }
+      if (o.contains("normal_map")) obj.normal_map = parse_normal_map(o["normal_map"], where + ".normal_map", base_dir, textures);
     } else if (material == "lambertian") {
       obj.material = Material::lambertian;
       obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");

@@ -104,4 +104,24 @@ ThreadMap parse_thread_map(const nlohmann::json& j, const std::string& where, co
   return m;
 }
 
+NormalMap parse_normal_map(const nlohmann::json& j, const std::string& where, const std::filesystem::path& base_dir,
+                           TextureFiles& files) {
+  if (!j.is_object())
+    throw SceneError(where + ": expected {\"image\", \"offset\", \"scale\", \"rotation\", \"normal_scale\"}");
+  for (const auto& [key, value] : j.items())
+    if (key != "image" && key != "offset" && key != "scale" && key != "rotation" && key != "normal_scale")
+      throw SceneError(where + "." + key + ": unknown (known: image, offset, scale, rotation, normal_scale)");
+  NormalMap m;
+  if (j.contains("normal_scale")) {
+    const nlohmann::json& s = j["normal_scale"];
+    if (!s.is_number() || !std::isfinite(s.get<double>()) || std::abs(s.get<double>()) > 1e6)
+      throw SceneError(where + ".normal_scale: expected a finite number within ±10^6, got " + s.dump());
+    m.scale = s.get<double>();
+  }
+  nlohmann::json map = j;
+  map.erase("normal_scale");
+  m.map = parse_thread_map(map, where, base_dir, files);
+  return m;
+}
+
 }  // namespace weft

@@ -1,6 +1,6 @@
 #pragma once
 // Cloth textures as scenes give them (scene/scene.h's ThreadMap): the image files they name, read
-// with the importer's caps, and a scene file's "texture" / "weft_texture" fields.
+// with the importer's caps, and a scene file's "texture" / "weft_texture" / "normal_map" fields.
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -25,6 +25,11 @@ using TextureFiles = std::map<std::string, std::shared_ptr<const TextureImage>>;
 // A scene file's {"image": FILE, "offset": [u, v], "scale": [u, v], "rotation": RADIANS} (all but
 // "image" optional), FILE relative to `base_dir`. Throws SceneError naming `where` and the field.
 ThreadMap parse_thread_map(const nlohmann::json& j, const std::string& where, const std::filesystem::path& base_dir,
+                           TextureFiles& files);
+
+// A scene file's normal map: parse_thread_map's fields plus "normal_scale" (optional, default 1:
+// glTF's normalTexture.scale, on the map's x and y), a finite number within ±10^6.
+NormalMap parse_normal_map(const nlohmann::json& j, const std::string& where, const std::filesystem::path& base_dir,
                            TextureFiles& files);
 
 // Checks a transform's numbers: finite, scales non-zero and within ±1e6, offsets within ±1e6.

@@ -59,7 +59,7 @@ TEST_P(MethodParity, GlslMatchesCpp) {
   // The method's GLSL as the renderer builds it (the registry's parts), with a main of our own.
   const std::vector<std::string_view>& parts = methods::method(method).glsl;
   std::string call;
-  if (method == "sheen") call = "vec4(sheen_radiance(n, wo), 1.0)";
+  if (method == "sheen") call = "vec4(sheen_radiance(n, wo, sheen_diffuse(vec3(1.0), vec3(1.0))), 1.0)";
   else if (method == "mdfrot") call = "vec4(mdfrot_radiance(n, u, wo), 1.0)";
   else call = "thin_radiance(n, u, wo)";
   std::string fs = shader_preamble();

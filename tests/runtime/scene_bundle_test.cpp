@@ -245,3 +245,49 @@ TEST(SceneBundle, CarriesTexturesAsVerifiedPngSections) {
     EXPECT_EQ(e.section(), "texture/0") << e.what();
   }
 }
+
+TEST(SceneBundle, CarriesANormalMapAsAVerifiedSection) {
+  SceneBundleInput in = pillow_input();
+  in.scene = load_scene_preset("plaid_pillow", fs::path(WEFT_SOURCE_ASSETS) / "scenes");
+  // Bumps of every code (x, y the tilt, z near the top), so that a lossy or colour-converted store
+  // would show.
+  auto bumps = std::make_shared<TextureImage>();
+  bumps->width = 8, bumps->height = 4;
+  for (int i = 0; i < 32; ++i)
+    bumps->rgba.insert(bumps->rgba.end(), {std::uint8_t(37 * i % 256), std::uint8_t(255 - 11 * i), std::uint8_t(200 + i), 255});
+  const NormalMap map{ThreadMap{bumps, "bumps.png", {{0.25, -0.5}, {3.0, 2.0}, 0.3}}, 0.6};
+  in.scene.objects[0].normal_map = map;
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const auto reader = bundle::BundleReader::view(bytes, "memory");
+  ASSERT_TRUE(reader.has("texture/0"));  // the plaid
+  ASSERT_TRUE(reader.has("texture/1"));  // the normal map's own image
+  EXPECT_FALSE(reader.has("texture/2"));
+  const SceneBundle out = read_scene_bundle(reader);
+  const SceneObject& b = out.scene.objects[0];
+  ASSERT_TRUE(b.normal_map);
+  EXPECT_EQ(b.normal_map->map.image->width, 8);
+  EXPECT_EQ(b.normal_map->map.image->height, 4);
+  EXPECT_EQ(b.normal_map->map.image->rgba, bumps->rgba);  // the codes as they were: no sRGB step
+  EXPECT_EQ(b.normal_map->map.transform, map.map.transform);
+  EXPECT_EQ(b.normal_map->map.name, "bumps.png");
+  EXPECT_EQ(b.normal_map->scale, 0.6);
+  EXPECT_NE(b.normal_map->map.image, b.thread_maps[0]->image);
+  EXPECT_FALSE(out.scene.objects[1].normal_map);  // the floor
+  // A flipped bit in the normal map's image fails its checksum, named.
+  auto flipped = bytes;
+  flipped[reader.section("texture/1").offset + 20] ^= std::byte{4};
+  try {
+    read_scene_bundle(bundle::BundleReader::view(flipped, "memory"));
+    FAIL() << "accepted a flipped bit";
+  } catch (const bundle::BundleError& e) {
+    EXPECT_EQ(e.section(), "texture/1") << e.what();
+  }
+  // A normal map on the colour's own image stores it once.
+  in.scene.objects[0].normal_map->map.image = in.scene.objects[0].thread_maps[0]->image;
+  bundle::BundleWriter shared;
+  add_scene_sections(shared, in);
+  const auto shared_bytes = shared.to_bytes();
+  EXPECT_FALSE(bundle::BundleReader::view(shared_bytes, "memory").has("texture/1"));
+}

@@ -185,3 +185,38 @@ TEST(SceneTextures, TheShippedPlaidPillowCarriesItsTexture) {
     EXPECT_NE(std::string(e.what()).find("none.png"), std::string::npos) << e.what();
   }
 }
+
+TEST(SceneTextures, ASceneObjectsNormalMapIsReadWithItsScaleAndTransform) {
+  nlohmann::json j = nlohmann::json::parse(read_text(WEFT_SOURCE_ASSETS "/scenes/plaid_pillow.json"));
+  j["objects"][0]["normal_map"] = {{"image", "../textures/plaid.png"}, {"scale", {2.0, 3.0}}, {"rotation", 0.5},
+                                   {"normal_scale", 0.7}};
+  const Scene s = parse_scene(j.dump(), "plaid_pillow.json", WEFT_SOURCE_ASSETS "/scenes");
+  const SceneObject& o = s.objects.at(0);
+  ASSERT_TRUE(o.normal_map);
+  EXPECT_EQ(o.normal_map->map.name, "plaid.png");
+  EXPECT_EQ(o.normal_map->map.transform.scale, glm::dvec2(2.0, 3.0));
+  EXPECT_EQ(o.normal_map->map.transform.offset, glm::dvec2(0.0, 0.0));
+  EXPECT_EQ(o.normal_map->map.transform.rotation, 0.5);
+  EXPECT_EQ(o.normal_map->scale, 0.7);
+  EXPECT_EQ(o.normal_map->map.image, o.thread_maps[0]->image);  // one file, read once
+  EXPECT_FALSE(s.objects.at(1).normal_map);
+  // Without normal_scale: 1, as glTF's default.
+  j["objects"][0]["normal_map"].erase("normal_scale");
+  EXPECT_EQ(parse_scene(j.dump(), "plaid_pillow.json", WEFT_SOURCE_ASSETS "/scenes").objects.at(0).normal_map->scale, 1.0);
+  // Refusals name the field.
+  auto refused = [&](const nlohmann::json& map, const std::string& field) {
+    nlohmann::json bad = j;
+    bad["objects"][0]["normal_map"] = map;
+    try {
+      parse_scene(bad.dump(), "plaid_pillow.json", WEFT_SOURCE_ASSETS "/scenes");
+      ADD_FAILURE() << "accepted " << map.dump();
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("objects[0].normal_map" + field), std::string::npos) << e.what();
+    }
+  };
+  refused({{"image", "../textures/plaid.png"}, {"normal_scale", "strong"}}, ".normal_scale");
+  refused({{"image", "../textures/plaid.png"}, {"normal_scale", 1e9}}, ".normal_scale");
+  refused({{"image", "../textures/plaid.png"}, {"strength", 1.0}}, ".strength");
+  refused({{"image", "../textures/none.png"}}, ".image");
+  refused({{"image", "../textures/plaid.png"}, {"scale", {0.0, 1.0}}}, "");
+}

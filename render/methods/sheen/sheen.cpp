@@ -25,11 +25,18 @@ SheenParams sheen_params(const Fabric& fabric) {
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& t = fabric.threads[j];
     const double w = total > 0.0 ? t.coverage / total : 0.5;
-    p.diffuse += w * t.albedo;
+    p.thread_diffuse[j] = w * t.albedo;
+    p.diffuse += p.thread_diffuse[j];
     p.sheen_colour += dvec3(w * fresnel_dielectric(t.eta, 1.0));
     sigma += w * t.gamma_s;
   }
   p.roughness = std::clamp(sigma * sigma, 0.01, 1.0);
+  return p;
+}
+
+SheenParams sheen_tinted(SheenParams p, const std::array<dvec3, 2>& tint) {
+  for (int j = 0; j < 2; ++j) p.thread_diffuse[j] *= tint[j];
+  p.diffuse = p.thread_diffuse[0] + p.thread_diffuse[1];
   return p;
 }
 

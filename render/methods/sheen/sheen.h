@@ -11,6 +11,7 @@
 //  - roughness α = (Σ w_j γ_s,j)²: near grazing sin^{1/α}θ_h ≈ exp(−x²/(2α)) in the angle x
 //    from grazing, a Gaussian of deviation √α, matched to the surface lobe's deviation γ_s.
 //    Clamped to [0.01, 1].
+#include <array>
 #include <span>
 
 #include "core/fabric.h"
@@ -21,11 +22,14 @@ namespace weft {
 
 struct SheenParams {
   dvec3 diffuse{0.5};
+  std::array<dvec3, 2> thread_diffuse{dvec3(0.25), dvec3(0.25)};  // w_j A_j: diffuse is their sum
   dvec3 sheen_colour{0.04};
   double roughness = 0.3;  // α
 };
 
 SheenParams sheen_params(const Fabric& fabric);
+// A textured cloth at a point: each thread's part of the diffuse times its texel tint[j].
+SheenParams sheen_tinted(SheenParams p, const std::array<dvec3, 2>& tint);
 
 // Charlie distribution and Neubelt visibility, as above (n·h, n·l, n·v in [0, 1]).
 double charlie_distribution(double alpha, double n_dot_h);

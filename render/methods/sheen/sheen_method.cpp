@@ -5,12 +5,15 @@
 #include "methods/cpu_evaluation.h"
 #include "methods/program_cloth.h"
 #include "methods/sg_lighting_uniforms.h"
+#include "methods/thread_map_textures.h"
 
 namespace weft::gpu {
 
 void upload_sheen(const GlProgram& program, const SheenParams& p) {
   program.use();
-  glUniform3f(program.uniform("u_sheen_diffuse"), float(p.diffuse.r), float(p.diffuse.g), float(p.diffuse.b));
+  const float diffuse[6] = {float(p.thread_diffuse[0].r), float(p.thread_diffuse[0].g), float(p.thread_diffuse[0].b),
+                            float(p.thread_diffuse[1].r), float(p.thread_diffuse[1].g), float(p.thread_diffuse[1].b)};
+  glUniform3fv(program.uniform("u_sheen_thread_diffuse"), 2, diffuse);
   glUniform3f(program.uniform("u_sheen_colour"), float(p.sheen_colour.r), float(p.sheen_colour.g),
               float(p.sheen_colour.b));
   glUniform1f(program.uniform("u_sheen_roughness"), float(p.roughness));
@@ -22,22 +25,37 @@ namespace weft::methods {
 
 namespace {
 const std::vector<std::string_view> kGlsl = {"erf.glsl", "sg_lighting.glsl", "sheen.glsl"};
+// The draw's parts beyond the function: a textured cloth's texels and its normal map.
+std::vector<std::string_view> draw_parts() {
+  std::vector<std::string_view> parts = kGlsl;
+  parts.insert(parts.end(), {"thread_maps.glsl", "normal_map_frame.glsl", "cloth_normal_map.glsl"});
+  return parts;
+}
 
 class SheenCloth : public gpu::ProgramCloth {
 public:
-  SheenCloth() : ProgramCloth(gpu::with_main(kGlsl, "sheen.frag")) {}
+  SheenCloth() : ProgramCloth(gpu::with_main(draw_parts(), "sheen.frag")) {}
   size_t add_object(size_t, const TriangleMesh& mesh, const Fabric& fabric) override {
     params_.push_back(sheen_params(fabric));
+    maps_.emplace_back();
     return add_mesh(mesh);
   }
   void set_fabric(size_t handle, const Fabric& fabric) override { params_.at(handle) = sheen_params(fabric); }
+  bool set_thread_maps(size_t handle, const gpu::ThreadMaps& maps) override {
+    maps_.at(handle) = maps;
+    return true;
+  }
+  bool draws_normal_maps() const override { return true; }
 
 private:
   void upload(size_t handle, const gpu::GlProgram& program, const SgLighting& sgs) const override {
     gpu::upload_sg_lighting(program, sgs);
     gpu::upload_sheen(program, params_.at(handle));
+    gpu::bind_thread_maps(program, maps_.at(handle), white_.id(), 0);
   }
   std::vector<SheenParams> params_;
+  std::vector<gpu::ThreadMaps> maps_;
+  gpu::WhiteTexture white_;  // thread_maps.glsl's samplers on untextured cloth
 };
 }  // namespace
 
