@@ -19,6 +19,7 @@
 #include "lighting/sg_set_io.h"
 #include "runtime/visibility_mask.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/scene_file.h"
 
 namespace weft {
 namespace {

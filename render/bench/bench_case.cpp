@@ -6,6 +6,7 @@
 #include "lighting/env_map.h"
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
+#include "scene/scene_file.h"
 
 namespace weft::bench {
 

@@ -14,6 +14,7 @@
 #include "frame/frame_render.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
+#include "scene/scene_file.h"
 
 namespace weft::bench {
 

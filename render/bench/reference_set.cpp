@@ -7,6 +7,7 @@
 #include "bench/stopwatch.h"
 #include "reference/environment_samples.h"
 #include "reference/scene_render.h"
+#include "scene/scene_file.h"
 
 namespace weft::bench {
 

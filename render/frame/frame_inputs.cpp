@@ -9,6 +9,7 @@
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
 #include "reference/environment_samples.h"
+#include "scene/scene_file.h"
 
 namespace weft {
 

@@ -12,6 +12,7 @@
 #include "runtime/iwasaki_bundle.h"
 #include "runtime/scene_bundle.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/scene_file.h"
 
 namespace fs = std::filesystem;
 using namespace weft;

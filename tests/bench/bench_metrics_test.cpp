@@ -7,7 +7,7 @@
 
 #include "measure/image_metrics.h"
 #include "bench/shadow_mask.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

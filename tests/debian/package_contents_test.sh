@@ -75,8 +75,9 @@ needed() {  # PACKAGE: prints "file: library" lines
 }
 needed weft >"$dir/weft.needed"
 grep -q "/bin/weft: libc.so" "$dir/weft.needed" || fail "readelf found no NEEDED in weft: $(head -3 "$dir/weft.needed")"
-! grep -Ei 'embree|tbb|gomp|camera' "$dir/weft.needed" || fail "the kiosk package's programs need the libraries above"
+! grep -Ei 'embree|tbb|gomp|camera|draco|meshoptimizer' "$dir/weft.needed" || fail "the kiosk package's programs need the libraries above"
 needed weft-tools | grep -q 'weft-offline: libembree' || fail "weft-offline needs no Embree: is the NEEDED check reading anything?"
+needed weft-tools | grep -q 'weft-offline: libdraco' || fail "weft-offline needs no Draco: the glTF importer is not where the tools are"
 needed weft-probe-camera | grep -q 'libweft-probe-libcamera.so: libcamera.so' || fail "the plugin does not need libcamera"
 
 # The kiosk package alone, as on a kiosk without the others.

@@ -45,7 +45,7 @@
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
 

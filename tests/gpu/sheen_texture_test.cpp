@@ -15,7 +15,7 @@
 #include "gpu/egl_context.h"
 #include "gpu/scene_renderer.h"
 #include "methods/registry.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

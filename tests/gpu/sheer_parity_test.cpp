@@ -25,7 +25,7 @@
 #include "methods/registry.h"
 #include "methods/sheer/sheer.h"
 #include "reference/ray_scene.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
 

@@ -19,7 +19,7 @@
 #include "methods/iwasaki/iwasaki.h"
 #include "methods/registry.h"
 #include "reference/scene_render.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/parity_bake_settings.h"
 
 using namespace weft;

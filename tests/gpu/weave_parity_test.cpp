@@ -18,6 +18,7 @@
 #include "methods/sg_lights.h"
 #include "methods/weave/weave_layer.h"
 #include "methods/weave/weave_ratio.h"
+#include "scene/scene_file.h"
 #include "shaders/embedded_shaders.h"
 #include "support/block_means.h"
 #include "support/gpu_parity.h"

@@ -31,7 +31,7 @@
 #include "methods/iwasaki/iwasaki.h"
 #include "reference/ray_scene.h"
 #include "reference/scene_render.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/ray_pixels.h"
 #include "support/scene_case.h"
 

@@ -20,7 +20,7 @@
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/procedural_meshes.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 

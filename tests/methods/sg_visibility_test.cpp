@@ -10,7 +10,7 @@
 #include "bake/visibility/scene_visibility.h"
 #include "bake/visibility/visibility_sdf.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 

@@ -43,7 +43,7 @@
 #include "reference/ray_scene.h"
 #include "reference/scene_render.h"
 #include "reference/sg_quadrature.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/ray_pixels.h"
 #include "support/scene_case.h"
 

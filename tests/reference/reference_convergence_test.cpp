@@ -6,7 +6,7 @@
 
 #include "core/fabric.h"
 #include "reference/scene_render.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

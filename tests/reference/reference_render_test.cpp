@@ -12,7 +12,7 @@
 #include "reference/environment_samples.h"
 #include "reference/scene_render.h"
 #include "reference/sg_quadrature.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

@@ -9,7 +9,7 @@
 
 #include "core/fabric.h"
 #include "reference/scene_render.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "scene/weave_scale.h"
 #include "support/block_means.h"
 

@@ -10,7 +10,7 @@
 #include "core/fabric.h"
 #include "reference/scene_render.h"
 #include "reference/tangent_convergence.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/sky_direction.h"
 
 using namespace weft;

@@ -7,6 +7,7 @@
 
 #include "bake/writers/scene_bundle_writer.h"
 #include "bundle/bundle_error.h"
+#include "scene/scene_file.h"
 #include "support/file_text.h"
 
 using namespace weft;

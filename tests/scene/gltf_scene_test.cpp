@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_scene.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "support/base64_text.h"
 #include "support/scene_refusal.h"
 

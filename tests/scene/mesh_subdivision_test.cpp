@@ -12,7 +12,7 @@
 #include <set>
 
 #include "scene/mesh_subdivision.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec2;

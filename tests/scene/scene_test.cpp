@@ -9,7 +9,7 @@
 
 #include "scene/mesh.h"
 #include "scene/procedural_meshes.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

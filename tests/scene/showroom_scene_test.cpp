@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 

@@ -14,7 +14,7 @@
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
 #include "reference/ray_scene.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 using namespace weft;
 using glm::dvec3;

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_scene.h"
+#include "scene/scene_file.h"
 #include "scene/thread_maps.h"
 
 using namespace weft;

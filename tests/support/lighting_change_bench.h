@@ -10,7 +10,7 @@
 
 #include "bake/visibility/visibility_mask_bake.h"
 #include "runtime/visibility_mask.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 namespace weft::test {
 

@@ -8,7 +8,7 @@
 
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
-#include "scene/scene.h"
+#include "scene/scene_file.h"
 
 namespace weft::test {
 

@@ -26,6 +26,7 @@
 #include "bake/writers/scene_bundle_writer.h"
 #include "reference/scene_render.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/scene_file.h"
 #include "support/sg_reference.h"
 
 using namespace weft;
