@@ -70,3 +70,24 @@ TEST(WeaveRatioFiltered, KeepsTheRepeatsMean) {
 
   }
 }
+
+// The layer fades by the pixel's footprint in threads, not in repeats: a five-end satin's repeat
+// holds five yarns across, so at a fifth of a repeat a pixel holds a thread and shows the average
+// (a repeat-scaled fade would still draw its floats there, 4 samples a pixel: moiré), while a plain
+// weave (two yarns) at the same footprint still shows most of its weave.
+TEST(WeaveDetail, FadesByThreadsAPixelNotRepeats) {
+  const Swatch satin("polyester_satin_charmeuse"), plain("linen_plain");
+  ASSERT_EQ(satin.layout.rows(), 5);
+  ASSERT_EQ(plain.layout.rows(), 2);
+  EXPECT_DOUBLE_EQ(weave_thread_footprint(satin.layout, 0.2), 1.0);
+  const glm::dvec2 st{0.31, 0.47}, dx{0.2, 0.0}, dy{0.0, 0.2};
+  const dvec3 gone = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx, dy, satin.sgs);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(gone[c], 1.0);
+  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(plain.layout, 0.2)), 1.0 - 0.2 * 0.2 * (3.0 - 2.0 * 0.2));
+  // A quarter of a thread a pixel or finer: the whole filtered factor.
+  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(satin.layout, 0.05)), 1.0);
+  const dvec3 whole = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx / 4.0, dy / 4.0, satin.sgs);
+  const dvec3 filtered = weave_ratio_filtered(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx / 4.0, dy / 4.0,
+                                              satin.terms, satin.sgs);
+  for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(whole[c], filtered[c]);
+}

@@ -90,7 +90,8 @@ bool WeaveLayer::resolves(size_t handle, const Camera& camera, int height) const
   const double distance = std::max(glm::length(camera.position - nearest), 1e-6);
   // Pixels per metre at that distance on the image's vertical axis.
   const double pixels_per_metre = height / (2.0 * distance * std::tan(glm::radians(camera.fov_deg) / 2.0));
-  return o.smallest_repeat * pixels_per_metre > 1.0 / kWeaveCoarseFootprint;
+  // The finest repeat under kWeaveCoarseFootprint threads a pixel somewhere on the object.
+  return weave_thread_footprint(*o.layout, 1.0 / (o.smallest_repeat * pixels_per_metre)) < kWeaveCoarseFootprint;
 }
 
 WeaveLayer::Programs& WeaveLayer::programs(int q_groups) {

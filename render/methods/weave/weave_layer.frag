@@ -1,6 +1,6 @@
 // The weave layer, step 3: the factor weave_ratio_filtered() gives over the pixel's footprint,
 // eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
-// repeats, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
+// threads, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
 // with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl.
 uniform vec3 u_eye;
 uniform highp vec2 u_tiles_per_uv;
@@ -15,7 +15,7 @@ out vec4 o_factor;
 void main() {
   highp vec2 st = v_uv * u_tiles_per_uv;
   highp vec2 dx = dFdx(st), dy = dFdy(st);
-  float footprint = max(length(dx), length(dy));
+  float footprint = max(length(dx), length(dy)) * float(u_weave_rows);  // in threads: weave_thread_footprint
   float coarse = smoothstep(u_lod.x, u_lod.y, footprint);
   if (coarse >= 1.0) {
     o_factor = vec4(1.0);

@@ -96,14 +96,14 @@ dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, con
   return ratio_to(resolved, terms.fabric);
 }
 
-double weave_detail(double footprint) {
-  const double x = std::clamp((footprint - kWeaveFineFootprint) / (kWeaveCoarseFootprint - kWeaveFineFootprint), 0.0, 1.0);
+double weave_detail(double thread_footprint) {
+  const double x = std::clamp((thread_footprint - kWeaveFineFootprint) / (kWeaveCoarseFootprint - kWeaveFineFootprint), 0.0, 1.0);
   return 1.0 - x * x * (3.0 - 2.0 * x);
 }
 
 dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                    glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs) {
-  const double detail = weave_detail(std::max(glm::length(dx), glm::length(dy)));
+  const double detail = weave_detail(weave_thread_footprint(layout, std::max(glm::length(dx), glm::length(dy))));
   if (detail <= 0.0) return dvec3(1.0);
   const dvec3 r = weave_ratio_filtered(bsdf, layout, frame, wo, st, dx, dy, weave_vertex_terms(bsdf, frame, wo, sgs), sgs);
   return glm::mix(dvec3(1.0), r, detail);

@@ -15,9 +15,14 @@
 
 namespace weft {
 
-// Footprints (repeats per pixel) where the layer is whole (≤ first) and where it is gone (≥ second):
-// a repeat over 8 pixels shows its threads, one under 2 pixels is the fabric-level average.
-inline constexpr double kWeaveFineFootprint = 1.0 / 8.0, kWeaveCoarseFootprint = 0.5;
+// Footprints in threads per pixel (repeats per pixel × the layout's rows: a repeat holds `rows`
+// yarns across each row band, so its finest detail is a thread, whatever the weave) where the layer
+// is whole (≤ first) and where it is gone (≥ second): a thread over 4 pixels shows its yarn, one
+// under a pixel is the fabric-level average. Measured in repeats instead, a five-end satin's
+// floats would still be drawn at 2–3 threads a pixel, 4 samples a pixel, as moiré.
+inline constexpr double kWeaveFineFootprint = 1.0 / 4.0, kWeaveCoarseFootprint = 1.0;
+// The footprint in threads of a pixel covering `repeats` repeats of `layout`.
+inline double weave_thread_footprint(const WeaveLayout& layout, double repeats) { return repeats * layout.rows(); }
 // Below this fabric-level response the factor is 1; above the cap it is clamped.
 inline constexpr double kWeaveRatioFloor = 1e-7, kWeaveRatioCap = 64.0;
 
@@ -50,11 +55,11 @@ dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, con
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
                            std::span<const SphericalGaussian> sgs);
 
-// How much of R a pixel shows, 1 − smoothstep(fine, coarse, footprint): the rest is 1.
-double weave_detail(double footprint);
+// How much of R a pixel shows, 1 − smoothstep(fine, coarse, footprint in threads): the rest is 1.
+double weave_detail(double thread_footprint);
 
 // The layer's factor as a pixel applies it: mix(filtered R, 1, 1 − weave_detail(footprint)), the
-// footprint the longer of dx and dy.
+// footprint the longer of dx and dy in threads (weave_thread_footprint).
 dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                    glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs);
 
