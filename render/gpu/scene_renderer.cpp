@@ -78,7 +78,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
                               "' without its texture (the iwasaki rungs draw it)");
         if (o.normal_map && !(drawn && cloth_->draws_normal_maps()))
           warnings_.push_back("method " + method.name + " ignores the normal map of cloth object '" + o.name +
-                              "' (the per-pixel iwasaki rungs draw it)");
+                              "' (the iwasaki rungs draw it)");
       }
       ++cloth;
     } else {

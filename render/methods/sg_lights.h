@@ -18,6 +18,8 @@ inline constexpr double kSgHorizonCosine = 0.02;
 // `axis` moved along the great circle through `n` until n·axis ≥ kSgHorizonCosine (unchanged
 // when already above). The antipode of n goes to any direction at that elevation.
 glm::dvec3 lift_above_horizon(const glm::dvec3& axis, const glm::dvec3& n);
+// The same rule to n·axis ≥ h (h in [0, 1)).
+glm::dvec3 lift_to_cosine(const glm::dvec3& axis, const glm::dvec3& n, double h);
 
 // The G-weighted mean cosine over the hemisphere around n, E/H with E the clamped-cosine and H
 // the hemisphere integral (both Tokuyoshi fits), clamped to [kSgHorizonCosine, 1]: the one

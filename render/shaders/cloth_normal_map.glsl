@@ -5,10 +5,15 @@ uniform bool u_normal_mapped;
 uniform mediump sampler2D u_normal_map;
 uniform mat3 u_normal_uv;
 uniform float u_normal_scale;
+// The map's unit tangent-space normal at uv; (0, 0, 1) without a map.
+vec3 normal_map_at(vec2 uv) {
+  if (!u_normal_mapped) return vec3(0.0, 0.0, 1.0);
+  vec3 texel = texture(u_normal_map, (u_normal_uv * vec3(uv, 1.0)).xy).rgb;
+  return tangent_space_normal(texel, u_normal_scale);
+}
 void apply_normal_map(inout vec3 n, inout vec3 u, vec2 uv) {
   if (!u_normal_mapped) return;
-  vec3 texel = texture(u_normal_map, (u_normal_uv * vec3(uv, 1.0)).xy).rgb;
-  normal_mapped_frame(n, u, tangent_space_normal(texel, u_normal_scale));
+  normal_mapped_frame(n, u, normal_map_at(uv));
 }
 // The shading frame at a cloth pixel: the interpolated normal on the side facing the eye, the
 // warp made orthogonal to it, both turned by the normal map.

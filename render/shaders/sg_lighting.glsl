@@ -71,18 +71,19 @@ vec3 sg_power(int k) {
   float l = u_sg_sharpness[k];
   return u_sg_amplitude[k] * (4.0 * SG_PI * sg_one_minus_exp_over(2.0 * l));
 }
-vec3 lift_above_horizon(vec3 axis, vec3 n) {
+// axis moved along the great circle through n until n·axis ≥ h (unchanged when already there).
+vec3 lift_to_cosine(vec3 axis, vec3 n, float h) {
   float c = dot(axis, n);
-  if (c >= SG_HORIZON_COSINE) return axis;
+  if (c >= h) return axis;
   vec3 t = axis - c * n;
   float len = length(t);
   if (len < 1e-6) {
     t = abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0));
     len = length(t);
   }
-  float h = SG_HORIZON_COSINE;
   return t / len * sqrt(1.0 - h * h) + h * n;
 }
+vec3 lift_above_horizon(vec3 axis, vec3 n) { return lift_to_cosine(axis, n, SG_HORIZON_COSINE); }
 
 // core's SgWarpedGrid: an n × 2n midpoint grid in (u, φ) in the SG's frame, cos θ = 1 + ln(1 −
 // u(1 − e^{−2λ}))/λ, so every cell holds ∫exp(λ(ω·ξ − 1))dω/(2n²) (sg_grid_cell_weight).

@@ -21,7 +21,8 @@
 // pixel the C++ side tints each thread's volume part by its texel at the pixel's UV; per vertex
 // it keeps each SG's terms at the vertices and tints them at the pixel, as the GPU's split does.
 // A colour knob on a textured cloth (set_fabric, no pass recomputed) draws what a renderer made
-// with that colour draws.
+// with that colour draws. A bumped case adds a smooth normal map on the per-vertex rungs: the C++
+// side multiplies each SG's parts by normal_map_ratios at the pixel's frame and texel.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,6 +44,7 @@
 #include "methods/iwasaki/broad_lobe_quadrature.h"
 #include "methods/iwasaki/iwasaki.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/iwasaki/vertex_normal_map.h"
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/scene_file.h"
@@ -76,6 +78,7 @@ struct Case {
   std::string scene, fabric;
   bool expect_visibility;
   bool textured = false;
+  bool bumped = false;  // a normal map too (per-vertex rungs)
 };
 
 // A smooth, periodic map, one per thread, read at a small scale (a sixteenth of a period across
@@ -101,6 +104,22 @@ std::shared_ptr<const TextureImage> smooth_map(int phase) {
   return t;
 }
 
+// Smooth bumps tilting up to ~17° along and across, 128 texels a period (as smooth_map, for the
+// GPU's filtered lookup to agree with the C++ side's bilinear one).
+std::shared_ptr<const TextureImage> smooth_bumps() {
+  constexpr int n = 128;
+  auto t = std::make_shared<TextureImage>();
+  t->width = t->height = n;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const double a = 2 * 3.14159265358979 * x / n, b = 2 * 3.14159265358979 * y / n;
+      const glm::dvec3 d = glm::normalize(glm::dvec3(0.3 * std::sin(a), 0.2 * std::cos(b), 1.0));
+      t->rgba.insert(t->rgba.end(), {uint8_t(std::lround(127.5 + 127.5 * d.x)), uint8_t(std::lround(127.5 + 127.5 * d.y)),
+                                     uint8_t(std::lround(127.5 + 127.5 * d.z)), uint8_t(255)});
+    }
+  return t;
+}
+
 class IwasakiParity : public ::testing::TestWithParam<Case> {};
 
 void check_parity(const Case& c, const methods::RuntimeMethod& method) {
@@ -118,6 +137,7 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
         scene.objects[i].thread_maps[0] = ThreadMap{smooth_map(0), "warp", {{0.1, 0.2}, {0.06, 0.06}, 0.0}};
         scene.objects[i].thread_maps[1] = ThreadMap{smooth_map(2), "weft", {{0.4, 0.0}, {0.05, 0.07}, 0.6}};
       }
+      if (c.bumped) scene.objects[i].normal_map = NormalMap{ThreadMap{smooth_bumps(), "bumps", {{0.3, 0.1}, {0.07, 0.05}, 0.3}}, 1.0};
     }
   auto data = std::make_shared<IwasakiBundleData>();
   data->tables.emplace(c.fabric, bake_weighting_tables(fabric, test::parity_bake_settings()));
@@ -190,12 +210,15 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
   // Textured: the GPU's filtered sRGB texels differ from the C++ side's exact bilinear ones by
   // about 1e−3 on llvmpipe (measured 0.9–1.3e−3 here, the same per pixel and per vertex, while the
   // untextured cases agree to 3e−6): the texture's precision, not the split's.
-  const double tolerance = c.textured ? 2.5e-3 : 1e-3;
+  // Bumped: the normal map's filtered texels move each sharp lobe's ratio too (measured up to
+  // 4e−3 here with smooth bumps, 1.2e−3 with one constant tilt, whose texels filter exactly).
+  const double tolerance = c.bumped ? 5e-3 : c.textured ? 2.5e-3 : 1e-3;
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double broad_share = 0;
   long facet_cuts = 0;  // (pixel, SG) pairs the facet's plane cuts by more than 1 %
-  double worst = 0, visibility_effect = 0;
+  double worst = 0, visibility_effect = 0, bump_effect = 0;
+  bool use_ratios = true;
   for (int y = 1; y < h - 1; y += 2)
     for (int x = 1; x < w - 1; x += 2) {
       const dvec3 dir = camera_ray(scene.camera, w, h, x + 0.5, y + 0.5);
@@ -288,10 +311,20 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
                                 ? broad(i, with_visibility, int(k))
                                 : radiance(one, {tri[i], tri[i], tri[i]}, dvec3(1, 0, 0), with_visibility, int(k)));
         }
-        return facet_interpolated_radiance(sgs, quadrature ? std::span<const int>(slots) : std::span<const int>(),
-                                           {at[0], at[1], at[2]}, bary, shading_normal, facet, tint);
+        const std::span<const int> broad_slots = quadrature ? std::span<const int>(slots) : std::span<const int>();
+        if (c.bumped && use_ratios)
+          return normal_mapped_facet_radiance(normal_map_ratio_bsdf(bsdf), sgs, broad_slots, {at[0], at[1], at[2]}, bary,
+                                              SurfaceFrame::from_normal_warp(shading_normal, here.warp), facet, tint,
+                                              normal_map_tangent(cloth_object, here.uv), wo_here);
+        return facet_interpolated_radiance(sgs, broad_slots, {at[0], at[1], at[2]}, bary, shading_normal, facet, tint);
       };
       const dvec3 cpu = shade(true);
+      if (c.bumped) {  // how much the normal map changes this pixel: parity must cover it
+        use_ratios = false;
+        const dvec3 unmapped = shade(true);
+        use_ratios = true;
+        bump_effect = std::max(bump_effect, glm::length(unmapped - cpu) / glm::length(cpu));
+      }
       if (quadrature) {
         dvec3 b(0);
         for (int k = 0; k < 3; ++k) b += bary[k] * broad(k, true, -1).tinted(tint);
@@ -316,6 +349,7 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
               method.name.c_str(), c.scene.c_str(), c.fabric.c_str(), compared, worst, 100 * visibility_effect);
   EXPECT_GT(compared, 40);
   if (c.expect_visibility) { EXPECT_GT(facet_cuts, 0) << "no SG cut by a facet: the facet path went untested"; }
+  if (c.bumped) { EXPECT_GT(bump_effect, 0.05) << "the normal map hardly changes any compared pixel: its ratio went untested"; }
   if (quadrature) { EXPECT_GT(broad_share, 0.1) << "the broad lobes hardly light any compared pixel: the quadrature went untested"; }
   if (c.expect_visibility) {
     EXPECT_GT(occluded_pixels, 0) << "no lookup near a shadow edge: the visibility path went untested";
@@ -336,6 +370,13 @@ TEST_P(IwasakiParity, PerVertexMaskQuadratureGlslMatchesCpp) {
 }
 TEST_P(IwasakiParity, PerPixelMaskQuadratureGlslMatchesCpp) {
   check_parity(GetParam(), methods::method("iwasaki_mask_quadrature"));
+}
+
+// The per-vertex rungs' normal map on the textured pillow (with shadows): their GLSL ratio and
+// the C++ twin at the pixel.
+TEST(IwasakiParityNormalMap, PerVertexGlslMatchesCpp) {
+  for (const char* method : {"iwasaki_vertex", "iwasaki_vertex_quadrature"})
+    check_parity(Case{"pillow", "linen_plain", true, true, true}, methods::method(method));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, IwasakiParity,

@@ -270,11 +270,18 @@ dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::s
 
 dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
                                   const std::array<std::span<const IwasakiTerms>, 3>& vertex_sgs, const dvec3& bary,
-                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint) {
+                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint,
+                                  std::span<const dvec3> normal_map_ratios) {
   dvec3 sum(0.0);
   for (size_t k = 0; k < sgs.size(); ++k) {
+    const dvec3 r = k < normal_map_ratios.size() ? normal_map_ratios[k] : dvec3(1.0);
+    const std::array<dvec3, 2> volume_factor{tint[0] * r.y, tint[1] * r.z};
     dvec3 blended(0.0);
-    for (int i = 0; i < 3; ++i) blended += bary[i] * vertex_sgs[i][k].tinted(tint);
+    for (int i = 0; i < 3; ++i) {
+      IwasakiTerms t = vertex_sgs[i][k];
+      t.surface *= r.x;
+      blended += bary[i] * t.tinted(volume_factor);
+    }
     const bool broad = k < broad_slots.size() && broad_slots[k] >= 0;
     sum += broad ? blended : blended * facet_horizon_factor(sgs[k], shading_normal, facet_normal);
   }

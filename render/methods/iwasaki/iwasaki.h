@@ -92,9 +92,11 @@ dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::s
 
 // The same for a textured cloth (iwasaki_vertex.frag with thread_maps.glsl): per vertex and SG the
 // terms (surface and each thread's volume part), blended and cut alike, each thread's part times
-// its texel at the pixel, tint[j].
+// its texel at the pixel, tint[j]; with a normal map, SG k's parts (surface, warp, weft) times
+// normal_map_ratios[k] (methods/iwasaki/vertex_normal_map.h; empty: none).
 dvec3 facet_interpolated_radiance(std::span<const SphericalGaussian> sgs, std::span<const int> broad_slots,
                                   const std::array<std::span<const IwasakiTerms>, 3>& vertex_sgs, const dvec3& bary,
-                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint);
+                                  const dvec3& shading_normal, const dvec3& facet_normal, const std::array<dvec3, 2>& tint,
+                                  std::span<const dvec3> normal_map_ratios = {});
 
 }  // namespace weft

@@ -2,14 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/gl_error.h"
+#include "methods/broad_lobe_bits.h"
 #include "methods/bundle_visibility.h"
 #include "methods/fabric_uniforms.h"
 #include "methods/program_cloth.h"
+#include "methods/iwasaki/vertex_normal_map.h"
 #include "methods/iwasaki/vertex_pass.h"
+#include "methods/weave/weave_ratio.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -73,7 +77,9 @@ IwasakiShaders iwasaki_shaders() {
   s.pass_fs.push_back("vertex_pass.glsl");
   s.pass_fs.push_back("iwasaki_vertex_pass.frag");
   s.vertex_vs = {"iwasaki_vertex.vert"};
-  s.vertex_fs = {"erf.glsl", "sg_lighting.glsl", "facet_horizon.glsl", "thread_maps.glsl", "iwasaki_vertex.frag"};
+  s.vertex_fs = {"microcylinder.glsl",    "erf.glsl",       "sg_lighting.glsl",      "facet_horizon.glsl",
+                 "thread_maps.glsl",      "normal_map_frame.glsl", "cloth_normal_map.glsl", "vertex_normal_map.glsl",
+                 "iwasaki_vertex.frag"};
   s.facet_per_sg = true;
   s.thread_maps = true;
   s.normal_maps = true;
@@ -94,6 +100,7 @@ struct IwasakiCloth::Object {
   GpuMesh mesh;
   std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
   std::unique_ptr<ClothBsdf> bsdf;
+  std::unique_ptr<ClothBsdf> ratio_bsdf;  // per vertex with a normal map: normal_map_ratio_bsdf(*bsdf)
   const WeightingTablesTexture* tables = nullptr;
   // Occluded objects: the bundle's PCA and the mesh (vertex frames), and the per-(vertex, SG)
   // values for the lighting they were last computed for.
@@ -217,18 +224,24 @@ const GlProgram& IwasakiCloth::facet_draw(int sgs) {
   const int groups = std::max(1, (sgs + 3) / 4);
   auto it = facet_draws_.find(groups);
   if (it != facet_draws_.end()) return *it->second;
-  // Three vec4 per group, the position and the normal: what the vertex stage hands the fragment
-  // stage, each vec3 counted as a whole vec4 in case the GL does not pack them.
+  // Three vec4 per group, the position, the normal, the warp and the UV: what the vertex stage
+  // hands the fragment stage, each vec3 and vec2 counted as a whole vec4 in case the GL does not
+  // pack them.
   GLint out = 0, in = 0;
   glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
   glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
-  const int needed = 12 * groups + 8, limit = std::min(out, in);
+  const int needed = 12 * groups + 16, limit = std::min(out, in);
   if (needed > limit)
     throw GpuError("per-vertex iwasaki: " + std::to_string(sgs) + " SGs need " + std::to_string(needed) +
                    " varying components per vertex (each SG's radiance, cut per pixel by the facet's plane), more than "
                    "this GL's " + std::to_string(limit) + " (GL_MAX_VERTEX_OUTPUT_COMPONENTS " + std::to_string(out) +
                    ", GL_MAX_FRAGMENT_INPUT_COMPONENTS " + std::to_string(in) + "): fit fewer SGs");
-  const std::string defines = "#define SG_GROUPS " + std::to_string(groups) + "\n";
+  char ratio[224];
+  std::snprintf(ratio, sizeof ratio,
+                "#define NORMAL_MAP_RATIO_BIAS %.9e\n#define NORMAL_MAP_RATIO_CAP %.9e\n#define NORMAL_MAP_FLAT_TILT %.9e\n"
+                "#define BROAD_LOBE_SHARPNESS %.9e\n",
+                kNormalMapRatioBias, kNormalMapRatioCap, kNormalMapFlatTilt, kBroadLobeSharpness);
+  const std::string defines = "#define SG_GROUPS " + std::to_string(groups) + "\n" + ratio;
   auto program = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs, defines),
                                              program_source(shaders_.vertex_fs, defines));
   return *facet_draws_.emplace(groups, std::move(program)).first->second;
@@ -246,6 +259,7 @@ void IwasakiCloth::set_fabric(size_t handle, const Fabric& fabric) {
         throw GpuError("method iwasaki: the tables of fabric '" + fabric.name + "' were baked for other tangent samples");
   const bool colour_only = o.bsdf && same_but_albedo(o.bsdf->fabric(), fabric) && !pass_holds_albedo(shaders_);
   o.bsdf = std::move(bsdf);
+  o.ratio_bsdf = std::make_unique<ClothBsdf>(normal_map_ratio_bsdf(*o.bsdf));
   o.tables = &t;
   if (o.pass && !colour_only) o.pass->invalidate();
 }
@@ -258,7 +272,8 @@ bool IwasakiCloth::set_thread_maps(size_t handle, const ThreadMaps& maps) {
 }
 
 bool IwasakiCloth::draws_normal_maps() const {
-  return shaders_.thread_maps && shaders_.normal_maps && evaluation_ == Evaluation::per_pixel;
+  // Per vertex, the draw that cuts each SG by the facet applies the map (vertex_normal_map.glsl).
+  return shaders_.thread_maps && shaders_.normal_maps && (evaluation_ == Evaluation::per_pixel || shaders_.facet_per_sg);
 }
 
 void IwasakiCloth::refresh_all() {
@@ -375,7 +390,11 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     glUniform3fv(d.uniform("u_sg_hemisphere_terms"), count, terms.data());
     glUniform1iv(d.uniform("u_sg_broad"), count, broad.data());
     glUniform3fv(d.uniform("u_sg_amplitude"), count, amplitudes.data());
+    std::vector<float> widen2;
+    for (const auto& g : drawn) widen2.push_back(float(weave_lobe_widening(g.sharpness)));
+    glUniform1fv(d.uniform("u_sg_widen2"), count, widen2.data());
   }
+  upload_fabric(d, *o.ratio_bsdf);
   float albedo[6];
   for (int j = 0; j < 2; ++j)
     for (int c = 0; c < 3; ++c) albedo[3 * j + c] = float(o.bsdf->fabric().threads[j].albedo[c]);

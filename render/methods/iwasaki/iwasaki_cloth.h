@@ -57,8 +57,9 @@ struct IwasakiShaders {
   bool facet_per_sg = false;
   // The programs read a textured cloth's thread maps (thread_maps.glsl) where the albedos apply.
   bool thread_maps = false;
-  // The per-pixel program turns the shading frame by a normal map (cloth_normal_map.glsl); the
-  // per-vertex passes cannot (a vertex has no texel) and draw the surface's normals.
+  // A normal map is drawn: per pixel the program turns the shading frame (cloth_normal_map.glsl);
+  // per vertex (with facet_per_sg) the passes shade the surface's frame, having no texel, and the
+  // draw multiplies each SG's parts by the map's ratio (vertex_normal_map.glsl).
   bool normal_maps = false;
 };
 // iwasaki's GLSL in link order (the model, SG lighting, T's grid, the facet's horizon, iwasaki.glsl):

@@ -4,10 +4,11 @@
 // for vertex i and SG k), passed on per SG so that iwasaki_vertex.frag can apply the amplitudes,
 // the albedos with a texture's texels, and cut each SG by the facet's plane after the rasteriser
 // interpolates them (Gouraud: the parts are linear in the albedo, so interpolating them first is
-// exact). Four SGs per vec4 and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp,
+// exact); the warp with them, for the frame a normal map turns. Four SGs per vec4 and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp,
 // from the SGs drawn and the GL's output limit).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_warp;
 layout(location = 6) in vec3 a_uv;
 uniform mat4 u_view_projection;
 uniform highp sampler2D u_vertex_radiance;
@@ -16,6 +17,7 @@ uniform int u_vertex_rows;
 uniform int u_sg_count;
 out vec3 v_position;
 out vec3 v_normal;
+out vec3 v_warp;
 out vec2 v_uv;
 out vec4 v_sg_surface[SG_GROUPS];
 out vec4 v_sg_warp[SG_GROUPS];
@@ -38,6 +40,7 @@ void main() {
   }
   v_position = a_position;
   v_normal = a_normal;
+  v_warp = a_warp;
   v_uv = a_uv.xy;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
