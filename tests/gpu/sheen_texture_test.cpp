@@ -101,3 +101,19 @@ TEST(SheenTextures, ANormalMapTiltsTheNormal) {
   EXPECT_LT(d, 2e-3);
   EXPECT_GT(moved, 0.05);
 }
+
+// A rung that draws neither says so, naming the object; the per-vertex iwasaki rungs need tables,
+// so the one tried here is mdfrot.
+TEST(ClothTextureWarnings, ARungThatIgnoresTheMapsSaysSo) {
+  Scene scene = load_scene_preset("swatch", WEFT_SOURCE_ASSETS "/scenes");
+  scene.objects[0].thread_maps[0] = scene.objects[0].thread_maps[1] = ThreadMap{one_colour(200, 100, 50), "warp", {}};
+  scene.objects[0].normal_map = NormalMap{ThreadMap{one_colour(170, 100, 230), "normals", {}}, 1.0};
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  const gpu::SceneRenderer mdfrot(scene, {fabric_of(scene)}, methods::method("mdfrot"), 16, nullptr);
+  ASSERT_EQ(mdfrot.warnings().size(), 2u);
+  EXPECT_NE(mdfrot.warnings()[0].find("without its texture"), std::string::npos) << mdfrot.warnings()[0];
+  EXPECT_NE(mdfrot.warnings()[1].find("ignores the normal map of cloth object 'swatch'"), std::string::npos)
+      << mdfrot.warnings()[1];
+  const gpu::SceneRenderer sheen(scene, {fabric_of(scene)}, methods::method("sheen"), 16, nullptr);
+  EXPECT_TRUE(sheen.warnings().empty());
+}

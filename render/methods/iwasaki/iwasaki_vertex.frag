@@ -30,22 +30,19 @@ void main() {
   vec3 tint0 = u_thread_albedo[0] * thread_tint(0, v_uv), tint1 = u_thread_albedo[1] * thread_tint(1, v_uv);
   vec3 t = normal_map_at(v_uv);
   bool bumped = normal_map_tilts(t);
-  // Each SG's parts with its amplitude and the facet's cut; with a normal map, the two sharp SGs
-  // whose light here is largest (the first of equals).
-  vec3 part_surface[4 * SG_GROUPS], part_warp[4 * SG_GROUPS], part_weft[4 * SG_GROUPS];
+  // Each SG's cut by the facet; with a normal map, the two sharp SGs whose light here is largest
+  // (the first of equals).
+  float cut[4 * SG_GROUPS];
   int first = -1, second = -1;
   float light_first = -1.0, light_second = -1.0;
   for (int g = 0; g < SG_GROUPS; ++g) {
     for (int c = 0; c < 4; ++c) {
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
-      float f = u_sg_broad[k] != 0 ? 1.0 : facet_horizon_factor_terms(u_sg_hemisphere_terms[k], u_sg_axis[k], ns, ng);
-      vec3 mu = u_sg_amplitude[k] * f;
-      part_surface[k] = mu * v_sg_surface[g][c];
-      part_warp[k] = mu * v_sg_warp[g][c];
-      part_weft[k] = mu * v_sg_weft[g][c];
+      cut[k] = u_sg_broad[k] != 0 ? 1.0 : facet_horizon_factor_terms(u_sg_hemisphere_terms[k], u_sg_axis[k], ns, ng);
       if (!bumped || u_sg_broad[k] != 0 || u_sg_sharpness[k] < BROAD_LOBE_SHARPNESS) continue;
-      vec3 light = part_surface[k] + tint0 * part_warp[k] + tint1 * part_weft[k];
+      vec3 mu = u_sg_amplitude[k] * cut[k];
+      vec3 light = mu * v_sg_surface[g][c] + tint0 * (mu * v_sg_warp[g][c]) + tint1 * (mu * v_sg_weft[g][c]);
       float l = light.r + light.g + light.b;
       if (l > light_first) {
         second = first, light_second = light_first;
@@ -70,20 +67,24 @@ void main() {
       r_second = normal_map_lobe_ratio(ns, us, nb, ub, u_sg_axis[second], wo, u_sg_sharpness[second], u_sg_widen2[second]);
   }
   vec3 surface = vec3(0.0), warp = vec3(0.0), weft = vec3(0.0);
-  for (int k = 0; k < 4 * SG_GROUPS; ++k) {
-    if (k >= u_sg_count) break;
-    if (bumped && u_sg_broad[k] == 0 && u_sg_sharpness[k] >= BROAD_LOBE_SHARPNESS) {
-      vec3 r = k == first    ? r_first
-               : k == second ? r_second
-                             : normal_map_cosine_ratio(ns, nb, u_sg_axis[k], u_sg_sharpness[k]);
-      surface += part_surface[k] * r.x;
-      warp += part_warp[k] * r.y;
-      weft += part_weft[k] * r.z;
-      continue;
+  for (int g = 0; g < SG_GROUPS; ++g) {
+    for (int c = 0; c < 4; ++c) {
+      int k = 4 * g + c;
+      if (k >= u_sg_count) break;
+      vec3 mu = u_sg_amplitude[k] * cut[k];
+      if (bumped && u_sg_broad[k] == 0 && u_sg_sharpness[k] >= BROAD_LOBE_SHARPNESS) {
+        vec3 r = k == first    ? r_first
+                 : k == second ? r_second
+                               : normal_map_cosine_ratio(ns, nb, u_sg_axis[k], u_sg_sharpness[k]);
+        surface += mu * v_sg_surface[g][c] * r.x;
+        warp += mu * v_sg_warp[g][c] * r.y;
+        weft += mu * v_sg_weft[g][c] * r.z;
+        continue;
+      }
+      surface += mu * v_sg_surface[g][c];
+      warp += mu * v_sg_warp[g][c];
+      weft += mu * v_sg_weft[g][c];
     }
-    surface += part_surface[k];
-    warp += part_warp[k];
-    weft += part_weft[k];
   }
   o_radiance = vec4(surface + tint0 * warp + tint1 * weft, 1.0);
 }
