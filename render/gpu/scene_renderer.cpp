@@ -75,10 +75,10 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
         const bool drawn = cloth_->set_thread_maps(obj->handle, maps);
         if (!drawn && o.textured())
           warnings_.push_back("method " + method.name + " draws cloth object '" + o.name +
-                              "' without its texture (the iwasaki rungs draw it)");
+                              "' without its texture (the iwasaki rungs and sheen draw it)");
         if (o.normal_map && !(drawn && cloth_->draws_normal_maps()))
           warnings_.push_back("method " + method.name + " ignores the normal map of cloth object '" + o.name +
-                              "' (the iwasaki rungs draw it)");
+                              "' (the iwasaki rungs and sheen draw it)");
       }
       ++cloth;
     } else {
