@@ -9,8 +9,10 @@
 // layer's ratio): a narrow lobe above the horizon is a point light at its axis, a lobe low, broad
 // or below the horizon lights from above its axis, and one the bump tilts towards the horizon fades
 // with its cosine-weighted share rather than stepping to zero (a point light at the axis alone
-// steps where a lobe crosses the turned horizon). Part by part, so the knobs' albedos and a texture's texels apply after it as before, and each SG keeps
-// the visibility the rung gave it. The broad lobes (λ < kBroadLobeSharpness), smooth in the normal,
+// steps where a lobe crosses the turned horizon). Part by part, so the knobs' albedos and a
+// texture's texels apply after it as before, and each SG keeps the visibility the rung gave it.
+// The model's r for the two SGs that light the pixel most, the clamped cosine's for the others
+// (normal_map_ratios). The broad lobes (λ < kBroadLobeSharpness), smooth in the normal,
 // keep the surface's frame on every per-vertex rung, as the per-pixel quadrature rungs keep them.
 // The ratio's model takes at most kNormalMapRatioSamples tangent samples per thread (the bake's
 // own, 3 by default, when fewer): a ratio of the same model, whose sampling error largely cancels,
