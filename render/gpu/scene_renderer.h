@@ -78,6 +78,8 @@ public:
   void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
   void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
   void refresh_all() { cloth_->refresh_all(); }
+  // ClothMethod::set_visible_vertices_only (on by default).
+  void set_visible_vertices_only(bool on) { cloth_->set_visible_vertices_only(on); }
   // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
   // than about a repeat, each point shows the thread that lies there. Off by default; a
   // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
