@@ -242,6 +242,12 @@ const GlProgram& IwasakiCloth::facet_draw(int sgs) {
   return *facet_draws_.emplace(groups, std::move(program)).first->second;
 }
 
+bool IwasakiCloth::draw_depth(size_t handle, const glm::mat4& view_projection) {
+  if (!visible_) return false;
+  visible_->draw_depth(objects_.at(handle)->marks, view_projection);
+  return true;
+}
+
 size_t IwasakiCloth::visible_vertices(size_t handle) const {
   const Object& o = *objects_.at(handle);
   return visible_ && visible_only_ ? visible_->visible(o.marks) : o.vertices;

@@ -98,6 +98,7 @@ public:
   // Per vertex: the passes compute only the vertices the frame shows (visible_vertices.h), where
   // the GL can mark them; on by default.
   void set_visible_vertices_only(bool on) override { visible_only_ = on; }
+  bool draw_depth(size_t handle, const glm::mat4& view_projection) override;
   // How many of the object's vertices the last draw marked visible; its vertex count where it
   // computed them all (for tests).
   size_t visible_vertices(size_t handle) const;

@@ -135,6 +135,25 @@ unsigned VisibleVertices::mark(const glm::mat4& view_projection, int width, int 
   return stamp_;
 }
 
+void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) const {
+  GLint program = 0;
+  GLboolean colour_mask[4];
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  program_.use();
+  glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+  glUniform1i(program_.uniform("u_mark"), 0);
+  const GLboolean offset = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0.0f, 4.0f);  // the draw's own fragment, rounded either way, still passes GL_LESS
+  meshes_.at(mesh).drawn->draw();
+  glPolygonOffset(0.0f, 0.0f);
+  if (!offset) glDisable(GL_POLYGON_OFFSET_FILL);
+  glColorMask(colour_mask[0], colour_mask[1], colour_mask[2], colour_mask[3]);
+  glUseProgram(GLuint(program));
+}
+
 size_t VisibleVertices::visible(size_t mesh) const {
   const Mesh& m = meshes_.at(mesh);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -37,6 +37,9 @@ public:
   // of the frame's draw) unless the last call had the same view; returns the stamp the marks of
   // visible vertices hold. The caller's framebuffer, viewport, program and depth state are kept.
   unsigned mark(const glm::mat4& view_projection, int width, int height);
+  // The mesh's depth alone into the bound framebuffer (colour untouched), as the per-vertex draw
+  // places it pushed four depth steps away (ClothMethod::draw_depth); the program in use is kept.
+  void draw_depth(size_t mesh, const glm::mat4& view_projection) const;
   GLuint marks(size_t mesh) const { return meshes_.at(mesh).marks; }
   // How many vertices of `mesh` the last mark found visible (reads the marks back: for tests).
   size_t visible(size_t mesh) const;
