@@ -1,8 +1,9 @@
 // Study (label bench): would a cheaper quadrature of the broad lobes (broad_lobe_quadrature.h)
 // hold the error? The lobe's light at a flat point (normal +z, warp +x) under one broad SG
 // (λ uniform in [0.3, 3.9], axis and ω_o at random over 300 cases) by the rung's quadrature
-// (kBroadLobeGrid cells a side, the tables' 16 tangent samples a thread), against the same with
-// fewer tangent samples or a coarser grid, and against a 32 grid (near converged in the cells).
+// (kBroadLobeGrid cells a side, 16 tangent samples a thread: the bench's tables; a bundle bakes
+// each fabric's own, the showroom's satin 15 + 1), against the same with fewer tangent samples
+// or a coarser grid, and against a 32 grid (near converged in the cells).
 // Prints the relative RMS per fabric preset. The run in docs/bench/kiosk_frame/README.md: fewer
 // samples or cells hold on linen but not on the satin (its floats' narrow highlight needs every
 // sample and cell), so the rung keeps both.
