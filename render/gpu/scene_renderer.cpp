@@ -208,6 +208,14 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
     glDepthFunc(GL_LESS);
   };
 
+  // Opaque cloth's depth first where its method can write it (a hair behind itself): the cloth is
+  // then shaded about once per pixel, not once per layer drawn back to front, and the frame is the
+  // same (ClothMethod::draw_depth).
+  if (!see_through && depth_prepass_) {
+    const StageScope stage(Stage::cloth);
+    for (auto& o : objects_)
+      if (o->cloth) cloth_->draw_depth(o->handle, vp);
+  }
   // Opaque surfaces first; see-through cloth last, blended over them without writing depth.
   for (int pass = 0; pass < 2; ++pass) {
     for (auto& o : objects_) {

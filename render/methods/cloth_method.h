@@ -65,6 +65,17 @@ public:
   // changes slowly with the view: recomputed once every max(shares, vertex refresh) draws.
   virtual void set_broad_lobe_refresh(int shares) { (void)shares; }
   virtual void refresh_all() {}
+  // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
+  // frame, less work); on by default. Off: every vertex (tests compare the two).
+  virtual void set_visible_vertices_only(bool on) { (void)on; }
+  // Writes the object's depth alone into the bound framebuffer as draw() places it, a few depth
+  // steps farther: draw() afterwards (GL_LESS) then shades little behind the front, and what it
+  // shows is the same, since every fragment it drops lies behind one that wins anyway (ties
+  // still go to the first drawn). False (nothing drawn) where the method cannot.
+  virtual bool draw_depth(size_t handle, const glm::mat4& view_projection) {
+    (void)handle, (void)view_projection;
+    return false;
+  }
   // Draws the object into the bound framebuffer; blending and depth writes are the caller's.
   virtual void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs) = 0;
 };

@@ -45,15 +45,17 @@ float fresnel_dielectric(float eta, float cos_i) {
 }
 
 // Thread frame of docs/design.md §2: t = cos α·along + sin α·n, n' = −sin α·along + cos α·n, b = axis.
-FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
-  float c = cos(alpha), s = sin(alpha);
-  vec3 t = c * along + s * n;
-  vec3 np = -s * along + c * n;
+// fiber_angles_in: the same in the sample's frame (t, n') already turned by α.
+FiberAngles fiber_angles_in(vec3 t, vec3 np, vec3 axis, vec3 w) {
   float wt = clamp(dot(w, t), -1.0, 1.0);
   float wn = dot(w, np);
   // asin is only good to ~4e-4 on llvmpipe (GLSL ES allows 4096 ULP); atan of the same
   // angle is ~20x tighter, and (1−x)(1+x) keeps the cosine exact near the poles.
   return FiberAngles(atan(wt, sqrt((1.0 - wt) * (1.0 + wt))), atan(dot(w, axis), wn), atan(wt, wn));
+}
+FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
+  float c = cos(alpha), s = sin(alpha);
+  return fiber_angles_in(c * along + s * n, -s * along + c * n, axis, w);
 }
 
 // microcylinder.cpp's fiber_direction: fiber_angles' inverse in frame (t, n', b), with its
@@ -115,34 +117,70 @@ Thread widened(Thread p, float widen2) {
   return p;
 }
 
-// Σ_j ⟨f_s · W · cos θ_i⟩_j for the frame (n, u, v = n × u), each lobe widened by `widen2`,
-// split as (surface part, thread 0's volume part per unit albedo, thread 1's): the integrand is
-// x + A_0·y + A_1·z (ClothBsdf::Point::integrand_split).
-vec3 cloth_integrand_split_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
-  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+// What the integrand needs of ω_o alone, per tangent sample of each thread (thread j's sample k
+// at j·MAX_TANGENT_SAMPLES + k): the sample's frame and ω_o's angles in it. A quadrature over many
+// ω_i at one point (broad_lobe_quadrature.glsl) takes it once.
+struct ClothView {
+  vec3 n, u, wo;
+  vec3 t[2 * MAX_TANGENT_SAMPLES], np[2 * MAX_TANGENT_SAMPLES];
+  FiberAngles o[2 * MAX_TANGENT_SAMPLES];
+};
+ClothView cloth_view(vec3 n, vec3 u, vec3 wo) {
+  ClothView cv;
+  cv.n = n;
+  cv.u = u;
+  cv.wo = wo;
   vec3 v = cross(n, u);
-  // Q needs ⟨P⟩ of both threads before any W.
-  float q = cloth_q(n, u, wi, wo);
-  if (q <= Q_FLOOR) return vec3(0.0);
-  vec3 total = vec3(0.0);
   for (int j = 0; j < 2; ++j) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
+    for (int k = 0; k < u_threads[j].samples; ++k) {
+      int s = j * MAX_TANGENT_SAMPLES + k;
+      float alpha = u_tilts[s], c = cos(alpha), sn = sin(alpha);
+      cv.t[s] = c * along + sn * n;
+      cv.np[s] = -sn * along + c * n;
+      cv.o[s] = fiber_angles_in(cv.t[s], cv.np[s], axis, wo);
+    }
+  }
+  return cv;
+}
+
+// Σ_j ⟨f_s · W · cos θ_i⟩_j for the view's frame (n, u, v = n × u), each lobe widened by `widen2`,
+// split as (surface part, thread 0's volume part per unit albedo, thread 1's): the integrand is
+// x + A_0·y + A_1·z (ClothBsdf::Point::integrand_split). W = a_j·M·P/Q with Q common to both
+// threads, so one sweep over the samples sums both ⟨P⟩ (for Q) and ⟨f_s·M·P·cos θ_i⟩, and Q
+// divides at the end.
+vec3 cloth_integrand_split_view(ClothView cv, vec3 wi, float widen2) {
+  vec3 n = cv.n, u = cv.u;
+  if (dot(n, wi) <= 0.0 || dot(n, cv.wo) <= 0.0) return vec3(0.0);
+  vec3 v = cross(n, u);
+  float q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, cv.wo), 0.0);
+  vec2 sums[2];
+  for (int j = 0; j < 2; ++j) {
+    vec3 axis = j == 0 ? v : u;
+    Thread thread = widened(u_threads[j], widen2);
+    float p_sum = 0.0;
     vec2 sum = vec2(0.0);
     for (int k = 0; k < u_threads[j].samples; ++k) {
-      float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
-      FiberAngles fi = fiber_angles(along, axis, n, alpha, wi);
-      FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
+      int s = j * MAX_TANGENT_SAMPLES + k;
+      FiberAngles fi = fiber_angles_in(cv.t[s], cv.np[s], axis, wi);
+      FiberAngles fo = cv.o[s];
       float p = projection_term(fi, fo);
+      p_sum += p;
       if (p <= 0.0) continue;
-      float w = u_threads[j].coverage * masking_term(fi, fo) * p / q;
-      if (w <= 0.0) continue;
-      sum += scattering_split(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
+      float mp = masking_term(fi, fo) * p;
+      if (mp <= 0.0) continue;
+      sum += scattering_split(thread, fi, fo) * (mp * cos(fi.theta));
     }
-    sum /= float(u_threads[j].samples);
-    total.x += sum.x;
-    if (j == 0) total.y = sum.y; else total.z = sum.y;
+    float inv_n = 1.0 / float(u_threads[j].samples);
+    q += u_threads[j].coverage * p_sum * inv_n;
+    sums[j] = sum * (u_threads[j].coverage * inv_n);
   }
-  return total;
+  if (q <= Q_FLOOR) return vec3(0.0);
+  return vec3(sums[0].x + sums[1].x, sums[0].y, sums[1].y) / q;
+}
+vec3 cloth_integrand_split_widened(vec3 n, vec3 u, vec3 wi, vec3 wo, float widen2) {
+  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+  return cloth_integrand_split_view(cloth_view(n, u, wo), wi, widen2);
 }
 vec3 cloth_integrand_split(vec3 n, vec3 u, vec3 wi, vec3 wo) { return cloth_integrand_split_widened(n, u, wi, wo, 0.0); }
 // The integrand in colour, each lobe widened by `widen2` (0: ClothBsdf::Point::integrand itself).

@@ -29,6 +29,7 @@ vec3 broad_lobe_split(int vertex, vec3 position, vec3 normal, vec3 warp, int k) 
   vec3 u = normalize(warp - dot(warp, n) * n);
   float lambda = u_sg_sharpness[k];
   vec3 axis = u_sg_axis[k];
+  ClothView view = cloth_view(n, u, wo);  // ω_o's part, the same in every cell
   vec3 lobe = vec3(0.0);
   int cells_per_row = 2 * u_broad_grid;
   for (int i = 0; i < u_broad_grid; ++i) {
@@ -39,7 +40,7 @@ vec3 broad_lobe_split(int vertex, vec3 position, vec3 normal, vec3 warp, int k) 
       int c = i * cells_per_row + j;
       uint word = broad_word(vertex, slot * u_broad_words_per_sg + c / 32);
       if (((word >> uint(c - (c / 32) * 32)) & 1u) == 0u) continue;
-      lobe += cloth_integrand_split(n, u, wi, wo);
+      lobe += cloth_integrand_split_view(view, wi, 0.0);
     }
   }
   return lobe * sg_grid_cell_weight(lambda, u_broad_grid);

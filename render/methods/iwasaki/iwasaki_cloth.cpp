@@ -13,6 +13,7 @@
 #include "methods/program_cloth.h"
 #include "methods/iwasaki/vertex_normal_map.h"
 #include "methods/iwasaki/vertex_pass.h"
+#include "methods/iwasaki/visible_vertices.h"
 #include "methods/weave/weave_ratio.h"
 #include "shaders/embedded_shaders.h"
 
@@ -99,6 +100,8 @@ struct IwasakiCloth::Object {
   explicit Object(GpuMesh m) : mesh(std::move(m)) {}
   GpuMesh mesh;
   std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
+  size_t marks = 0;                  // its mesh in visible_, where there is one
+  size_t vertices = 0;
   std::unique_ptr<ClothBsdf> bsdf;
   std::unique_ptr<ClothBsdf> ratio_bsdf;  // per vertex with a normal map: normal_map_ratio_bsdf(*bsdf)
   const WeightingTablesTexture* tables = nullptr;
@@ -135,6 +138,9 @@ IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evalua
   if (evaluation_ == Evaluation::per_vertex) {
     if (!shaders_.facet_per_sg)  // else facet_draw(), built for the SGs drawn
       draw_program_ = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs), program_source(shaders_.vertex_fs));
+    // The opaque rungs' draw (iwasaki_vertex.vert) places the mesh as visible_vertices.vert does.
+    else if (VisibleVertices::supported())
+      visible_ = std::make_unique<VisibleVertices>();
   } else if (shaders_.broad_lobe_quadrature) {
     broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
   }
@@ -170,6 +176,8 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   }
   // Each vertex reads its own SDF values; per pixel, the pass computes the broad lobes' part.
   if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh);
+  o->vertices = mesh.positions.size();
+  if (per_vertex && visible_) o->marks = visible_->add_mesh(mesh, o->mesh, o->pass->texels());
   if (quadrature) {
     o->broad_bits = std::make_unique<BroadLobeBitsTexture>();
     o->broad_bits->upload(BroadLobeBits::all_open(mesh.positions.size()));
@@ -245,6 +253,17 @@ const GlProgram& IwasakiCloth::facet_draw(int sgs) {
   auto program = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs, defines),
                                              program_source(shaders_.vertex_fs, defines));
   return *facet_draws_.emplace(groups, std::move(program)).first->second;
+}
+
+bool IwasakiCloth::draw_depth(size_t handle, const glm::mat4& view_projection) {
+  if (!visible_) return false;
+  visible_->draw_depth(objects_.at(handle)->marks, view_projection);
+  return true;
+}
+
+size_t IwasakiCloth::visible_vertices(size_t handle) const {
+  const Object& o = *objects_.at(handle);
+  return visible_ && visible_only_ ? visible_->visible(o.marks) : o.vertices;
 }
 
 bool IwasakiCloth::has_visibility(size_t handle) const { return objects_.at(handle)->visibility != nullptr; }
@@ -373,6 +392,14 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   std::vector<int> shares(size_t(std::max(count, 1)), vertex_shares_);
   for (int k = 0; k < count; ++k)
     if (broad[size_t(k)] != 0) shares[size_t(k)] = std::max(vertex_shares_, broad_shares_);
+  if (visible_ && visible_only_) {
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    o.pass->set_marks(visible_->marks(o.marks), visible_->mark(vp, viewport[2], viewport[3]));
+    program_.use();
+  } else {
+    o.pass->clear_marks();
+  }
   o.pass->run_shares(program_, 4, shares);
   const GlProgram& d = facet_draw(count);
   d.use();

@@ -71,6 +71,8 @@ bool pass_holds_albedo(const IwasakiShaders& shaders);
 IwasakiShaders iwasaki_shaders();
 IwasakiShaders iwasaki_quadrature_shaders();
 
+class VisibleVertices;
+
 class IwasakiCloth : public ClothMethod {
 public:
   enum class Evaluation { per_pixel, per_vertex };
@@ -94,6 +96,13 @@ public:
   void set_vertex_refresh(int shares) override { vertex_shares_ = shares < 1 ? 1 : shares; }
   void set_broad_lobe_refresh(int shares) override { broad_shares_ = shares < 1 ? 1 : shares; }
   void refresh_all() override;
+  // Per vertex: the passes compute only the vertices the frame shows (visible_vertices.h), where
+  // the GL can mark them; on by default.
+  void set_visible_vertices_only(bool on) override { visible_only_ = on; }
+  bool draw_depth(size_t handle, const glm::mat4& view_projection) override;
+  // How many of the object's vertices the last draw marked visible; its vertex count where it
+  // computed them all (for tests).
+  size_t visible_vertices(size_t handle) const;
 
 private:
   struct Object;
@@ -113,6 +122,8 @@ private:
   std::vector<std::unique_ptr<Object>> objects_;
   int vertex_shares_ = 1;
   int broad_shares_ = 1;
+  std::unique_ptr<VisibleVertices> visible_;  // per vertex, opaque, where supported
+  bool visible_only_ = true;
 };
 
 }  // namespace weft::gpu

@@ -22,6 +22,7 @@ out vec2 v_uv;
 out vec4 v_sg_surface[SG_GROUPS];
 out vec4 v_sg_warp[SG_GROUPS];
 out vec4 v_sg_weft[SG_GROUPS];
+invariant gl_Position;  // as visible_vertices.vert's, which marks the vertices this draw shows
 void main() {
   ivec2 texel = ivec2(gl_VertexID % u_vertex_width, gl_VertexID / u_vertex_width);
   for (int g = 0; g < SG_GROUPS; ++g) {

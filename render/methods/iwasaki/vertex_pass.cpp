@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <GLES3/gl31.h>
+
 #include "gl/frame_profile.h"
 #include "gl/gl_error.h"
 
@@ -11,6 +13,16 @@ namespace weft::gpu {
 
 namespace {
 constexpr int kWidth = 256;  // texels per row: small rows keep the target near square
+constexpr int kMaxBlocks = 40;  // MAX_PASS_BLOCKS in vertex_pass.glsl
+constexpr int kMarkUnit = 14;   // the marks' two samplers: above every pass's own units
+
+void allocate_marks(const GlTexture& t, int width, int height) {
+  std::vector<GLuint> zero(size_t(width) * height, 0u);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, width, height, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, zero.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
 
 void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height) {
   std::vector<float> texels(size_t(width) * height * 4, 0.0f);
@@ -37,7 +49,23 @@ VertexPass::VertexPass(const TriangleMesh& mesh)
   upload(position_, mesh.positions, width_, height_);
   upload(normal_, mesh.normals, width_, height_);
   upload(warp_, mesh.warps, width_, height_);
+  for (const auto& m : marks_) allocate_marks(m, width_, height_);
   check_gl("uploading the per-vertex pass inputs");
+}
+
+void VertexPass::set_marks(GLuint marks, unsigned stamp) {
+  if (!marked_) valid_blocks_ = 0;  // values kept from before were not kept by marks: all visible ones anew
+  current_marks_ = 1 - current_marks_;
+  previous_stamp_ = stamp_;
+  stamp_ = stamp;
+  marked_ = true;
+  glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);  // the marks were written by shaders
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
+  glActiveTexture(GL_TEXTURE0 + kMarkUnit);
+  glBindTexture(GL_TEXTURE_2D, marks_[current_marks_].id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
@@ -99,11 +127,27 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std
   glUniform1i(program.uniform("u_vertex_width"), width_);
   glUniform1i(program.uniform("u_vertex_rows"), height_);
   glUniform1i(program.uniform("u_vertex_count"), count_);
+  if (blocks > kMaxBlocks) throw GpuError("per-vertex pass: at most " + std::to_string(kMaxBlocks) + " blocks");
+  const GlTexture* marks[2] = {&marks_[current_marks_], &marks_[1 - current_marks_]};
+  const char* mark_names[2] = {"u_vertex_mark", "u_vertex_mark_before"};
+  for (int i = 0; i < 2; ++i) {  // bound culled or not: each declared sampler needs a texture of its type
+    glActiveTexture(GL_TEXTURE0 + kMarkUnit + i);
+    glBindTexture(GL_TEXTURE_2D, marks[i]->id());
+    glUniform1i(program.uniform(mark_names[i]), kMarkUnit + i);
+  }
+  glUniform1i(program.uniform("u_vertex_cull"), marked_ ? 1 : 0);
+  if (marked_) {
+    glUniform1ui(program.uniform("u_vertex_stamp"), stamp_);
+    glUniform1ui(program.uniform("u_vertex_stamp_before"), previous_stamp_);
+    std::vector<GLint> r;
+    for (const auto& [begin, end] : ranges) r.insert(r.end(), {begin, end});
+    glUniform2iv(program.uniform("u_vertex_range"), blocks, r.data());
+  }
   target_->bind();
   glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  if (whole) {
+  if (whole || marked_) {  // culled: the shader keeps what is outside a block's range (u_vertex_range)
     glDrawArrays(GL_TRIANGLES, 0, 3);
   } else {
     // Vertices [begin, end) of a block are texels of whole rows between a partial first and last

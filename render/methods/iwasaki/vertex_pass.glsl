@@ -19,3 +19,22 @@ PassTexel pass_texel() {
   p.y -= k * u_vertex_rows;
   return PassTexel(p, k, p.y * u_vertex_width + p.x);
 }
+
+// Visible vertices only (vertex_pass.h's set_marks): whether the texel keeps its value this run.
+// A vertex is recomputed when a visible triangle uses it (its mark is this run's stamp) and it
+// is in its block's share of this run, or it was not visible at the run before (its kept value
+// may be from any time).
+#define MAX_PASS_BLOCKS 40
+uniform bool u_vertex_cull;
+uniform highp usampler2D u_vertex_mark;
+uniform highp usampler2D u_vertex_mark_before;
+uniform uint u_vertex_stamp;
+uniform uint u_vertex_stamp_before;
+uniform ivec2 u_vertex_range[MAX_PASS_BLOCKS];  // block k recomputes vertices [x, y)
+bool pass_keeps(PassTexel t) {
+  if (!u_vertex_cull) return false;
+  if (texelFetch(u_vertex_mark, t.p, 0).r != u_vertex_stamp) return true;
+  ivec2 r = u_vertex_range[t.k];
+  if (t.i >= r.x && t.i < r.y) return false;
+  return texelFetch(u_vertex_mark_before, t.p, 0).r == u_vertex_stamp_before;
+}

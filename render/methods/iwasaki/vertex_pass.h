@@ -37,8 +37,20 @@ public:
   void run_shares(const GlProgram& program, int first_unit, std::span<const int> block_shares);
   // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
   void invalidate() { valid_blocks_ = 0; }
+  // Visible vertices only (visible_vertices.h): from the next run on, a vertex whose mark in
+  // `marks` (a buffer of one uint per vertex) is not `stamp` keeps its value, as no visible triangle
+  // uses it; a share recomputes its visible vertices, and every vertex that was not visible at
+  // the run before, so no kept value shown is older than a whole round of shares. Called before
+  // each run with the marks for the view it draws.
+  void set_marks(GLuint marks, unsigned stamp);
+  // Every vertex again; the values kept while marked may be of any age, so the next run is whole.
+  void clear_marks() {
+    if (marked_) valid_blocks_ = 0;
+    marked_ = false;
+  }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
+  int texels() const { return width_ * height_; }  // of an input or a block
   // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
   std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
 
@@ -48,7 +60,12 @@ private:
   std::unique_ptr<OffscreenTarget> target_;
   int target_blocks_ = 0;
   int valid_blocks_ = 0;  // blocks holding values from a whole pass (0: none)
-  long calls_ = 0;  // run_shares calls since the last whole pass: block b draws share calls_ mod its shares
+  long calls_ = 0;
+  // The marks of this run and of the run before (R32UI, a texel per vertex as the inputs).
+  GlTexture marks_[2];
+  int current_marks_ = 0;  // marks_[current_marks_]: this run's
+  unsigned stamp_ = 0, previous_stamp_ = 0;
+  bool marked_ = false;  // run_shares calls since the last whole pass: block b draws share calls_ mod its shares
   // Block b recomputes vertices [ranges[b].first, ranges[b].second).
   void draw_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges);
 };
