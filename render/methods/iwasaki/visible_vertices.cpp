@@ -17,6 +17,10 @@ namespace weft::gpu {
 namespace {
 const char* kPreamble = "#version 320 es\nprecision highp float;\nprecision highp int;\n";
 
+// Makes `program` current again, unless it was deleted while current: switching away released it,
+// and using its name now would be an error.
+void restore_program(GLint program) { glUseProgram(program != 0 && glIsProgram(GLuint(program)) ? GLuint(program) : 0); }
+
 GLuint storage(const void* data, size_t bytes) {
   GLuint b = 0;
   glGenBuffers(1, &b);
@@ -124,7 +128,7 @@ unsigned VisibleVertices::mark(const glm::mat4& view_projection, int width, int 
 
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  glUseProgram(GLuint(program));
+  restore_program(program);
   glDepthFunc(GLenum(depth_func));
   glDepthMask(depth_mask);
   if (!depth_test) glDisable(GL_DEPTH_TEST);
@@ -151,7 +155,7 @@ void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) 
   glPolygonOffset(0.0f, 0.0f);
   if (!offset) glDisable(GL_POLYGON_OFFSET_FILL);
   glColorMask(colour_mask[0], colour_mask[1], colour_mask[2], colour_mask[3]);
-  glUseProgram(GLuint(program));
+  restore_program(program);
 }
 
 size_t VisibleVertices::visible(size_t mesh) const {
