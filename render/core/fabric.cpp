@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/preset_names.h"
+
 namespace weft {
 
 namespace {
@@ -199,12 +201,7 @@ std::filesystem::path fabric_file(const std::string& name, const std::filesystem
 }
 
 std::vector<std::string> list_fabric_presets(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
+  return preset_names(dir);
 }
 
 }  // namespace weft

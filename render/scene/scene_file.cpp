@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/preset_names.h"
 #include "scene/gltf_scene.h"
 #include "scene/procedural_meshes.h"
 #include "scene/thread_maps.h"
@@ -328,12 +329,7 @@ Scene load_scene_preset(const std::string& name, const std::filesystem::path& di
 }
 
 std::vector<std::string> list_scene_presets(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
+  return preset_names(dir);
 }
 
 }  // namespace weft
