@@ -20,6 +20,7 @@
 #include "methods/weave/weave_ratio.h"
 #include "shaders/embedded_shaders.h"
 #include "support/gpu_parity.h"
+#include "support/random_direction.h"
 
 using namespace weft;
 using namespace weft::gpu;
@@ -74,12 +75,7 @@ TEST_P(VertexNormalMapParity, GlslMatchesTheCppTwin) {
   constexpr int kW = 32, kH = 16, kCases = kW * kH;
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  auto unit = [&] {
-    for (;;) {
-      const dvec3 v(2 * u01(rng) - 1, 2 * u01(rng) - 1, 2 * u01(rng) - 1);
-      if (glm::length(v) > 0.2 && glm::length(v) < 1.0) return glm::normalize(v);
-    }
-  };
+  auto unit = [&] { return test::random_unit(rng); };
   const double sharpness[] = {0.3, 6.0, 40.0, 400.0};
   std::vector<float> wo(4 * kCases), n(4 * kCases), uu(4 * kCases), wi(4 * kCases), tex(4 * kCases), widen(4 * kCases);
   for (int i = 0; i < kCases; ++i) {

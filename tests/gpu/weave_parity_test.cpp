@@ -22,6 +22,7 @@
 #include "shaders/embedded_shaders.h"
 #include "support/block_means.h"
 #include "support/gpu_parity.h"
+#include "support/random_direction.h"
 
 using namespace weft;
 using namespace weft::gpu;
@@ -90,12 +91,7 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   constexpr int kW = 32, kH = 16, kCases = kW * kH;
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  auto unit = [&] {
-    for (;;) {
-      const dvec3 v(2 * u01(rng) - 1, 2 * u01(rng) - 1, 2 * u01(rng) - 1);
-      if (glm::length(v) > 0.2 && glm::length(v) < 1.0) return glm::normalize(v);
-    }
-  };
+  auto unit = [&] { return test::random_unit(rng); };
   std::vector<float> wo(4 * kCases), n(4 * kCases), uu(4 * kCases), st(4 * kCases), fab(4 * kCases), q(4 * kCases),
       d(4 * kCases);
   std::vector<SurfaceFrame> frames(kCases);
