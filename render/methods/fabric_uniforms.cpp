@@ -34,9 +34,10 @@ void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
       spreads[j * kMaxTangentSamples + k] = float(bsdf.tilt_spread(j, k));
     }
   }
-  glUniform1fv(program.uniform("u_tilts"), 2 * kMaxTangentSamples, tilts.data());
+  // Four to a vec4 (microcylinder.glsl says why).
+  glUniform4fv(program.uniform("u_tilts"), 2 * kMaxTangentSamples / 4, tilts.data());
   // Only shaders that widen their lobes by it declare it (iwasaki.glsl); elsewhere a no-op.
-  glUniform1fv(program.uniform("u_tilt_spreads"), 2 * kMaxTangentSamples, spreads.data());
+  glUniform4fv(program.uniform("u_tilt_spreads"), 2 * kMaxTangentSamples / 4, spreads.data());
 }
 
 }  // namespace weft::gpu

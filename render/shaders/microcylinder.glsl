@@ -18,7 +18,10 @@ struct Thread {
 };
 
 uniform Thread u_threads[2];
-uniform float u_tilts[2 * MAX_TANGENT_SAMPLES];  // thread 0's N_0 tilts, then thread 1's at MAX_TANGENT_SAMPLES
+// Thread 0's N_0 tilts, then thread 1's at MAX_TANGENT_SAMPLES; four to a vec4, because some
+// drivers (NVIDIA's) give each element of a uniform array a whole register and a program 1024.
+uniform vec4 u_tilts[MAX_TANGENT_SAMPLES / 2];
+float thread_tilt(int s) { return u_tilts[s >> 2][s & 3]; }
 
 struct FiberAngles { float theta; float phi; float psi; };
 
@@ -101,7 +104,7 @@ float cloth_q(vec3 n, vec3 u, vec3 wi, vec3 wo) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
     float sum = 0.0;
     for (int k = 0; k < u_threads[j].samples; ++k) {
-      float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
+      float alpha = thread_tilt(j * MAX_TANGENT_SAMPLES + k);
       sum += projection_term(fiber_angles(along, axis, n, alpha, wi), fiber_angles(along, axis, n, alpha, wo));
     }
     q += u_threads[j].coverage * sum / float(u_threads[j].samples);
@@ -135,7 +138,7 @@ ClothView cloth_view(vec3 n, vec3 u, vec3 wo) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
     for (int k = 0; k < u_threads[j].samples; ++k) {
       int s = j * MAX_TANGENT_SAMPLES + k;
-      float alpha = u_tilts[s], c = cos(alpha), sn = sin(alpha);
+      float alpha = thread_tilt(s), c = cos(alpha), sn = sin(alpha);
       cv.t[s] = c * along + sn * n;
       cv.np[s] = -sn * along + c * n;
       cv.o[s] = fiber_angles_in(cv.t[s], cv.np[s], axis, wo);

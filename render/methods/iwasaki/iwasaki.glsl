@@ -23,12 +23,21 @@ uniform float u_sg_level_w[MAX_SGS];  // weight of the second
 
 uniform highp sampler2DArray u_t_u;   // U factors: ξ node grid, 4 ranks per layer
 uniform highp sampler2DArray u_t_v;   // V factors: ω_o node grid
-uniform ivec2 u_tables[MAX_TABLES];   // (first layer, layers) of table d·levels + l
+// The tables below are packed four scalars (two pairs) to a vector, as u_tilts is
+// (microcylinder.glsl): a program must fit in NVIDIA's 1024 uniform registers.
+uniform ivec4 u_tables[MAX_TABLES / 2];   // (first layer, layers) of table d·levels + l, two a vector
 uniform int u_levels;
-uniform float u_log_lambdas[MAX_LEVELS];  // log λ of each level (WeightingTables::lambdas)
-uniform int u_sample_table[2 * MAX_TANGENT_SAMPLES];  // sample s (thread 0's, then thread 1's) → d
+uniform vec4 u_log_lambdas[MAX_LEVELS / 4];  // log λ of each level (WeightingTables::lambdas)
+uniform ivec4 u_sample_table[MAX_TANGENT_SAMPLES / 2];  // sample s (thread 0's, then thread 1's) → d
 uniform float u_xi_n;
-uniform float u_tilt_spreads[2 * MAX_TANGENT_SAMPLES];  // ClothBsdf::tilt_spread, laid out as u_tilts
+uniform vec4 u_tilt_spreads[MAX_TANGENT_SAMPLES / 2];  // ClothBsdf::tilt_spread, laid out as u_tilts
+ivec2 table_entry(int index) {
+  ivec4 pair = u_tables[index >> 1];
+  return (index & 1) == 0 ? pair.xy : pair.zw;
+}
+float log_lambda(int level) { return u_log_lambdas[level >> 2][level & 3]; }
+int sample_table(int s) { return u_sample_table[s >> 2][s & 3]; }
+float tilt_spread(int s) { return u_tilt_spreads[s >> 2][s & 3]; }
 uniform float u_wo_n;
 
 uniform bool u_visibility;
@@ -46,7 +55,7 @@ vec2 node_texcoord(vec2 s, float n) { return s * (0.5 * (n - 1.0) / n) + 0.5; }
 
 // Σ_r U_r(ξ)·V_r(ω_o) of table `index`.
 float table_dot(int index, vec2 xi_tc, vec2 wo_tc) {
-  ivec2 e = u_tables[index];
+  ivec2 e = table_entry(index);
   float sum = 0.0;
   for (int l = 0; l < e.y; ++l) {
     float layer = float(e.x + l);
@@ -223,7 +232,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         vec3 e = xi - c * n;
         float s = length(e);
         e = s > 1e-6 ? e / s : normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
-        float lp = max(lambda * s, exp(u_log_lambdas[0]));
+        float lp = max(lambda * s, exp(log_lambda(0)));
         float scale = sg_clamped_cosine_integral(lambda, c) / sg_clamped_cosine_integral(lp, 0.0);
         float w = horizon_sliver_weight(lambda);
         if (w > 0.0) {
@@ -236,11 +245,11 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         xi = e;
         sigma_k = sqrt(2.0 / lp);
         // WeightingTables::level_weights for λ'.
-        float ll = clamp(log(lp), u_log_lambdas[0], u_log_lambdas[u_levels - 1]);
+        float ll = clamp(log(lp), log_lambda(0), log_lambda(u_levels - 1));
         l0 = 0;
-        while (l0 + 2 < u_levels && u_log_lambdas[l0 + 1] < ll) ++l0;
+        while (l0 + 2 < u_levels && log_lambda(l0 + 1) < ll) ++l0;
         l1 = min(l0 + 1, u_levels - 1);
-        lw = l1 > l0 ? clamp((ll - u_log_lambdas[l0]) / (u_log_lambdas[l1] - u_log_lambdas[l0]), 0.0, 1.0) : 0.0;
+        lw = l1 > l0 ? clamp((ll - log_lambda(l0)) / (log_lambda(l1) - log_lambda(l0)), 0.0, 1.0) : 0.0;
       }
       float lambda_k = 2.0 / (sigma_k * sigma_k);
       float w_peak = clamp(0.5 * log2(lambda_k / 2.0), 0.0, 1.0);  // iwasaki.cpp's lobe_peak_weight
@@ -259,9 +268,9 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
         float surf = 0.0, vol = 0.0;
         for (int q = 0; q < count; ++q) {
-          int d = u_sample_table[j * MAX_TANGENT_SAMPLES + q];
+          int d = sample_table(j * MAX_TANGENT_SAMPLES + q);
           float T = max(table_t(d, l0, l1, lw, xi_tc, wo_tc), 0.0);
-          float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + q];
+          float alpha = thread_tilt(j * MAX_TANGENT_SAMPLES + q);
           float ca = cos(alpha), sa = sin(alpha);
           vec3 t = ca * along + sa * n, np = -sa * along + ca * n;
           FiberAngles fk = fiber_angles(along, axis, n, alpha, xi);
@@ -274,7 +283,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.
-          float c_tilt = 0.5 * (cos(phi_k) + cos(fo.phi)) * u_tilt_spreads[j * MAX_TANGENT_SAMPLES + q];
+          float c_tilt = 0.5 * (cos(phi_k) + cos(fo.phi)) * tilt_spread(j * MAX_TANGENT_SAMPLES + q);
           float gs = sqrt(2.0) * sqrt(p.gamma_s * p.gamma_s + c_tilt * c_tilt);
           float gv = sqrt(2.0) * sqrt(p.gamma_v * p.gamma_v + c_tilt * c_tilt);
           // T at the surface lobe's peak (fiber_direction) for both longitudinal lobes.

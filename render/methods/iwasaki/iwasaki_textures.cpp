@@ -74,15 +74,23 @@ void WeightingTablesTexture::bind(const GlProgram& p, int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit + 1);
   glBindTexture(GL_TEXTURE_2D_ARRAY, v_.id());
   glUniform1i(p.uniform("u_t_v"), unit + 1);
-  glUniform2iv(p.uniform("u_tables"), GLsizei(index_.size() / 2), index_.data());
+  // The shader's tables are packed four scalars to a vector (iwasaki.glsl says why): each upload
+  // is padded to whole vectors.
+  auto padded = [](auto values) {
+    values.resize((values.size() + 3) / 4 * 4);
+    return values;
+  };
+  const std::vector<GLint> tables = padded(index_);
+  glUniform4iv(p.uniform("u_tables"), GLsizei(tables.size() / 4), tables.data());
   glUniform1i(p.uniform("u_levels"), t.level_count());
   std::vector<GLfloat> log_lambdas;
   for (double l : t.lambdas) log_lambdas.push_back(GLfloat(std::log(l)));
-  glUniform1fv(p.uniform("u_log_lambdas"), GLsizei(log_lambdas.size()), log_lambdas.data());
+  log_lambdas = padded(std::move(log_lambdas));
+  glUniform4fv(p.uniform("u_log_lambdas"), GLsizei(log_lambdas.size() / 4), log_lambdas.data());
   std::vector<GLint> sample_table(2 * kMaxTangentSamples, 0);
   for (int j = 0, s = 0; j < 2; ++j)
     for (int k = 0; k < t.tangent_samples[j]; ++k, ++s) sample_table[j * kMaxTangentSamples + k] = t.sample_table[s];
-  glUniform1iv(p.uniform("u_sample_table"), GLsizei(sample_table.size()), sample_table.data());
+  glUniform4iv(p.uniform("u_sample_table"), GLsizei(sample_table.size() / 4), sample_table.data());
   glUniform1f(p.uniform("u_xi_n"), float(t.xi_grid.n));
   glUniform1f(p.uniform("u_wo_n"), float(t.wo_grid.n));
 }

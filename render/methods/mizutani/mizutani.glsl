@@ -177,7 +177,7 @@ vec3 mizutani_radiance(vec3 n, vec3 u, vec3 wo) {
         int s = j == 0 ? k : u_threads[0].samples + k;
         float T = weighting_value(s, lambda, xi_local, wo_local);
         if (T <= 0.0) continue;
-        float alpha = u_tilts[j * MAX_TANGENT_SAMPLES + k];
+        float alpha = thread_tilt(j * MAX_TANGENT_SAMPLES + k);
         FiberAngles o = fiber_angles(along, axis, n, alpha, wo);
         FiberAngles kf = fiber_angles(along, axis, n, alpha, xi);
         float cos_k = cos(kf.theta);
