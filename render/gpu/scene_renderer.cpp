@@ -155,9 +155,16 @@ void SceneRenderer::set_backdrop(Backdrop backdrop) {
   }
 }
 
+void SceneRenderer::set_visible_vertices_only(bool on) {
+  visible_only_ = on;
+  cloth_->set_visible_vertices_only(on);
+  if (weave_) weave_->set_visible_vertices_only(on);
+}
+
 void SceneRenderer::set_weave(bool on) {
   if (on && !weave_) {
     auto layer = std::make_unique<WeaveLayer>();
+    layer->set_visible_vertices_only(visible_only_);
     for (auto& o : objects_)
       if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
     weave_ = std::move(layer);

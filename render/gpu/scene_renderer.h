@@ -78,8 +78,8 @@ public:
   void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
   void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
   void refresh_all() { cloth_->refresh_all(); }
-  // ClothMethod::set_visible_vertices_only (on by default).
-  void set_visible_vertices_only(bool on) { cloth_->set_visible_vertices_only(on); }
+  // ClothMethod::set_visible_vertices_only and the weave layer's (on by default).
+  void set_visible_vertices_only(bool on);
   // Opaque cloth's depth drawn before its shading (ClothMethod::draw_depth); on by default.
   void set_depth_prepass(bool on) { depth_prepass_ = on; }
   // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
@@ -102,6 +102,7 @@ private:
   std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
   bool weave_on_ = false;
+  bool visible_only_ = true;  // set_visible_vertices_only
   bool depth_prepass_ = true;
   std::map<const TextureImage*, std::unique_ptr<ThreadMapTexture>> textures_;  // each image once
   std::map<const TextureImage*, std::unique_ptr<NormalMapTexture>> normal_textures_;  // linear, each once

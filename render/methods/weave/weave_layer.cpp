@@ -61,6 +61,8 @@ size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, gl
   for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(mesh.uvs[i], 0.0);
   o->mesh->add_attribute(kUvAttribute, uv);
   o->pass = std::make_unique<VertexPass>(mesh);
+  if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
+  if (visible_) o->marks = visible_->add_mesh(mesh, *o->mesh, o->pass->texels());
   o->tiles_per_uv = tiles_per_uv;
   o->box_min = o->box_max = mesh.positions.at(0);
   for (const auto& p : mesh.positions) {
@@ -140,6 +142,11 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     }
   };
   set_up(*p.pass);
+  if (visible_ && visible_only_) {  // the frame's viewport: the marks rasterise as the draw below does
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    o.pass->set_marks(visible_->marks(o.marks), visible_->mark(vp, viewport[2], viewport[3]));
+  }
   o.pass->run(*p.pass, 0, groups + 1);
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

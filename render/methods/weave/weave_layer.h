@@ -16,6 +16,7 @@
 #include "gl/gpu_mesh.h"
 #include "methods/fabric_uniforms.h"
 #include "methods/iwasaki/vertex_pass.h"
+#include "methods/iwasaki/visible_vertices.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
@@ -37,11 +38,15 @@ public:
   // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
   // depth or alpha writes); restores blending and depth state after.
   void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs);
+  // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
+  // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
+  void set_visible_vertices_only(bool on) { visible_only_ = on; }
 
 private:
   struct Object {
     std::unique_ptr<GpuMesh> mesh;
     std::unique_ptr<VertexPass> pass;
+    size_t marks = 0;  // its mesh in visible_, where there is one
     std::unique_ptr<ClothBsdf> bsdf;
     std::unique_ptr<WeaveLayout> layout;
     glm::dvec2 tiles_per_uv{1.0};
@@ -54,6 +59,8 @@ private:
   Programs& programs(int q_groups);
   std::vector<std::unique_ptr<Object>> objects_;
   std::map<int, Programs> programs_;  // by Q_GROUPS
+  std::unique_ptr<VisibleVertices> visible_;  // where supported
+  bool visible_only_ = true;
   // The vertex pass averages each float continuously enough for the sharpest Table II lobe (satin's
   // γ_s = 2.5°): its fabric-level term must be the repeat's average of what the pixels show.
   int tangent_samples_ = kMaxTangentSamples;

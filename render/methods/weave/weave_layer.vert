@@ -14,6 +14,7 @@ out vec3 v_warp;
 out highp vec2 v_uv;
 out vec3 v_fabric;
 out vec4 v_q[Q_GROUPS];
+invariant gl_Position;  // as visible_vertices.vert's, which marks the vertices this draw shows
 void main() {
   ivec2 texel = ivec2(gl_VertexID % u_vertex_width, gl_VertexID / u_vertex_width);
   v_fabric = texelFetch(u_vertex_radiance, texel, 0).rgb;

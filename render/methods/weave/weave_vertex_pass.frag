@@ -6,6 +6,7 @@ uniform vec3 u_eye;
 out vec4 o_value;
 void main() {
   PassTexel t = pass_texel();
+  if (pass_keeps(t)) discard;  // no visible triangle uses it
   if (t.i >= u_vertex_count || t.k > Q_GROUPS) {
     o_value = vec4(0.0);
     return;

@@ -1,0 +1,78 @@
+// The weave layer's vertex pass for the vertices a frame shows only (methods/weave/weave_layer.h,
+// iwasaki/visible_vertices.h): the kiosk's frame of a pillow at its close-up, and turned a few
+// degrees from there, is the frame with every vertex computed, bit for bit, for a per-vertex rung
+// and for `sheen` (whose own draw has no passes, so the weave's are the only ones culled); and the
+// layer did draw (the frame differs from the weave off).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bundle/bundle_reader.h"
+#include "gl/offscreen_target.h"
+#include "gpu/egl_context.h"
+#include "kiosk/camera_zoom.h"
+#include "kiosk/kiosk_bundle.h"
+#include "kiosk/kiosk_renderer.h"
+#include "methods/iwasaki/visible_vertices.h"
+#include "support/small_bundle.h"
+
+using namespace weft;
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+Camera turned(const Camera& c, double deg) {
+  Camera out = c;
+  const glm::dmat4 r = glm::rotate(glm::dmat4(1.0), glm::radians(deg), glm::dvec3(0, 0, 1));
+  out.position = glm::dvec3(r * glm::dvec4(c.position - c.target, 0.0)) + c.target;
+  return out;
+}
+
+}  // namespace
+
+TEST(WeaveCulling, VisibleVerticesOnlyDrawTheSameFrame) {
+  const test::SmallBundle small("pillow");
+  ASSERT_TRUE(small.baked()) << "bake failed; see " << small.dir() / "bake.log";
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  if (!gpu::VisibleVertices::supported()) GTEST_SKIP() << "no GLES 3.2: every vertex is computed";
+  const bundle::BundleReader reader = bundle::BundleReader::open(small.file());
+  for (const std::string name : {"iwasaki_vertex", "sheen"}) {
+    SCOPED_TRACE(name);
+    const KioskBundle kb = read_kiosk_bundle(reader, name);
+    const methods::RuntimeMethod& method = kiosk_method(name, kb, small.file());
+    const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
+    const Camera closeup = closeup_of(kb.scene.scene, cloth, kHeight);
+    auto renderer = [&](bool visible_only) {
+      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      r->set_lighting(kb.scene.sgs);
+      r->set_visible_vertices_only(visible_only);
+      return r;
+    };
+    std::unique_ptr<gpu::SceneRenderer> culled = renderer(true), full = renderer(false), plain = renderer(true);
+    ASSERT_TRUE(culled->weave()) << "the kiosk's renderer arms the weave layer";
+    plain->set_weave(false);
+    gpu::OffscreenTarget a(kWidth, kHeight), b(kWidth, kHeight), c(kWidth, kHeight);
+    for (double deg : {0.0, 4.0}) {
+      SCOPED_TRACE(deg);
+      const Camera cam = turned(closeup, deg);
+      a.bind();
+      culled->draw(cam, kWidth, kHeight);
+      b.bind();
+      full->draw(cam, kWidth, kHeight);
+      c.bind();
+      plain->draw(cam, kWidth, kHeight);
+      const std::vector<float> pa = a.read_rgba(), pb = b.read_rgba(), pc = c.read_rgba();
+      size_t differ = 0, weave = 0;
+      for (size_t i = 0; i < pa.size(); ++i) {
+        differ += pa[i] != pb[i] ? 1 : 0;
+        weave += pa[i] != pc[i] ? 1 : 0;
+      }
+      EXPECT_EQ(differ, 0u) << "channels that differ from the every-vertex frame";
+      EXPECT_GT(weave, 1000u) << "the weave layer drew over too little of the frame to test anything";
+    }
+  }
+}
