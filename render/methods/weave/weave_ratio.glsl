@@ -7,30 +7,43 @@ uniform vec3 u_sg_axis[MAX_SGS];
 uniform vec3 u_sg_power[MAX_SGS];
 uniform float u_sg_widen2[MAX_SGS];  // weave_lobe_widening(λ_k)
 
-// f_s · M · P · cos θ_i of thread j's sample at tilt α: ClothBsdf::Point::resolved_scattering.
-vec3 resolved_scattering(vec3 n, vec3 u, int j, float alpha, vec3 wi, vec3 wo, float widen2) {
-  if (dot(n, wi) <= 0.0 || dot(n, wo) <= 0.0) return vec3(0.0);
+// What thread j's sample at tilt α needs of ω_o alone, taken once for all the SGs: its frame
+// (t, n', axis) and ω_o's fiber angles in it; `lit` false where ω_o is below the surface.
+struct ResolvedView {
+  vec3 t, np, axis;
+  FiberAngles fo;
+  bool lit;
+};
+ResolvedView resolved_view(vec3 n, vec3 u, int j, float alpha, vec3 wo) {
   vec3 v = cross(n, u);
   vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-  FiberAngles fi = fiber_angles(along, axis, n, alpha, wi);
-  FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
-  float p = projection_term(fi, fo);
+  float c = cos(alpha), s = sin(alpha);
+  vec3 t = c * along + s * n, np = -s * along + c * n;
+  return ResolvedView(t, np, axis, fiber_angles_in(t, np, axis, wo), dot(n, wo) > 0.0);
+}
+
+// f_s · M · P · cos θ_i of thread j's sample seen as `view`: ClothBsdf::Point::resolved_scattering.
+vec3 resolved_scattering(ResolvedView view, vec3 n, int j, vec3 wi, float widen2) {
+  if (dot(n, wi) <= 0.0 || !view.lit) return vec3(0.0);
+  FiberAngles fi = fiber_angles_in(view.t, view.np, view.axis, wi);
+  float p = projection_term(fi, view.fo);
   if (p <= 0.0) return vec3(0.0);
-  float w = masking_term(fi, fo) * p;
+  float w = masking_term(fi, view.fo) * p;
   if (w <= 0.0) return vec3(0.0);
-  return scattering(widened(u_threads[j], widen2), fi, fo) * (w * cos(fi.theta));
+  return scattering(widened(u_threads[j], widen2), fi, view.fo) * (w * cos(fi.theta));
 }
 
 // Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at arc position `arc` of its float.
 vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, vec4 q[Q_GROUPS]) {
-  float alpha = curve_tilt(j, arc);
+  ResolvedView view = resolved_view(n, u, j, curve_tilt(j, arc), wo);
   vec3 resolved = vec3(0.0);
+  if (!view.lit) return resolved;
   for (int g = 0; g < Q_GROUPS; ++g)
     for (int c = 0; c < 4; ++c) {
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
       if (q[g][c] <= Q_FLOOR) continue;
-      resolved += u_sg_power[k] * resolved_scattering(n, u, j, alpha, u_sg_axis[k], wo, u_sg_widen2[k]) / q[g][c];
+      resolved += u_sg_power[k] * resolved_scattering(view, n, j, u_sg_axis[k], u_sg_widen2[k]) / q[g][c];
     }
   return resolved;
 }
