@@ -6,8 +6,12 @@
 //  - speed at 640×480 of the same view, with and without the layer (median of timed frames);
 //  - at the scene's own camera the layer must leave the frame exactly as the rung draws it;
 //  - flicker: a camera dollying from 60 % to 100 % of the way to the close-up in 16 steps (the
-//    level-of-detail transition), mean frame-to-frame relative change with and without the layer.
-// WEFT_WEAVE_CASES picks cases ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table.
+//    level-of-detail transition), mean frame-to-frame relative change with and without the layer:
+//    per pixel (the texture moving across the screen counts), and at fixed surface points (each
+//    pixel's surface point, found by a ray, looked up where the frame before showed it: what is
+//    left is shimmer, and the view's own small change).
+// WEFT_WEAVE_CASES picks cases ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table;
+// WEFT_WEAVE_FLICKER_ONLY skips the references, accuracy and speed (minutes instead of an hour).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +25,7 @@
 #include "frame/frame_inputs.h"
 #include "frame/frame_render.h"
 #include "kiosk/camera_zoom.h"
+#include "reference/ray_scene.h"
 #include "reference/scene_render.h"
 #include "scene/weave_scale.h"
 
@@ -60,13 +65,62 @@ double mean_change(const Image& a, const Image& b, const std::vector<bool>& clot
     }
   return n && sum > 0.0 ? std::sqrt(d2 / n) / (sum / n) : 0.0;
 }
+// Where surface point x lies in a width×height image from `c` (camera_ray's inverse: (0,0) the
+// top-left corner); false behind the camera.
+bool project(const Camera& c, int width, int height, const glm::dvec3& x, glm::dvec2& px) {
+  const glm::dvec3 forward = glm::normalize(c.target - c.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, c.up));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const glm::dvec3 d = x - c.position;
+  const double f = glm::dot(d, forward);
+  if (f <= 0.0) return false;
+  const double tan_half = std::tan(glm::radians(c.fov_deg) / 2.0), aspect = double(width) / height;
+  px = {(glm::dot(d, right) / f / (tan_half * aspect) + 1.0) * width / 2.0, (1.0 - glm::dot(d, up) / f / tan_half) * height / 2.0};
+  return true;
+}
+
+// Relative change at fixed surface points from frame `prev` (camera `was`) to `next` (camera
+// `now`): each cloth pixel of `next` whose surface point `was` also saw (the first hit along its
+// ray), compared with `prev` bilinearly interpolated there among cloth pixels.
+double surface_change(const RayScene& rays, const GpuFrame& prev, const Camera& was, const GpuFrame& next, const Camera& now,
+                      int w, int h) {
+  double d2 = 0.0, sum = 0.0;
+  size_t n = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!next.cloth[size_t(y) * w + x]) continue;
+      const auto hit = rays.intersect(now.position, camera_ray(now, w, h, x + 0.5, y + 0.5));
+      if (!hit) continue;
+      const glm::dvec3 p = rays.surface(*hit).position;
+      glm::dvec2 q;
+      if (!project(was, w, h, p, q)) continue;
+      const glm::dvec3 back = p - was.position;
+      const auto seen = rays.intersect(was.position, glm::normalize(back));
+      if (!seen || glm::length(rays.surface(*seen).position - p) > 1e-4 * glm::length(back)) continue;
+      const double fx = q.x - 0.5, fy = q.y - 0.5;
+      const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+      if (x0 < 0 || y0 < 0 || x0 + 1 >= w || y0 + 1 >= h) continue;
+      bool all_cloth = true;
+      for (int k = 0; k < 4; ++k) all_cloth = all_cloth && prev.cloth[size_t(y0 + k / 2) * w + x0 + k % 2];
+      if (!all_cloth) continue;
+      const double ax = fx - x0, ay = fy - y0;
+      const glm::dvec3 was_value = (1 - ay) * ((1 - ax) * prev.image.at(x0, y0) + ax * prev.image.at(x0 + 1, y0)) +
+                                   ay * ((1 - ax) * prev.image.at(x0, y0 + 1) + ax * prev.image.at(x0 + 1, y0 + 1));
+      const glm::dvec3 d = next.image.at(x, y) - was_value;
+      d2 += glm::dot(d, d) / 3.0;
+      sum += (was_value.r + was_value.g + was_value.b) / 3.0;
+      ++n;
+    }
+  return n && sum > 0.0 ? std::sqrt(d2 / n) / (sum / n) : 0.0;
+}
 }  // namespace
 
 TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
   constexpr int kW = 160, kH = 120;
   std::ostringstream table;
   table << "| scene | fabric | repeat px | rung | rung vs fabric-level reference | error alone | error + weave | ms alone | ms + weave | ratio | "
-           "far view max change | flicker alone | flicker + weave |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "far view max change | flicker alone | flicker + weave | at surface points alone | at surface points + weave |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases()) {
     FrameInputs in = load_frame_inputs({kAssets, c.scene, c.fabric, "", ""});
     const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
@@ -82,6 +136,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
         const double px = std::min(r.x, r.y) * kH / (2.0 * d * std::tan(glm::radians(close.fov_deg) / 2.0));
         repeat_px = repeat_px == 0.0 ? px : std::min(repeat_px, px);
       }
+    const bool flicker_only = std::getenv("WEFT_WEAVE_FLICKER_ONLY") != nullptr;
     ReferenceRenderOptions ro;
     ro.width = kW;
     ro.height = kH;
@@ -91,12 +146,16 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     ro.resolved_weave = true;
     ro.supersample = std::getenv("WEFT_WEAVE_SUPERSAMPLE") ? std::atoi(std::getenv("WEFT_WEAVE_SUPERSAMPLE")) : 3;
     const auto t0 = std::chrono::steady_clock::now();
-    const ReferenceRenderResult ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
-    std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
-              << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
-    ro.resolved_weave = false;
-    ro.supersample = 1;
-    const ReferenceRenderResult fabric_ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+    ReferenceRenderResult ref, fabric_ref;
+    if (!flicker_only) {
+      ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+      std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+      ro.resolved_weave = false;
+      ro.supersample = 1;
+      fabric_ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+    }
+    const RayScene rays(in.scene);
     IwasakiBakeOptions bo;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, bo));
     const bool quick = std::getenv("WEFT_WEAVE_QUICK") != nullptr;  // accuracy of iwasaki_vertex only
@@ -109,31 +168,39 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
         return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.iwasaki, gpu::Backdrop::measure, weave);
       };
       const Image alone_image = frame(close, kW, kH, 0, false).image;
-      const double alone = bench::cloth_error(alone_image, ref.image, ref.kinds).relative_rmse;
-      const double fabric_level = bench::cloth_error(alone_image, fabric_ref.image, fabric_ref.kinds).relative_rmse;
-      const double woven = bench::cloth_error(frame(close, kW, kH, 0, true).image, ref.image, ref.kinds).relative_rmse;
+      const double nan = std::nan("");
+      const double alone = flicker_only ? nan : bench::cloth_error(alone_image, ref.image, ref.kinds).relative_rmse;
+      const double fabric_level = flicker_only ? nan : bench::cloth_error(alone_image, fabric_ref.image, fabric_ref.kinds).relative_rmse;
+      const double woven =
+          flicker_only ? nan : bench::cloth_error(frame(close, kW, kH, 0, true).image, ref.image, ref.kinds).relative_rmse;
       const int speed_frames = method == "iwasaki" ? 1 : 5;
-      const double ms_alone = quick ? 1.0 : frame(close, 640, 480, speed_frames, false).median_ms;
-      const double ms_woven = quick ? 1.0 : frame(close, 640, 480, speed_frames, true).median_ms;
+      const bool timed = !quick && !flicker_only;
+      const double ms_alone = timed ? frame(close, 640, 480, speed_frames, false).median_ms : nan;
+      const double ms_woven = timed ? frame(close, 640, 480, speed_frames, true).median_ms : nan;
       const GpuFrame far_alone = frame(far, kW, kH, 0, false), far_woven = frame(far, kW, kH, 0, true);
       double far_change = 0.0;
       for (size_t i = 0; i < far_alone.image.pixels.size(); ++i)
         far_change = std::max(far_change, glm::length(far_alone.image.pixels[i] - far_woven.image.pixels[i]));
-      double flicker[2] = {0.0, 0.0};
+      double flicker[2] = {0.0, 0.0}, at_points[2] = {0.0, 0.0};
       for (int weave = 0; weave < (quick ? 0 : 2); ++weave) {
-        GpuFrame prev = frame(dolly(far, close, 0.6), kW, kH, 0, weave);
+        Camera was = dolly(far, close, 0.6);
+        GpuFrame prev = frame(was, kW, kH, 0, weave);
         for (int k = 1; k <= 16; ++k) {
-          GpuFrame next = frame(dolly(far, close, 0.6 + 0.4 * k / 16.0), kW, kH, 0, weave);
+          const Camera now = dolly(far, close, 0.6 + 0.4 * k / 16.0);
+          GpuFrame next = frame(now, kW, kH, 0, weave);
           std::vector<bool> both(next.cloth.size());
           for (size_t i = 0; i < both.size(); ++i) both[i] = next.cloth[i] && prev.cloth[i];
           flicker[weave] += mean_change(next.image, prev.image, both) / 16.0;
+          at_points[weave] += surface_change(rays, prev, was, next, now, kW, kH) / 16.0;
           prev = std::move(next);
+          was = now;
         }
       }
-      char row[512];
-      std::snprintf(row, sizeof row, "| %s | %s | %.0f | %s | %.4f | %.4f | %.4f | %.1f | %.1f | %.2f | %.1e | %.4f | %.4f |\n",
+      char row[640];
+      std::snprintf(row, sizeof row,
+                    "| %s | %s | %.0f | %s | %.4f | %.4f | %.4f | %.1f | %.1f | %.2f | %.1e | %.4f | %.4f | %.4f | %.4f |\n",
                     c.scene.c_str(), c.fabric.empty() ? "(scene's)" : c.fabric.c_str(), repeat_px, method.c_str(), fabric_level, alone,
-                    woven, ms_alone, ms_woven, ms_woven / ms_alone, far_change, flicker[0], flicker[1]);
+                    woven, ms_alone, ms_woven, ms_woven / ms_alone, far_change, flicker[0], flicker[1], at_points[0], at_points[1]);
       table << row;
       std::cout << row << std::flush;
       EXPECT_EQ(far_change, 0.0) << c.scene << " " << method << ": the layer changed the distant view";
