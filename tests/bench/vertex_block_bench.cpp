@@ -1,10 +1,12 @@
 // Benchmark (label bench): how many of the per-vertex passes' 4×4 texel blocks (llvmpipe's unit of
 // fragment work) hold a vertex the frame shows, for the showroom's cloth in four vertex orders:
-// the glTF's, a plain Morton order (meshoptimizer's spatial sort), the Morton order laid out block
+// the scene's (the glTF's), a plain Morton order (meshoptimizer's spatial sort), the Morton order laid out block
 // by block ("M.blocks"), and the bake's (grouped by facing first, scene/mesh_vertex_order.h). Visible: a vertex of a triangle that
 // a ray through some pixel centre of a 640×480 frame hits first (Embree; the GL's marks add the
 // silhouette's ties), from the scene's camera turned about the product (kiosk/turntable.h).
-// WEFT_VERTEX_BLOCK_SCENE: the scene (default "showroom").
+// WEFT_VERTEX_BLOCK_SCENE: the scene (default "showroom"); WEFT_VERTEX_BLOCK_BUNDLE: a baked bundle's
+// scene instead, its stored order in the column "given" (a bundle baked with the order shows the
+// bake's column there).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,7 +16,9 @@
 
 #include <meshoptimizer.h>
 
+#include "bundle/bundle_reader.h"
 #include "kiosk/turntable.h"
+#include "runtime/scene_bundle.h"
 #include "reference/ray_scene.h"
 #include "scene/mesh_vertex_order.h"
 #include "scene/scene_file.h"
@@ -49,10 +53,12 @@ std::vector<uint32_t> morton(const TriangleMesh& m) {
 
 TEST(VertexBlockBench, VisibleBlocksPerVertexOrder) {
   const char* name = std::getenv("WEFT_VERTEX_BLOCK_SCENE");
-  const Scene scene = load_scene_named(name && *name ? name : "showroom", WEFT_SOURCE_ASSETS);
+  const char* bundle = std::getenv("WEFT_VERTEX_BLOCK_BUNDLE");
+  const Scene scene = bundle && *bundle ? read_scene_bundle(bundle::BundleReader::open(bundle)).scene
+                                        : load_scene_named(name && *name ? name : "showroom", WEFT_SOURCE_ASSETS);
   const RayScene rays(scene);
   const glm::dvec3 pivot = turntable_pivot(scene);
-  std::printf("%-6s %-18s %8s %8s %8s %8s %9s %8s\n", "turn", "object", "vertices", "visible", "glTF", "Morton",
+  std::printf("%-6s %-18s %8s %8s %8s %8s %9s %8s\n", "turn", "object", "vertices", "visible", "given", "Morton",
               "M.blocks", "bake");
   for (double deg : {0.0, 5.0, 90.0, 180.0, 270.0}) {
     const Camera cam = turned_about_z(scene.camera, deg, pivot);
