@@ -40,9 +40,9 @@ Scene order_scene_meshes(Scene scene);
 
 // The bake's meshes at `levels` of refinement of a scene it has ordered: the cloth meshes refined
 // (scene/mesh_subdivision.h), which appends the edge midpoints out of order, then ordered anew
-// (floors and occluders as given); levels 0: the scene as given. Ordering an ordered mesh again may swap vertices
-// whose Morton cells tie, so whatever is baked for a density and whatever draws it both take
-// their meshes from here.
+// (floors and occluders as given); levels 0: the scene as given. Ordering an ordered mesh again
+// may swap vertices whose Morton cells tie, so whatever is baked for a density and whatever draws
+// it both take their meshes from here.
 Scene refine_and_order_meshes(Scene scene, int levels);
 
 }  // namespace weft
