@@ -19,6 +19,7 @@
 #include "lighting/sg_set_io.h"
 #include "runtime/visibility_mask.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 #include "scene/scene_file.h"
 
 namespace weft {
@@ -50,7 +51,10 @@ int run_bake(const BakeArgs& a) {
   if (!a.fabric.empty())
     for (auto& o : in.scene.cloth_objects()) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
-  if (a.subdivide > 0 && !search) in.scene = refine_cloth_meshes(std::move(in.scene), a.subdivide);
+  // Vertices in spatial order before anything is baked per vertex (scene/mesh_vertex_order.h);
+  // the search refines and orders its densities itself.
+  in.scene = order_scene_meshes(std::move(in.scene));
+  if (a.subdivide > 0 && !search) in.scene = refine_and_order_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");
   try {
     in.fabrics = bundle_fabric_texts(in.scene, assets_dir() / "fabrics", a.only_scene_fabrics);

@@ -23,6 +23,7 @@
 #include "gpu/scene_renderer.h"
 #include "methods/registry.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 
 namespace weft::bench {
 
@@ -50,7 +51,7 @@ Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m,
             << " ..." << std::flush;
   const SceneSelection sel = select_scene_settings(c.scene, c.fabrics, texts, c.sgs, o);
   std::cerr << " " << fmt(sel.seconds) << " s: " << sel.description << "\n";
-  const Scene drawn = refine_cloth_meshes(c.scene, sel.subdivision);
+  const Scene drawn = refine_and_order_meshes(c.scene, sel.subdivision);  // the meshes the search baked
   Row r = measure.measure(c, m, target_label(m.name, a.target_error), m.name + "_target",
                           std::make_shared<const IwasakiBundleData>(sel.data), &drawn);
   r.setting = sel.description, r.sg_count = sel.chosen.sg_count, r.subdivision = sel.subdivision;

@@ -1,5 +1,6 @@
 // `weft bake --subdivide N` end to end: the bundle's cloth meshes are the scene's refined N
-// levels (scene/mesh_subdivision.h; floors and occluders as they were), with the weighting-table
+// levels (scene/mesh_subdivision.h; floors and occluders unrefined), in the bake's vertex
+// order (scene/mesh_vertex_order.h), with the weighting-table
 // sections sized for them; a level outside 0..kMaxSubdivision is bad usage (exit 2).
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include "runtime/iwasaki_bundle.h"
 #include "runtime/scene_bundle.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 #include "scene/scene_file.h"
 
 namespace fs = std::filesystem;
@@ -37,8 +39,9 @@ TEST(BakeSubdivide, BundleHoldsTheRefinedClothMeshes) {
   ASSERT_EQ(bake("--scene pillow --subdivide 1 --table-grid 4 --lambda-levels 2 --tangent-samples 1 1 --sdf-resolution 8 "
                  "--floor-sdf-resolution 8 --out " + out.string()),
             0);
-  const Scene given = load_scene_named("pillow", WEFT_SOURCE_ASSETS);
-  const Scene expected = refine_cloth_meshes(given, 1);
+  // The bake orders the scene's vertices, then refines the cloth and orders it anew.
+  const Scene given = order_scene_meshes(load_scene_named("pillow", WEFT_SOURCE_ASSETS));
+  const Scene expected = refine_and_order_meshes(given, 1);
   const auto reader = bundle::BundleReader::open(out);
   const SceneBundle b = read_scene_bundle(reader);
   ASSERT_EQ(b.scene.objects.size(), expected.objects.size());

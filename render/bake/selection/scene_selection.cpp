@@ -19,6 +19,7 @@
 #include "gpu/scene_renderer.h"
 #include "methods/sg_lighting_uniforms.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 
 namespace weft {
 
@@ -209,12 +210,13 @@ public:
     if (o_.log) o_.log(line);
   }
 
-  // The scene at a density (knob index): its cloth meshes refined that many levels.
+  // The scene at a density (knob index): its cloth meshes refined that many levels, in the bake's
+  // vertex order.
   const Scene& scene(int density) {
     const int levels = knobs_.subdivisions[density];
     if (levels == 0) return scene_;
     if (auto it = refined_.find(levels); it != refined_.end()) return it->second;
-    return refined_.emplace(levels, refine_cloth_meshes(scene_, levels)).first->second;
+    return refined_.emplace(levels, refine_and_order_meshes(scene_, levels)).first->second;
   }
 
 private:

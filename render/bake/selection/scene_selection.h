@@ -124,7 +124,7 @@ struct SceneSelection {
   IwasakiBundleData data;              // the chosen setting's tables, visibility and κ
   SgLighting sgs;                      // the chosen setting's SGs (its fit when the SG count was searched)
   int subdivision = 0;                 // the chosen setting's refinement of the cloth meshes: its
-                                       // `data` is for refine_cloth_meshes(scene, subdivision)
+                                       // `data` is for refine_and_order_meshes(scene, subdivision)
   int references_rendered = 0, references_cached = 0;
   double seconds = 0.0;
 };

@@ -10,7 +10,7 @@
 #include "bake/selection/rung_choice.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
-#include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 
 namespace weft {
 
@@ -108,7 +108,7 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
                                 const std::filesystem::path& sg_map) {
   const SceneSelection s = select_for_bundle(in.scene, in.fabrics, in.sgs, o, sg_map);
   in.sgs = s.sgs;
-  in.scene = refine_cloth_meshes(std::move(in.scene), s.subdivision);  // the mesh the visibility was baked on
+  in.scene = refine_and_order_meshes(std::move(in.scene), s.subdivision);  // the mesh the visibility was baked on
   add_scene_sections(writer, in);
   add_selection_sections(writer, s, o);
   char buf[300];

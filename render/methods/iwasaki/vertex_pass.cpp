@@ -8,11 +8,12 @@
 
 #include "gl/frame_profile.h"
 #include "gl/gl_error.h"
+#include "scene/vertex_texels.h"
 
 namespace weft::gpu {
 
 namespace {
-constexpr int kWidth = 256;  // texels per row: small rows keep the target near square
+constexpr int kWidth = kVertexTexelRow;  // the bake orders vertices for this layout
 constexpr int kMaxBlocks = 40;  // MAX_PASS_BLOCKS in vertex_pass.glsl
 constexpr int kMarkUnit = 14;   // the marks' two samplers: above every pass's own units
 

@@ -26,6 +26,7 @@
 #include "bake/writers/scene_bundle_writer.h"
 #include "reference/scene_render.h"
 #include "scene/mesh_subdivision.h"
+#include "scene/mesh_vertex_order.h"
 #include "scene/scene_file.h"
 #include "support/sg_reference.h"
 
@@ -89,7 +90,7 @@ std::filesystem::path fresh_cache(const std::string& name) {
 // reference rendered here under `lighting_sgs`.
 double independent_error(const Swatch& w, const SceneSelection& s, const SgLighting& lighting_sgs) {
   const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, lighting_sgs, 64, 48, 6, 16);
-  const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, s.sgs, s.method, 64,
+  const GpuFrame f = render_gpu_frame(refine_and_order_meshes(w.scene, s.subdivision), w.fabrics, s.sgs, s.method, 64,
                                       48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   return bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
 }
@@ -118,7 +119,7 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
   EXPECT_TRUE(s.data.visibility.empty());  // the swatch is unoccluded: no visibility to pay for
   // The scene camera's view, rendered here, against a reference rendered here.
   const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, w.sgs, 64, 48, 6, 16);
-  const GpuFrame f = render_gpu_frame(refine_cloth_meshes(w.scene, s.subdivision), w.fabrics, w.sgs, s.method, 64,
+  const GpuFrame f = render_gpu_frame(refine_and_order_meshes(w.scene, s.subdivision), w.fabrics, w.sgs, s.method, 64,
                                       48, 0, std::make_shared<const IwasakiBundleData>(s.data));
   const double e = bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
   EXPECT_LE(e, target);
