@@ -228,9 +228,9 @@ void IwasakiCloth::set_lighting(size_t handle, const SgLighting& sgs, const SgVi
   o.computed_for = drawn;
 }
 
-const GlProgram& IwasakiCloth::facet_draw(int sgs) {
+const GlProgram& IwasakiCloth::facet_draw(int sgs, bool normal_mapped) {
   const int groups = std::max(1, (sgs + 3) / 4);
-  auto it = facet_draws_.find(groups);
+  auto it = facet_draws_.find({groups, normal_mapped});
   if (it != facet_draws_.end()) return *it->second;
   // Three vec4 per group, the position, the normal, the warp and the UV: what the vertex stage
   // hands the fragment stage, each vec3 and vec2 counted as a whole vec4 in case the GL does not
@@ -249,10 +249,11 @@ const GlProgram& IwasakiCloth::facet_draw(int sgs) {
                 "#define NORMAL_MAP_RATIO_BIAS %.9e\n#define NORMAL_MAP_RATIO_CAP %.9e\n#define NORMAL_MAP_FLAT_TILT %.9e\n"
                 "#define BROAD_LOBE_SHARPNESS %.9e\n",
                 kNormalMapRatioBias, kNormalMapRatioCap, kNormalMapFlatTilt, kBroadLobeSharpness);
-  const std::string defines = "#define SG_GROUPS " + std::to_string(groups) + "\n" + ratio;
+  const std::string defines =
+      "#define SG_GROUPS " + std::to_string(groups) + "\n#define NORMAL_MAPPED " + (normal_mapped ? "1" : "0") + "\n" + ratio;
   auto program = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs, defines),
                                              program_source(shaders_.vertex_fs, defines));
-  return *facet_draws_.emplace(groups, std::move(program)).first->second;
+  return *facet_draws_.emplace(std::pair{groups, normal_mapped}, std::move(program)).first->second;
 }
 
 bool IwasakiCloth::draw_depth(size_t handle, const glm::mat4& view_projection) {
@@ -401,7 +402,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     o.pass->clear_marks();
   }
   o.pass->run_shares(program_, 4, shares);
-  const GlProgram& d = facet_draw(count);
+  const GlProgram& d = facet_draw(count, o.maps.normal_texture != 0);
   d.use();
   glUniformMatrix4fv(d.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform3f(d.uniform("u_eye"), eye.x, eye.y, eye.z);

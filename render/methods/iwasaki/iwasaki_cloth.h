@@ -114,8 +114,11 @@ private:
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
   std::unique_ptr<GlProgram> broad_pass_;    // per pixel with broad-lobe quadrature: the vertex pass
   std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
-  std::map<int, std::unique_ptr<GlProgram>> facet_draws_;  // IwasakiShaders::facet_per_sg: the draw per SG_GROUPS
-  const GlProgram& facet_draw(int sgs);
+  // IwasakiShaders::facet_per_sg: the draw per (SG_GROUPS, NORMAL_MAPPED). Without a normal map the
+  // map's ratio is compiled out: llvmpipe pays for that code in every pixel even when no pixel
+  // takes it (the cloth stage ~4× on the showroom).
+  std::map<std::pair<int, bool>, std::unique_ptr<GlProgram>> facet_draws_;
+  const GlProgram& facet_draw(int sgs, bool normal_mapped);
   std::unique_ptr<KappaTexture> kappa_;
   WhiteTexture white_;  // thread_maps.glsl's samplers on untextured cloth
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;

@@ -28,8 +28,13 @@ void main() {
   if (dot(ns, u_eye - v_position) < 0.0) ns = -ns;
   vec3 ng = facet_normal(v_position, u_eye);
   vec3 tint0 = u_thread_albedo[0] * thread_tint(0, v_uv), tint1 = u_thread_albedo[1] * thread_tint(1, v_uv);
+#if NORMAL_MAPPED
   vec3 t = normal_map_at(v_uv);
   bool bumped = normal_map_tilts(t);
+#else  // no map on this object: the ratio's code compiles out (IwasakiCloth::facet_draw says why)
+  vec3 t = vec3(0.0, 0.0, 1.0);
+  const bool bumped = false;
+#endif
   // Each SG's cut by the facet; with a normal map, the two sharp SGs whose light here is largest
   // (the first of equals).
   float cut[4 * SG_GROUPS];
