@@ -51,8 +51,7 @@ int run_bake(const BakeArgs& a) {
   if (!a.fabric.empty())
     for (auto& o : in.scene.cloth_objects()) o.fabric = a.fabric;
   const bool search = !a.no_tables && a.select.target_error > 0;  // it chooses the SGs: scene sections after it
-  // Vertices in spatial order before anything is baked per vertex (scene/mesh_vertex_order.h);
-  // the search refines and orders its densities itself.
+  // Spatial vertex order before anything per vertex is baked; the search orders its densities itself.
   in.scene = order_scene_meshes(std::move(in.scene));
   if (a.subdivide > 0 && !search) in.scene = refine_and_order_meshes(std::move(in.scene), a.subdivide);
   progress(2, kSteps, "fabrics");
@@ -132,18 +131,15 @@ CommandAction add_bake_command(CLI::App& app) {
   sub->add_option("--out", a->out, "Bundle file to write")->required();
   auto* no_tables = sub->add_flag("--no-tables", a->no_tables, "Scene sections only (no weighting tables: enough for sgpoint)");
   auto* target = sub->add_option("--target-error", a->select.target_error, "Choose every cost knob (SG count unless --sgs/--sg-count, samples, levels, SVD, SDF, PCA, cloth mesh "
-                  "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")
-      ->check(CLI::Range(0.0, 0.5));
+                  "subdivision unless --subdivide, per-vertex or per-pixel) for this image error on the scene's views at the least frame time, then bytes (0: the paper's)")->check(CLI::Range(0.0, 0.5));
   auto* no_masks = sub->add_flag("--no-masks", a->no_masks, "No per-vertex visibility masks: a smaller bundle (512 B less per occluded cloth vertex) without the rungs that read them (iwasaki_mask, iwasaki_vertex_mask, the *_quadrature rungs), so --method auto falls back to iwasaki_vertex on occluded cloth. The --target-error search bakes none")->excludes(no_tables)->excludes(target);
   sub->add_flag("--choose-rung", a->choose_rung, "Measure the kiosk's per-vertex rung with the SDF's visibility and with the masks' (iwasaki_vertex_quadrature, iwasaki_vertex_mask_quadrature) on the scene's views against a reference (rendered once, cached: minutes) and record the closer for --method auto")->excludes(no_tables)->excludes(target)->excludes(no_masks);
   sub->add_option("--choose-width", a->select.views.width, "Width of --choose-rung's (and --target-error's) views (their references cost minutes)")->check(CLI::Range(8, 1024))->capture_default_str();
   sub->add_option("--choose-height", a->select.views.height, "Height of those views")->check(CLI::Range(8, 1024))->capture_default_str();
   old_spelling(sub->add_option_function<std::vector<int>>("--choose-size", [a](const std::vector<int>& wh) { a->select.views.width = wh[0], a->select.views.height = wh[1]; })->expected(2)->check(CLI::Range(8, 1024)));
   sub->add_option("--reference-cache", a->select.cache, "Folder of --target-error's cached reference renders (default: $XDG_CACHE_HOME/weft/bake-references)");
-  sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")
-      ->check(CLI::Range(8, 256))->capture_default_str();
-  sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution, "The same for floors and occluders (Lambertian; at most --sdf-resolution)")
-      ->check(CLI::Range(8, 256))->capture_default_str();
+  sub->add_option("--sdf-resolution", a->sdf_resolution, "Visibility SDF grid per vertex, N x N (even)")->check(CLI::Range(8, 256))->capture_default_str();
+  sub->add_option("--floor-sdf-resolution", a->lambertian_sdf_resolution, "The same for floors and occluders (Lambertian; at most --sdf-resolution)")->check(CLI::Range(8, 256))->capture_default_str();
   sub->add_option("--table-grid,--grid", a->select.grid, "Direction grids of the T tables, N x N (default: the paper's 48; smaller bakes faster)")->check(CLI::Range(4, 128));
   sub->add_option("--lambda-levels", a->lambda_levels, "Sharpness levels of the T tables, log-spaced over λ 1/16..1024 (the paper: 9 over 4..1024; 15 puts them ×2 apart)")->check(CLI::Range(2, 33))->capture_default_str();
   sub->add_option("--tangent-samples,--samples", a->samples, "Tangent samples per thread N1 N2 (default: the paper's)")->expected(2)->check(CLI::Range(1, 64));
