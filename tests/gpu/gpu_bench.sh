@@ -7,13 +7,14 @@
 # BIN_DIR: weft, weft-offline and kiosk_frame_bench (a build tree's, or copies of them).
 # BUNDLE_DIR: showroom.weft and pillow.weft, baked with the showroom's grids
 #   (weft bake --scene S --table-grid 32 --sdf-resolution 64 --floor-sdf-resolution 32).
-# OUT_DIR: gets gpu_bench.log (everything), kiosk_<W>x<H>.md (the kiosk bench's tables) and
-#   showroom_<W>x<H>.png (the kiosk's last frame).
+# OUT_DIR: gets gpu_bench.log (everything), kiosk_<W>x<H>.md (the kiosk bench's tables),
+#   kiosk_check_640x480.md (culled against every vertex, with errors) and
+#   showroom_<rung>_<W>x<H>.png (the kiosk's last frame).
 # SIZES: "1920x1080 3840x2160" unless given.
 # Run from the repository root (assets/). Targets (docs/design.md, speed): the kiosk's default
 # rung ≤ 4 ms a frame at 4K. Not in CI: it needs a GPU; on llvmpipe it runs, slowly.
 set -uo pipefail
-if [ $# -lt 3 ] || [ "${1:-}" = "--help" ]; then sed -n '2,14p' "$0"; exit 2; fi
+if [ $# -lt 3 ] || [ "${1:-}" = "--help" ]; then sed -n '2,16p' "$0"; exit 2; fi
 BIN=$(realpath "$1") BUNDLES=$(realpath "$2") OUT=$3
 SIZES=${4:-"1920x1080 3840x2160"}
 mkdir -p "$OUT"
@@ -34,6 +35,14 @@ for b in showroom pillow; do
   [ -f "$BUNDLES/$b.weft" ] || { say "no $BUNDLES/$b.weft"; exit 1; }
 done
 
+# First, whether the driver draws what llvmpipe draws: the kiosk bench turning 2° a frame with
+# the per-vertex passes for the visible vertices only against every vertex, error columns on
+# (the bench fails where culling changes the frame at R = 1).
+step "kiosk culling check 640x480"
+WEFT_KIOSK_BUNDLES="showroom=$BUNDLES/showroom.weft,pillow=$BUNDLES/pillow.weft" WEFT_KIOSK_METHODS=auto,iwasaki_vertex \
+  WEFT_KIOSK_VERTICES=all,visible WEFT_KIOSK_REFRESH=1,b16 WEFT_KIOSK_FRAMES=8 WEFT_KIOSK_DEG_PER_FRAME=2 \
+  WEFT_KIOSK_SIZE=640x480 WEFT_KIOSK_OUT="$OUT/kiosk_check_640x480.md" run "$BIN/kiosk_frame_bench"
+
 # The kiosk's frame, the way `weft run` draws it, turning 0.4° a frame: stages by GPU timestamps.
 for size in $SIZES; do
   step "kiosk bench $size"
@@ -44,12 +53,14 @@ for size in $SIZES; do
 done
 
 # The kiosk itself, headless, its default rung and settings, a GPU frame profile in its stats.
-for size in $SIZES; do
-  step "weft run showroom $size"
+# `iwasaki_vertex` at the first size too: a frame to compare with the default rung's.
+for run_case in $(for size in $SIZES; do echo "auto:$size"; done) "iwasaki_vertex:${SIZES%% *}"; do
+  method=${run_case%%:*} size=${run_case#*:}
+  step "weft run showroom $method $size"
   w=${size%x*} h=${size#*x}
   state=$(mktemp -d)
-  run "$BIN/weft" run --bundle "$BUNDLES/showroom.weft" --state-dir "$state" --display headless --panel none \
-    --width "$w" --height "$h" --frames 300 --stats-every 2 --profile gpu --screenshot "$OUT/showroom_$size.png"
+  run "$BIN/weft" run --bundle "$BUNDLES/showroom.weft" --state-dir "$state" --display headless --panel none --method "$method" \
+    --width "$w" --height "$h" --frames 300 --stats-every 2 --profile gpu --screenshot "$OUT/showroom_${method}_$size.png"
   rm -rf "$state"
 done
 
