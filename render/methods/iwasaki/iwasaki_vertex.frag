@@ -28,13 +28,25 @@ void main() {
   if (dot(ns, u_eye - v_position) < 0.0) ns = -ns;
   vec3 ng = facet_normal(v_position, u_eye);
   vec3 tint0 = u_thread_albedo[0] * thread_tint(0, v_uv), tint1 = u_thread_albedo[1] * thread_tint(1, v_uv);
-#if NORMAL_MAPPED
+#if !NORMAL_MAPPED
+  // No map on this object: each SG's cut applied as it is summed, none of the ratio's code
+  // (IwasakiCloth::facet_draw says why).
+  vec3 surface = vec3(0.0), warp = vec3(0.0), weft = vec3(0.0);
+  for (int g = 0; g < SG_GROUPS; ++g) {
+    for (int c = 0; c < 4; ++c) {
+      int k = 4 * g + c;
+      if (k >= u_sg_count) break;
+      float cut = u_sg_broad[k] != 0 ? 1.0 : facet_horizon_factor_terms(u_sg_hemisphere_terms[k], u_sg_axis[k], ns, ng);
+      vec3 mu = u_sg_amplitude[k] * cut;
+      surface += mu * v_sg_surface[g][c];
+      warp += mu * v_sg_warp[g][c];
+      weft += mu * v_sg_weft[g][c];
+    }
+  }
+  o_radiance = vec4(surface + tint0 * warp + tint1 * weft, 1.0);
+#else
   vec3 t = normal_map_at(v_uv);
   bool bumped = normal_map_tilts(t);
-#else  // no map on this object: the ratio's code compiles out (IwasakiCloth::facet_draw says why)
-  vec3 t = vec3(0.0, 0.0, 1.0);
-  const bool bumped = false;
-#endif
   // Each SG's cut by the facet; with a normal map, the two sharp SGs whose light here is largest
   // (the first of equals).
   float cut[4 * SG_GROUPS];
@@ -92,4 +104,5 @@ void main() {
     }
   }
   o_radiance = vec4(surface + tint0 * warp + tint1 * weft, 1.0);
+#endif
 }
