@@ -48,7 +48,12 @@ float fresnel_dielectric(float eta, float cos_i) {
 }
 
 // Thread frame of docs/design.md §2: t = cos α·along + sin α·n, n' = −sin α·along + cos α·n, b = axis.
-// fiber_angles_in: the same in the sample's frame (t, n') already turned by α.
+struct SampleFrame { vec3 t; vec3 np; };
+SampleFrame sample_frame(vec3 along, vec3 n, float alpha) {
+  float c = cos(alpha), s = sin(alpha);
+  return SampleFrame(c * along + s * n, -s * along + c * n);
+}
+// fiber_angles_in: the angles in the sample's frame (t, n') already turned by α.
 FiberAngles fiber_angles_in(vec3 t, vec3 np, vec3 axis, vec3 w) {
   float wt = clamp(dot(w, t), -1.0, 1.0);
   float wn = dot(w, np);
@@ -57,8 +62,8 @@ FiberAngles fiber_angles_in(vec3 t, vec3 np, vec3 axis, vec3 w) {
   return FiberAngles(atan(wt, sqrt((1.0 - wt) * (1.0 + wt))), atan(dot(w, axis), wn), atan(wt, wn));
 }
 FiberAngles fiber_angles(vec3 along, vec3 axis, vec3 n, float alpha, vec3 w) {
-  float c = cos(alpha), s = sin(alpha);
-  return fiber_angles_in(c * along + s * n, -s * along + c * n, axis, w);
+  SampleFrame f = sample_frame(along, n, alpha);
+  return fiber_angles_in(f.t, f.np, axis, w);
 }
 
 // microcylinder.cpp's fiber_direction: fiber_angles' inverse in frame (t, n', b), with its
@@ -138,9 +143,9 @@ ClothView cloth_view(vec3 n, vec3 u, vec3 wo) {
     vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
     for (int k = 0; k < u_threads[j].samples; ++k) {
       int s = j * MAX_TANGENT_SAMPLES + k;
-      float alpha = thread_tilt(s), c = cos(alpha), sn = sin(alpha);
-      cv.t[s] = c * along + sn * n;
-      cv.np[s] = -sn * along + c * n;
+      SampleFrame f = sample_frame(along, n, thread_tilt(s));
+      cv.t[s] = f.t;
+      cv.np[s] = f.np;
       cv.o[s] = fiber_angles_in(cv.t[s], cv.np[s], axis, wo);
     }
   }

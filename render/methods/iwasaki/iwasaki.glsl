@@ -271,10 +271,10 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           int d = sample_table(j * MAX_TANGENT_SAMPLES + q);
           float T = max(table_t(d, l0, l1, lw, xi_tc, wo_tc), 0.0);
           float alpha = thread_tilt(j * MAX_TANGENT_SAMPLES + q);
-          float ca = cos(alpha), sa = sin(alpha);
-          vec3 t = ca * along + sa * n, np = -sa * along + ca * n;
-          FiberAngles fk = fiber_angles(along, axis, n, alpha, xi);
-          FiberAngles fo = fiber_angles(along, axis, n, alpha, wo);
+          SampleFrame frame = sample_frame(along, n, alpha);
+          vec3 t = frame.t, np = frame.np;
+          FiberAngles fk = fiber_angles_in(t, np, axis, xi);
+          FiberAngles fo = fiber_angles_in(t, np, axis, wo);
           float theta_k = fk.theta, phi_k = fk.phi;
           Lobe light = Lobe(1.0, theta_k, sigma_k);
           float spread_k = separable_spread(lambda_k, theta_k, sigma_k);

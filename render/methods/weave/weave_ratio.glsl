@@ -17,9 +17,8 @@ struct ResolvedView {
 ResolvedView resolved_view(vec3 n, vec3 u, int j, float alpha, vec3 wo) {
   vec3 v = cross(n, u);
   vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
-  float c = cos(alpha), s = sin(alpha);
-  vec3 t = c * along + s * n, np = -s * along + c * n;
-  return ResolvedView(t, np, axis, fiber_angles_in(t, np, axis, wo), dot(n, wo) > 0.0);
+  SampleFrame f = sample_frame(along, n, alpha);
+  return ResolvedView(f.t, f.np, axis, fiber_angles_in(f.t, f.np, axis, wo), dot(n, wo) > 0.0);
 }
 
 // f_s · M · P · cos θ_i of thread j's sample seen as `view`: ClothBsdf::Point::resolved_scattering.
