@@ -1,8 +1,9 @@
 // The weave layer's vertex pass for the vertices a frame shows only (methods/weave/weave_layer.h,
 // iwasaki/visible_vertices.h): the kiosk's frame of a pillow at its close-up, and turned a few
 // degrees from there, is the frame with every vertex computed, bit for bit, for a per-vertex rung
-// and for `sheen` (whose own draw has no passes, so the weave's are the only ones culled); and the
-// layer did draw (the frame differs from the weave off).
+// and for `sheen` (whose own draw has no passes, so the weave's are the only ones culled); the
+// layer did draw (the frame differs from the weave off); and with culling then switched off, a
+// view turned 40° is the every-vertex frame again.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -74,5 +75,13 @@ TEST(WeaveCulling, VisibleVerticesOnlyDrawTheSameFrame) {
       EXPECT_EQ(differ, 0u) << "channels that differ from the every-vertex frame";
       EXPECT_GT(weave, 1000u) << "the weave layer drew over too little of the frame to test anything";
     }
+    // Culling switched off after culled frames: every vertex again, none kept from the last view.
+    culled->set_visible_vertices_only(false);
+    const Camera far_turn = turned(closeup, 40.0);
+    a.bind();
+    culled->draw(far_turn, kWidth, kHeight);
+    b.bind();
+    full->draw(far_turn, kWidth, kHeight);
+    EXPECT_TRUE(a.read_rgba() == b.read_rgba()) << "culling off: the frame is not the every-vertex one";
   }
 }

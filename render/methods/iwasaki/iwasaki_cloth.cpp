@@ -394,9 +394,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   for (int k = 0; k < count; ++k)
     if (broad[size_t(k)] != 0) shares[size_t(k)] = std::max(vertex_shares_, broad_shares_);
   if (visible_ && visible_only_) {
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    o.pass->set_marks(visible_->marks(o.marks), visible_->mark(vp, viewport[2], viewport[3]));
+    visible_->mark_for(*o.pass, o.marks, vp);
     program_.use();
   } else {
     o.pass->clear_marks();

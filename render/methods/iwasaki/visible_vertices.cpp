@@ -10,6 +10,7 @@
 
 #include "gl/frame_profile.h"
 #include "gl/gl_error.h"
+#include "methods/iwasaki/vertex_pass.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
@@ -137,6 +138,13 @@ unsigned VisibleVertices::mark(const glm::mat4& view_projection, int width, int 
   if (cull) glEnable(GL_CULL_FACE);
   check_gl("marking the visible vertices");
   return stamp_;
+}
+
+void VisibleVertices::mark_for(VertexPass& pass, size_t mesh, const glm::mat4& view_projection) {
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  const unsigned stamp = mark(view_projection, viewport[2], viewport[3]);
+  pass.set_marks(marks(mesh), stamp);
 }
 
 void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) const {

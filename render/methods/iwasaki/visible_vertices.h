@@ -24,6 +24,8 @@
 
 namespace weft::gpu {
 
+class VertexPass;
+
 class VisibleVertices {
 public:
   static bool supported();  // on the current context
@@ -37,6 +39,9 @@ public:
   // of the frame's draw) unless the last call had the same view; returns the stamp the marks of
   // visible vertices hold. The caller's framebuffer, viewport, program and depth state are kept.
   unsigned mark(const glm::mat4& view_projection, int width, int height);
+  // Marks at the bound viewport's size (the frame's, where the draw after the pass rasterises as
+  // the marks do) and hands `mesh`'s marks to its `pass` (VertexPass::set_marks).
+  void mark_for(VertexPass& pass, size_t mesh, const glm::mat4& view_projection);
   // The mesh's depth alone into the bound framebuffer (colour untouched), as the per-vertex draw
   // places it pushed four depth steps away (ClothMethod::draw_depth); the program in use is kept.
   void draw_depth(size_t mesh, const glm::mat4& view_projection) const;

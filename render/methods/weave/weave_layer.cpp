@@ -142,11 +142,10 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     }
   };
   set_up(*p.pass);
-  if (visible_ && visible_only_) {  // the frame's viewport: the marks rasterise as the draw below does
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    o.pass->set_marks(visible_->marks(o.marks), visible_->mark(vp, viewport[2], viewport[3]));
-  }
+  if (visible_ && visible_only_)
+    visible_->mark_for(*o.pass, o.marks, vp);
+  else
+    o.pass->clear_marks();  // culling switched off after frames with it on: every vertex again
   o.pass->run(*p.pass, 0, groups + 1);
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
