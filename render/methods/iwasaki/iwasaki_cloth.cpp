@@ -400,7 +400,8 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     o.pass->clear_marks();
   }
   o.pass->run_shares(program_, 4, shares);
-  const GlProgram& d = facet_draw(count, o.maps.normal_texture != 0);
+  const bool normal_mapped = o.maps.normal_texture != 0;
+  const GlProgram& d = facet_draw(count, normal_mapped);
   d.use();
   glUniformMatrix4fv(d.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform3f(d.uniform("u_eye"), eye.x, eye.y, eye.z);
@@ -416,11 +417,13 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     glUniform3fv(d.uniform("u_sg_hemisphere_terms"), count, terms.data());
     glUniform1iv(d.uniform("u_sg_broad"), count, broad.data());
     glUniform3fv(d.uniform("u_sg_amplitude"), count, amplitudes.data());
+  }
+  if (normal_mapped) {  // the map's ratio: only that draw has its uniforms
     std::vector<float> widen2;
     for (const auto& g : drawn) widen2.push_back(float(weave_lobe_widening(g.sharpness)));
-    glUniform1fv(d.uniform("u_sg_widen2"), count, widen2.data());
+    if (count > 0) glUniform1fv(d.uniform("u_sg_widen2"), count, widen2.data());
+    upload_fabric(d, *o.ratio_bsdf);
   }
-  upload_fabric(d, *o.ratio_bsdf);
   float albedo[6];
   for (int j = 0; j < 2; ++j)
     for (int c = 0; c < 3; ++c) albedo[3 * j + c] = float(o.bsdf->fabric().threads[j].albedo[c]);
