@@ -17,6 +17,9 @@
 // WEFT_KIOSK_VERTICES: "visible" (the default: the passes only for the vertices the frame shows,
 // the cloth's depth first), "all" (every vertex, no depth pass: as before either), or "all,visible";
 // WEFT_KIOSK_NO_ERROR: time only, no error columns;
+// WEFT_KIOSK_SHOTS: a folder for each case's last frame and the same view with every vertex
+// computed (EXR, linear, NaN kept), and a line per case counting the cloth pixels that are not
+// finite or black in each (a driver's NaN shows as black cloth on screen);
 // WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
 #include <gtest/gtest.h>
 
@@ -34,6 +37,7 @@
 #include <sstream>
 
 #include "bundle/bundle_reader.h"
+#include "image/image.h"
 #include "gl/frame_profile.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
@@ -79,6 +83,28 @@ double cpu_ms() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return 1e3 * (double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec));
+}
+
+// An RGBA readback (row 0 at the bottom) as an Image (row 0 at the top), alpha dropped.
+Image image_of(const std::vector<float>& rgba, int w, int h) {
+  Image im(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) im.at(x, h - 1 - y)[c] = rgba[(size_t(y) * w + x) * 4 + c];
+  return im;
+}
+
+// "cloth pixels, of them not finite, of them black" of a readback.
+std::string cloth_census(const std::vector<float>& rgba) {
+  size_t cloth = 0, bad = 0, black = 0;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+    if (!gpu::is_cloth_alpha(rgba[i + 3])) continue;
+    ++cloth;
+    const bool finite = std::isfinite(rgba[i]) && std::isfinite(rgba[i + 1]) && std::isfinite(rgba[i + 2]);
+    if (!finite) ++bad;
+    else if (rgba[i] <= 0.0f && rgba[i + 1] <= 0.0f && rgba[i + 2] <= 0.0f) ++black;
+  }
+  return std::to_string(cloth) + " cloth px, " + std::to_string(bad) + " not finite, " + std::to_string(black) + " black";
 }
 
 double median(std::vector<double> v) {
@@ -210,6 +236,18 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
                       reused ? (std::to_string(worst * 100.0).substr(0, 6) + " %").c_str() : "");
         table << row;
         std::cout << row << std::flush;
+        if (const char* shots = std::getenv("WEFT_KIOSK_SHOTS")) {
+          const std::string stem = std::string(shots) + "/" + name + "_" + method.name + "_" + (per_vertex ? vertices : "") + "_" +
+                                   std::to_string(reuse.longest());
+          const std::vector<float> shown = target.read_rgba();
+          truth.bind();
+          full->draw(camera_at(kWarm + frames), w, h);
+          const std::vector<float> every = truth.read_rgba();
+          std::filesystem::create_directories(shots);
+          write_exr(image_of(shown, w, h), stem + ".exr");
+          write_exr(image_of(every, w, h), stem + "_every_vertex.exr");
+          std::cout << stem << ": drawn " << cloth_census(shown) << "; every vertex " << cloth_census(every) << "\n";
+        }
         // A camera that does not move: reused values are the values, so the frame is the full one.
         if (reused && (kDegPerFrame == 0.0 || reuse.longest() == 1)) {
           EXPECT_LE(worst, 1e-6) << name << " " << method.name << " R=" << reuse.name() << ": reuse or culling differs from the full frame of the same view";
