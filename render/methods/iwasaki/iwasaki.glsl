@@ -180,6 +180,13 @@ float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sd
 
 // --- core's horizon_sliver_weight and horizon_sharpness_for_mean_cosine (above_horizon's rule for
 // sharp lobes: the sliver's power and mean cosine above the horizon).
+// a^(1−w)·b^w as C++'s std::pow gives it: pow(0, 0) is undefined in GLSL (NVIDIA: exp2(0·log2 0) =
+// NaN), and a sharp lobe far below the horizon has a = 0 with w = 1.
+float geometric_blend(float a, float b, float w) {
+  if (w >= 1.0) return b;
+  if (w <= 0.0) return a;
+  return pow(a, 1.0 - w) * pow(b, w);
+}
 float horizon_sliver_weight(float lambda) { return clamp(log(lambda / 4.0) / log(4.0), 0.0, 1.0); }
 float horizon_mean_cosine(float log_lambda) {
   float l = exp(log_lambda);
@@ -238,8 +245,8 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         if (w > 0.0) {
           float power = sg_hemisphere_integral(lambda, c);
           float ls = horizon_sharpness_for_mean_cosine(sg_clamped_cosine_integral(lambda, c) / power, lp);
-          scale = pow(scale, 1.0 - w) * pow(power / sg_hemisphere_integral(ls, 0.0), w);
-          lp = pow(lp, 1.0 - w) * pow(ls, w);
+          scale = geometric_blend(scale, power / sg_hemisphere_integral(ls, 0.0), w);
+          lp = geometric_blend(lp, ls, w);
         }
         amplitude *= scale;
         xi = e;
