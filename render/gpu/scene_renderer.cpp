@@ -155,6 +155,13 @@ void SceneRenderer::set_backdrop(Backdrop backdrop) {
   }
 }
 
+std::vector<float> SceneRenderer::cloth_vertex_values(size_t cloth_index, int* block_texels) const {
+  size_t n = 0;
+  for (const auto& o : objects_)
+    if (o->cloth && n++ == cloth_index) return cloth_->vertex_values(o->handle, block_texels);
+  throw std::out_of_range("no cloth object " + std::to_string(cloth_index));
+}
+
 void SceneRenderer::set_visible_vertices_only(bool on) {
   visible_only_ = on;
   cloth_->set_visible_vertices_only(on);

@@ -78,6 +78,8 @@ public:
   void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
   void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
   void refresh_all() { cloth_->refresh_all(); }
+  // The i-th cloth object's per-vertex values (ClothMethod::vertex_values), for tests and diagnostics.
+  std::vector<float> cloth_vertex_values(size_t cloth_index, int* block_texels) const;
   // ClothMethod::set_visible_vertices_only and the weave layer's (on by default).
   void set_visible_vertices_only(bool on);
   // Opaque cloth's depth drawn before its shading (ClothMethod::draw_depth); on by default.

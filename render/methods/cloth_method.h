@@ -4,6 +4,7 @@
 // its folder (render/methods/<name>/) and the registry (methods/registry.h) makes it.
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -68,6 +69,13 @@ public:
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }
+  // The object's per-vertex values as its last draw computed them (RGBA float texels, a block of
+  // rows per value, vertex_pass.h's layout) and the texels a block holds; empty where the method
+  // has none. For tests and diagnostics (a driver's NaN found at its vertex and SG).
+  virtual std::vector<float> vertex_values(size_t handle, int* block_texels) const {
+    (void)handle, (void)block_texels;
+    return {};
+  }
   // Writes the object's depth alone into the bound framebuffer as draw() places it, a few depth
   // steps farther: draw() afterwards (GL_LESS) then shades little behind the front, and what it
   // shows is the same, since every fragment it drops lies behind one that wins anyway (ties

@@ -247,6 +247,32 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
           write_exr(image_of(shown, w, h), stem + ".exr");
           write_exr(image_of(every, w, h), stem + "_every_vertex.exr");
           std::cout << stem << ": drawn " << cloth_census(shown) << "; every vertex " << cloth_census(every) << "\n";
+          // Per cloth object and value block (an SG, or a quadrature part): the vertices whose
+          // value is not finite, and the first of them with its normal and warp.
+          size_t cloth_index = 0;
+          for (const SceneObject& o : kb.scene.scene.objects) {
+            if (o.material != Material::cloth) continue;
+            int texels = 0;
+            const std::vector<float> values = r->cloth_vertex_values(cloth_index++, &texels);
+            if (values.empty() || texels <= 0) continue;
+            for (size_t b = 0; b * size_t(texels) * 4 < values.size(); ++b) {
+              size_t bad = 0, first = 0;
+              for (size_t i = 0; i < size_t(texels) && i < o.mesh.positions.size(); ++i) {
+                const float* v = &values[(b * size_t(texels) + i) * 4];
+                if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) continue;
+                if (bad++ == 0) first = i;
+              }
+              if (bad == 0) continue;
+              const glm::dvec3 n = o.mesh.normals[first], u = o.mesh.warps[first];
+              std::printf("  %s block %zu: %zu of %zu vertices not finite; first %zu, normal (%.6f %.6f %.6f), warp (%.6f %.6f %.6f)\n",
+                          o.name.c_str(), b, bad, o.mesh.positions.size(), first, n.x, n.y, n.z, u.x, u.y, u.z);
+              if (b < kb.scene.sgs.size()) {
+                const auto& g = kb.scene.sgs[b];
+                std::printf("    SG %zu: axis (%.6f %.6f %.6f), sharpness %.4f, cos to the normal %.6f\n", b, g.axis.x, g.axis.y, g.axis.z,
+                            g.sharpness, glm::dot(glm::normalize(g.axis), glm::normalize(n)));
+              }
+            }
+          }
         }
         // A camera that does not move: reused values are the values, so the frame is the full one.
         if (reused && (kDegPerFrame == 0.0 || reuse.longest() == 1)) {

@@ -262,6 +262,13 @@ bool IwasakiCloth::draw_depth(size_t handle, const glm::mat4& view_projection) {
   return true;
 }
 
+std::vector<float> IwasakiCloth::vertex_values(size_t handle, int* block_texels) const {
+  const Object& o = *objects_.at(handle);
+  if (!o.pass) return {};
+  if (block_texels) *block_texels = o.pass->texels();
+  return o.pass->read_values();
+}
+
 size_t IwasakiCloth::visible_vertices(size_t handle) const {
   const Object& o = *objects_.at(handle);
   return visible_ && visible_only_ ? visible_->visible(o.marks) : o.vertices;

@@ -103,6 +103,7 @@ public:
   // How many of the object's vertices the last draw marked visible; its vertex count where it
   // computed them all (for tests).
   size_t visible_vertices(size_t handle) const;
+  std::vector<float> vertex_values(size_t handle, int* block_texels) const override;
 
 private:
   struct Object;
