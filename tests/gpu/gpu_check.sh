@@ -18,7 +18,7 @@ LOG=$(realpath "$OUT")/gpu_check.log
 failed=0
 for t in gpu_context_test microcylinder_parity_test method_parity_test iwasaki_parity_test vertex_facet_test \
   visible_vertices_test weave_parity_test vertex_normal_map_parity_test sheer_parity_test tone_map_parity_test \
-  uniform_budget_test; do
+  uniform_budget_test weave_culling_test; do
   [ -x "$DIR/$t" ] || { echo "$t: not in $DIR" | tee -a "$LOG"; continue; }
   start=$(date +%s)
   if "$DIR/$t" --gtest_brief=1 >>"$LOG" 2>&1; then

@@ -48,6 +48,7 @@
 #include "methods/registry.h"
 #include "reference/ray_scene.h"
 #include "scene/scene_file.h"
+#include "support/gpu_parity.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
 
@@ -212,7 +213,7 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
   // untextured cases agree to 3e−6): the texture's precision, not the split's.
   // Bumped: the normal map's filtered texels move each sharp lobe's ratio too (measured up to
   // 4e−3 here with smooth bumps, 1.2e−3 with one constant tilt, whose texels filter exactly).
-  const double tolerance = c.bumped ? 5e-3 : c.textured ? 2.5e-3 : 1e-3;
+  const double tolerance = test::driver_tolerance(c.bumped ? 5e-3 : c.textured ? 2.5e-3 : 1e-3);
   const RayScene rays(scene);
   int compared = 0, occluded_pixels = 0;
   double broad_share = 0;

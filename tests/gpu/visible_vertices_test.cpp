@@ -84,8 +84,9 @@ Frame draw(gpu::IwasakiCloth& cloth, const Scene& s, const Camera& c, const SgLi
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  if (depth_first)
+  if (depth_first) {
     for (size_t i = 0; i < objects; ++i) EXPECT_TRUE(cloth.draw_depth(i, view_projection(c)));
+  }
   for (size_t i = 0; i < objects; ++i) cloth.draw(i, view_projection(c), glm::vec3(c.position), sgs);
   return {target.read_rgba(), cloth.visible_vertices(0)};
 }
