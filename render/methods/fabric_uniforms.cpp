@@ -1,5 +1,6 @@
 #include "methods/fabric_uniforms.h"
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -7,9 +8,22 @@
 
 namespace weft::gpu {
 
+namespace {
+// Each trap defined before its macro, so it calls the built-in.
+const char* kStrictGlsl = R"(float strict_nan() { return uintBitsToFloat(0x7fc00000u); }
+float strict_pow(float x, float y) { return x < 0.0 || (x == 0.0 && y <= 0.0) ? strict_nan() : pow(x, y); }
+float strict_log(float x) { return x <= 0.0 ? strict_nan() : log(x); }
+float strict_log2(float x) { return x <= 0.0 ? strict_nan() : log2(x); }
+#define pow strict_pow
+#define log strict_log
+#define log2 strict_log2
+)";
+}  // namespace
+
 std::string shader_preamble() {
+  const char* strict = std::getenv("WEFT_STRICT_GLSL");
   return "#version 300 es\nprecision highp float;\nprecision highp int;\n#define MAX_TANGENT_SAMPLES " +
-         std::to_string(kMaxTangentSamples) + "\n";
+         std::to_string(kMaxTangentSamples) + "\n" + (strict && *strict && std::string(strict) != "0" ? kStrictGlsl : "");
 }
 
 void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {

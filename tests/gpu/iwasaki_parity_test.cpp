@@ -51,6 +51,7 @@
 #include "support/gpu_parity.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 

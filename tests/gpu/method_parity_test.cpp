@@ -21,6 +21,7 @@
 #include "methods/thin/thin_method.h"
 #include "shaders/embedded_shaders.h"
 #include "support/gpu_parity.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 using namespace weft::gpu;

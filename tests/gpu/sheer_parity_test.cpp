@@ -28,6 +28,7 @@
 #include "scene/scene_file.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 

@@ -31,6 +31,7 @@
 #include "support/facet_share.h"
 #include "support/parity_bake_settings.h"
 #include "support/ray_pixels.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 

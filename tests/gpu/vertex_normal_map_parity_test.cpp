@@ -21,6 +21,7 @@
 #include "shaders/embedded_shaders.h"
 #include "support/gpu_parity.h"
 #include "support/random_direction.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 using namespace weft::gpu;

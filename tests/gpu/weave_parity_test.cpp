@@ -23,6 +23,7 @@
 #include "support/block_means.h"
 #include "support/gpu_parity.h"
 #include "support/random_direction.h"
+#include "support/strict_glsl.h"
 
 using namespace weft;
 using namespace weft::gpu;
