@@ -141,6 +141,8 @@ IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evalua
     // The opaque rungs' draw (iwasaki_vertex.vert) places the mesh as visible_vertices.vert does.
     else if (VisibleVertices::supported())
       visible_ = std::make_unique<VisibleVertices>();
+    if (shaders_.facet_per_sg && shaders_.broad_lobe_quadrature)
+      narrow_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(iwasaki_shaders().pass_fs));
   } else if (shaders_.broad_lobe_quadrature) {
     broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
   }
@@ -402,11 +404,16 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     if (broad[size_t(k)] != 0) shares[size_t(k)] = std::max(vertex_shares_, broad_shares_);
   if (visible_ && visible_only_) {
     visible_->mark_for(*o.pass, o.marks, vp);
-    program_.use();
   } else {
     o.pass->clear_marks();
   }
-  o.pass->run_shares(program_, 4, shares);
+  std::vector<const GlProgram*> programs(shares.size(), &program_);
+  if (narrow_pass_) {
+    set_up(*narrow_pass_);
+    for (int k = 0; k < count; ++k)
+      if (broad[size_t(k)] == 0) programs[size_t(k)] = narrow_pass_.get();
+  }
+  o.pass->run_shares(programs, 4, shares);
   const bool normal_mapped = o.maps.normal_texture != 0;
   const GlProgram& d = facet_draw(count, normal_mapped);
   d.use();

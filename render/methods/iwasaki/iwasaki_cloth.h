@@ -114,6 +114,9 @@ private:
   IwasakiShaders shaders_;
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass
   std::unique_ptr<GlProgram> broad_pass_;    // per pixel with broad-lobe quadrature: the vertex pass
+  // Per vertex with broad-lobe quadrature: iwasaki's own pass for the SGs that are not broad, so
+  // their blocks do not run inside the quadrature's larger program (VertexPass::run_shares).
+  std::unique_ptr<GlProgram> narrow_pass_;
   std::unique_ptr<GlProgram> draw_program_;  // per vertex: the draw interpolating the pass's results
   // IwasakiShaders::facet_per_sg: the draw per (SG_GROUPS, NORMAL_MAPPED). Without a normal map the
   // map's ratio is compiled out: llvmpipe pays for that code in every pixel even when no pixel

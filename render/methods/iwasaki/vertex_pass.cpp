@@ -71,7 +71,8 @@ void VertexPass::set_marks(GLuint marks, unsigned stamp) {
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
   blocks = std::max(blocks, 1);
-  draw_blocks(program, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
+  const std::vector<const GlProgram*> programs(size_t(blocks), &program);
+  draw_blocks(programs, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
   valid_blocks_ = blocks;
   calls_ = 0;
 }
@@ -81,10 +82,20 @@ void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks,
 }
 
 void VertexPass::run_shares(const GlProgram& program, int first_unit, std::span<const int> block_shares) {
-  const int blocks = std::max(int(block_shares.size()), 1);
+  const std::vector<const GlProgram*> programs(std::max<size_t>(block_shares.size(), 1), &program);
+  const std::vector<int> shares = block_shares.empty() ? std::vector<int>{1} : std::vector<int>(block_shares.begin(), block_shares.end());
+  run_shares(programs, first_unit, shares);
+}
+
+void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares) {
+  if (block_programs.size() != block_shares.size() || block_programs.empty())
+    throw GpuError("per-vertex pass: a program and a share per block");
+  const int blocks = int(block_shares.size());
   const bool reuse = std::any_of(block_shares.begin(), block_shares.end(), [](int s) { return s > 1; });
   if (!reuse || valid_blocks_ != blocks) {
-    run(program, first_unit, blocks);
+    draw_blocks(block_programs, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
+    valid_blocks_ = blocks;
+    calls_ = 0;
     return;
   }
   ++calls_;
@@ -94,10 +105,11 @@ void VertexPass::run_shares(const GlProgram& program, int first_unit, std::span<
     const long s = (calls_ - 1) % shares;
     ranges[size_t(b)] = {int(long(count_) * s / shares), int(long(count_) * (s + 1) / shares)};
   }
-  draw_blocks(program, first_unit, ranges);
+  draw_blocks(block_programs, first_unit, ranges);
 }
 
-void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges) {
+void VertexPass::draw_blocks(std::span<const GlProgram* const> programs, int first_unit,
+                             const std::vector<std::pair<int, int>>& ranges) {
   const StageScope stage(Stage::vertex_pass);
   // Saved before a larger target is made: making one binds its framebuffer.
   GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
@@ -118,6 +130,31 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std
     whole = true;  // a new target holds nothing to keep
   }
   const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
+  if (blocks > kMaxBlocks) throw GpuError("per-vertex pass: at most " + std::to_string(kMaxBlocks) + " blocks");
+  target_->bind();
+  glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  std::vector<const GlProgram*> done;
+  for (const GlProgram* program : programs) {
+    if (std::find(done.begin(), done.end(), program) != done.end()) continue;
+    done.push_back(program);
+    std::vector<bool> mine(ranges.size());
+    for (int b = 0; b < blocks; ++b) mine[size_t(b)] = programs[size_t(b)] == program;
+    draw_program_blocks(*program, first_unit, ranges, mine, whole);
+  }
+  if (scissor) glEnable(GL_SCISSOR_TEST); else glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  if (depth) glEnable(GL_DEPTH_TEST);
+  if (blend) glEnable(GL_BLEND);
+}
+
+void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges,
+                                     const std::vector<bool>& mine, bool whole) {
+  const int blocks = int(ranges.size());
+  program.use();
   const GlTexture* inputs[3] = {&position_, &normal_, &warp_};
   const char* names[3] = {"u_vertex_position", "u_vertex_normal", "u_vertex_warp"};
   for (int i = 0; i < 3; ++i) {
@@ -128,7 +165,6 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std
   glUniform1i(program.uniform("u_vertex_width"), width_);
   glUniform1i(program.uniform("u_vertex_rows"), height_);
   glUniform1i(program.uniform("u_vertex_count"), count_);
-  if (blocks > kMaxBlocks) throw GpuError("per-vertex pass: at most " + std::to_string(kMaxBlocks) + " blocks");
   const GlTexture* marks[2] = {&marks_[current_marks_], &marks_[1 - current_marks_]};
   const char* mark_names[2] = {"u_vertex_mark", "u_vertex_mark_before"};
   for (int i = 0; i < 2; ++i) {  // bound culled or not: each declared sampler needs a texture of its type
@@ -144,39 +180,46 @@ void VertexPass::draw_blocks(const GlProgram& program, int first_unit, const std
     for (const auto& [begin, end] : ranges) r.insert(r.end(), {begin, end});
     glUniform2iv(program.uniform("u_vertex_range"), blocks, r.data());
   }
-  target_->bind();
-  glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  if (whole || marked_) {  // culled: the shader keeps what is outside a block's range (u_vertex_range)
+  const bool all_mine = std::all_of(mine.begin(), mine.end(), [](bool m) { return m; });
+  if ((whole || marked_) && all_mine) {  // culled: the shader keeps what is outside a block's range (u_vertex_range)
+    glDisable(GL_SCISSOR_TEST);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-  } else {
-    // Vertices [begin, end) of a block are texels of whole rows between a partial first and last
-    // row: up to three rectangles.
-    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-    glEnable(GL_SCISSOR_TEST);
-    for (int b = 0; b < blocks; ++b) {
-      const auto [begin, end] = ranges[size_t(b)];
-      const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
-      auto rect = [&](int x0, int x1, int y0, int y1) {
-        if (x1 <= x0 || y1 <= y0) return;
-        glScissor(x0, b * height_ + y0, x1 - x0, y1 - y0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      };
-      if (r0 == r1) {
-        rect(c0, c1, r0, r0 + 1);
-      } else {
-        rect(c0, width_, r0, r0 + 1);
-        rect(0, width_, r0 + 1, r1);
-        rect(0, c1, r1, r1 + 1);
-      }
-    }
-    if (!scissor) glDisable(GL_SCISSOR_TEST);
+    return;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  if (depth) glEnable(GL_DEPTH_TEST);
-  if (blend) glEnable(GL_BLEND);
+  glEnable(GL_SCISSOR_TEST);
+  if (whole || marked_) {  // each run of this program's blocks: its rows
+    for (int b = 0; b < blocks;) {
+      if (!mine[size_t(b)]) {
+        ++b;
+        continue;
+      }
+      int e = b;
+      while (e < blocks && mine[size_t(e)]) ++e;
+      glScissor(0, b * height_, width_, (e - b) * height_);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      b = e;
+    }
+    return;
+  }
+  // Vertices [begin, end) of a block are texels of whole rows between a partial first and last
+  // row: up to three rectangles.
+  for (int b = 0; b < blocks; ++b) {
+    if (!mine[size_t(b)]) continue;
+    const auto [begin, end] = ranges[size_t(b)];
+    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
+    auto rect = [&](int x0, int x1, int y0, int y1) {
+      if (x1 <= x0 || y1 <= y0) return;
+      glScissor(x0, b * height_ + y0, x1 - x0, y1 - y0);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    if (r0 == r1) {
+      rect(c0, c1, r0, r0 + 1);
+    } else {
+      rect(c0, width_, r0, r0 + 1);
+      rect(0, width_, r0 + 1, r1);
+      rect(0, c1, r1, r1 + 1);
+    }
+  }
 }
 
 void VertexPass::bind_result(const GlProgram& program, int unit) const {

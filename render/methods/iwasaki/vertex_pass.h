@@ -35,6 +35,10 @@ public:
   // The same with a rate per block: block b recomputes 1/block_shares[b] of the vertices per call
   // (a value smooth in the view, such as a broad lobe's, kept longer than a sharp one's).
   void run_shares(const GlProgram& program, int first_unit, std::span<const int> block_shares);
+  // The same with a program per block (block_programs[b] draws block b, each program set up by
+  // the caller): where one program would hold every block's code, a GPU runs even its cheap
+  // blocks at the occupancy of its costliest (the broad lobes' quadrature beside iwasaki's SGs).
+  void run_shares(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares);
   // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
   void invalidate() { valid_blocks_ = 0; }
   // Visible vertices only (visible_vertices.h): from the next run on, a vertex whose mark in
@@ -67,7 +71,11 @@ private:
   unsigned stamp_ = 0, previous_stamp_ = 0;
   bool marked_ = false;  // run_shares calls since the last whole pass: block b draws share calls_ mod its shares
   // Block b recomputes vertices [ranges[b].first, ranges[b].second).
-  void draw_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges);
+  // Each distinct program draws its own blocks (rows of the target), in turn.
+  void draw_blocks(std::span<const GlProgram* const> programs, int first_unit, const std::vector<std::pair<int, int>>& ranges);
+  // One program's blocks (mine[b]): all at once where it draws them all, else each run of them.
+  void draw_program_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges,
+                           const std::vector<bool>& mine, bool whole);
 };
 
 }  // namespace weft::gpu
