@@ -14,9 +14,11 @@ const char* kStrictGlsl = R"(float strict_nan() { return uintBitsToFloat(0x7fc00
 float strict_pow(float x, float y) { return x < 0.0 || (x == 0.0 && y <= 0.0) ? strict_nan() : pow(x, y); }
 float strict_log(float x) { return x <= 0.0 ? strict_nan() : log(x); }
 float strict_log2(float x) { return x <= 0.0 ? strict_nan() : log2(x); }
+float strict_sqrt(float x) { return x < 0.0 ? strict_nan() : sqrt(x); }
 #define pow strict_pow
 #define log strict_log
 #define log2 strict_log2
+#define sqrt strict_sqrt
 )";
 }  // namespace
 

@@ -12,7 +12,7 @@ inline constexpr int kMaxTangentSamples = 64;
 // "#version 300 es", precision and the defines every Weft shader starts with. With the
 // environment's WEFT_STRICT_GLSL set (tests, a driver's wrong pixels), the cases GLSL leaves
 // undefined and drivers answer differently return NaN instead: pow(x, y) with x < 0 or x = 0 ≤ y,
-// log and log2 of x ≤ 0 (llvmpipe answers pow(0, 0) with 1, NVIDIA with NaN).
+// log and log2 of x ≤ 0, sqrt of x < 0 (llvmpipe answers pow(0, 0) with 1, NVIDIA with NaN).
 std::string shader_preamble();
 
 // Throws GpuError if a thread has more than kMaxTangentSamples samples.
