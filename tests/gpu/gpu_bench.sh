@@ -4,7 +4,7 @@
 #
 #   tests/gpu/gpu_bench.sh BIN_DIR BUNDLE_DIR OUT_DIR [SIZES]
 #
-# BIN_DIR: weft, weft-offline and kiosk_frame_bench (a build tree's, or copies of them).
+# BIN_DIR: weft, weft-offline and kiosk_frame_bench (a build tree's, or copies of them: tests/gpu/gpu_pack.sh).
 # BUNDLE_DIR: showroom.weft and pillow.weft, baked with the showroom's grids
 #   (weft bake --scene S --table-grid 32 --sdf-resolution 64 --floor-sdf-resolution 32).
 # OUT_DIR: gets gpu_bench.log (everything), kiosk_<W>x<H>.md (the kiosk bench's tables),

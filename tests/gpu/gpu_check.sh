@@ -5,7 +5,7 @@
 #
 #   tests/gpu/gpu_check.sh TEST_DIR OUT_DIR
 #
-# TEST_DIR: the test executables (build/tests/gpu's, or copies); each found is run.
+# TEST_DIR: the test executables (build/tests/gpu's, or copies: tests/gpu/gpu_pack.sh); each found is run.
 # OUT_DIR: gets gpu_check.log. The tests read assets from the source tree they were built in
 # (WEFT_SOURCE_ASSETS): on another machine, make that path lead to this checkout's assets/.
 # Exits non-zero when a test fails.
