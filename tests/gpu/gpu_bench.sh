@@ -38,10 +38,15 @@ done
 # First, whether the driver draws what llvmpipe draws: the kiosk bench turning 2° a frame with
 # the per-vertex passes for the visible vertices only against every vertex, error columns on
 # (the bench fails where culling changes the frame at R = 1).
+# Each case's last frame is counted for cloth pixels that are not finite or black, and each cloth
+# object's per-vertex values for the SGs whose values are not (a driver's NaN: black cloth).
 step "kiosk culling check 640x480"
-WEFT_KIOSK_BUNDLES="showroom=$BUNDLES/showroom.weft,pillow=$BUNDLES/pillow.weft" WEFT_KIOSK_METHODS=auto,iwasaki_vertex \
+shots=$(mktemp -d)
+WEFT_KIOSK_BUNDLES="showroom=$BUNDLES/showroom.weft,pillow=$BUNDLES/pillow.weft" WEFT_KIOSK_METHODS=auto,iwasaki_vertex,sheen \
   WEFT_KIOSK_VERTICES=all,visible WEFT_KIOSK_REFRESH=1,b16 WEFT_KIOSK_FRAMES=8 WEFT_KIOSK_DEG_PER_FRAME=2 \
-  WEFT_KIOSK_SIZE=640x480 WEFT_KIOSK_OUT="$OUT/kiosk_check_640x480.md" run "$BIN/kiosk_frame_bench"
+  WEFT_KIOSK_SIZE=640x480 WEFT_KIOSK_SHOTS="$shots" WEFT_KIOSK_OUT="$OUT/kiosk_check_640x480.md" run "$BIN/kiosk_frame_bench"
+grep -q -E "[1-9][0-9]* not finite|vertices not finite" "$LOG" && say "NOT FINITE: the driver drew NaN cloth (census lines in the log)"
+rm -rf "$shots"
 
 # The kiosk's frame, the way `weft run` draws it, turning 0.4° a frame: stages by GPU timestamps.
 for size in $SIZES; do
