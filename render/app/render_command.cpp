@@ -3,6 +3,8 @@
 // GPU method (frame/ holds the work).
 #include <cmath>
 #include <iostream>
+#include <optional>
+#include <vector>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
@@ -38,8 +40,28 @@ struct RenderArgs {
   std::string backdrop = "showroom";
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
   int supersample = 0;  // 0: 4 with --weave, else 1
-  std::string camera = "scene";  // or "closeup"
+  std::string camera = "scene";  // or "closeup", or "EYE:TARGET[:FOV]"
 };
+
+// --camera's explicit form "ex,ey,ez:tx,ty,tz[:fov]": a pinhole at EYE looking at TARGET, the
+// scene camera's up, its vertical field of view unless FOV (degrees) is given.
+std::optional<Camera> explicit_camera(const std::string& text, const Camera& scene_camera) {
+  const size_t c1 = text.find(':');
+  if (c1 == std::string::npos) return std::nullopt;
+  const size_t c2 = text.find(':', c1 + 1);
+  const std::vector<double> eye = parse_numbers(text.substr(0, c1), 3, "--camera (eye)");
+  const std::vector<double> target =
+      parse_numbers(text.substr(c1 + 1, c2 == std::string::npos ? std::string::npos : c2 - c1 - 1), 3, "--camera (target)");
+  Camera c = scene_camera;
+  c.position = {eye[0], eye[1], eye[2]};
+  c.target = {target[0], target[1], target[2]};
+  if (c2 != std::string::npos) c.fov_deg = parse_numbers(text.substr(c2 + 1), 1, "--camera (field of view)")[0];
+  if (glm::length(c.target - c.position) < 1e-9) throw UsageError("--camera: the eye and the target are the same point");
+  if (glm::length(glm::cross(glm::normalize(c.target - c.position), glm::normalize(c.up))) < 1e-6)
+    throw UsageError("--camera: the view is along the scene camera's up; look a little aside");
+  if (!(c.fov_deg > 0.5 && c.fov_deg < 170.0)) throw UsageError("--camera: the field of view must be within 0.5..170 degrees");
+  return c;
+}
 
 int run_render(const RenderArgs& a) {
   {
@@ -63,7 +85,8 @@ int run_render(const RenderArgs& a) {
   if (!(a.exposure >= 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be ≥ 0 (0: automatic)");
   if (!std::isfinite(a.exposure_bias) || std::abs(a.exposure_bias) > 20) throw UsageError("--exposure-bias: must be within -20..20 EV");
   if (a.backdrop != "showroom" && a.backdrop != "measure") throw UsageError("--backdrop: must be 'showroom' or 'measure'");
-  if (a.camera != "scene" && a.camera != "closeup") throw UsageError("--camera: must be 'scene' or 'closeup'");
+  if (a.camera != "scene" && a.camera != "closeup" && a.camera.find(':') == std::string::npos)
+    throw UsageError("--camera: must be 'scene', 'closeup' or EYE:TARGET[:FOV]");
   if (a.supersample < 0 || a.supersample > 16) throw UsageError("--supersample: must be within 1..16");
   if (std::filesystem::path(a.out).extension() != ".exr")
     throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
@@ -77,6 +100,7 @@ int run_render(const RenderArgs& a) {
     throw UsageError(e.what());
   }
   if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
+  if (const std::optional<Camera> c = explicit_camera(a.camera, in.scene.camera)) in.scene.camera = *c;
   if (method && method->needs_weighting_tables() && !in.iwasaki) {
     std::cerr << "weft render: baking the weighting tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;
@@ -142,7 +166,7 @@ CommandAction add_render_command(CLI::App& app) {
   sub->add_option("--exposure-bias", a->exposure_bias, "PNG: EV added to the metered exposure (+1: twice as bright)")->capture_default_str();
   sub->add_flag("--weave", a->weave, "The resolved weave: up close each point shows the thread that lies there (GPU methods: the weave layer over the method; reference: the resolved model, supersampled)");
   sub->add_option("--supersample", a->supersample, "Reference: rays per pixel along each axis (default 4 with --weave, else 1)");
-  sub->add_option("--camera", a->camera, "scene: the scene's camera; closeup: its close-up camera (or the camera moved in until a weave repeat spans 24 pixels)")->capture_default_str();
+  sub->add_option("--camera", a->camera, "scene: the scene's camera; closeup: its close-up camera (or the camera moved in until a weave repeat spans 24 pixels); EX,EY,EZ:TX,TY,TZ[:FOV]: eye and target in the scene's metres, the scene camera's up, FOV its vertical field of view (degrees)")->capture_default_str();
   sub->add_option("--backdrop", a->backdrop, "GPU methods: showroom (the environment, softened, behind the scene) or measure (black; the sharp environment behind see-through cloth, as the bench draws)")->capture_default_str();
   return [a] { return run_render(*a); };
 }

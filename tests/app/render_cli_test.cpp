@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -126,6 +127,39 @@ TEST(RenderCli, LadderMethodsRender) {
     EXPECT_TRUE(is_png(png)) << m;
     fs::remove(exr), fs::remove(png);
   }
+  fs::remove(sgs);
+}
+
+static std::string file_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// --camera EYE:TARGET[:FOV]: the scene's own camera given explicitly draws the scene's frame; another
+// eye draws another; a camera that cannot be is refused.
+TEST(RenderCli, ExplicitCamera) {
+  const fs::path sgs = temp("camera_sgs.json");
+  std::ofstream(sgs) << R"({"sgs":[{"axis":[0.3,-0.2,0.93],"sharpness":8,"amplitude":[1,1,1]}]})";
+  auto render = [&](const std::string& name, const std::string& camera) {
+    const fs::path exr = temp(name + ".exr");
+    const CliResult r = weft("render --scene swatch --method sheen --sgs " + sgs.string() + " --width 32 --height 24 --frames 1" +
+                             (camera.empty() ? "" : " --camera " + camera) + " --out " + exr.string());
+    EXPECT_EQ(r.code, 0) << name << ": " << r.out;
+    const std::string png = file_bytes(temp(name + ".png"));
+    fs::remove(exr), fs::remove(temp(name + ".png"));
+    return png;
+  };
+  const std::string scene = render("camera_scene", "");
+  ASSERT_FALSE(scene.empty());
+  // swatch.json's camera: position (0, -1.25, 1.05), target the origin, fov 40.
+  EXPECT_EQ(render("camera_same", "0,-1.25,1.05:0,0,0:40"), scene);
+  EXPECT_NE(render("camera_other", "0.4,-0.9,0.6:0,0,0"), scene);
+  const std::string out = " --out " + temp("camera_bad.exr").string();
+  EXPECT_EQ(weft("render --scene swatch --method sheen --camera 0,0:0,0,0" + out).code, 2);           // two numbers
+  EXPECT_EQ(weft("render --scene swatch --method sheen --camera 1,1,1:1,1,1" + out).code, 2);         // eye = target
+  EXPECT_EQ(weft("render --scene swatch --method sheen --camera 0,-1,1:0,0,0:0" + out).code, 2);      // no field of view
+  EXPECT_EQ(weft("render --scene swatch --method sheen --camera 0,-1,1:0,0,0:nan" + out).code, 2);
+  EXPECT_EQ(weft("render --scene swatch --method sheen --camera somewhere" + out).code, 2);
   fs::remove(sgs);
 }
 
