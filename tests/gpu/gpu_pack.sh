@@ -10,7 +10,8 @@
 # On the GPU machine: unpack, drop the libraries its system already has (`ldconfig -p`), set
 # LD_LIBRARY_PATH to pkg/lib, and run tests/gpu/gpu_bench.sh pkg/bin pkg/bundles OUT and
 # tests/gpu/gpu_check.sh pkg/tests OUT (the tests read assets/ and bake with weft at the paths of
-# the build they came from: link those paths to the checkout and pkg/bin/weft).
+# the build they came from: link those paths to the checkout and to pkg/bin, whose weft runs
+# weft-offline beside it for `weft bake`).
 set -euo pipefail
 if [ $# -lt 3 ] || [ "${1:-}" = "--help" ]; then sed -n '2,14p' "$0"; exit 2; fi
 BUILD=$(realpath "$1") BUNDLES=$(realpath "$2") OUT=$3
