@@ -14,8 +14,13 @@ ExposureMeter::ExposureMeter(double bias_ev, double adapt_seconds) : bias_ev_(bi
 void ExposureMeter::meter(std::span<const float> rgba) {
   std::vector<glm::dvec3> cloth;
   cloth.reserve(rgba.size() / 4);
-  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
-    if (gpu::is_cloth_alpha(rgba[i + 3])) cloth.emplace_back(rgba[i], rgba[i + 1], rgba[i + 2]);
+  non_finite_pixels_ = 0;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+    if (!gpu::is_cloth_alpha(rgba[i + 3])) continue;
+    cloth.emplace_back(rgba[i], rgba[i + 1], rgba[i + 2]);
+    if (!std::isfinite(rgba[i]) || !std::isfinite(rgba[i + 1]) || !std::isfinite(rgba[i + 2])) ++non_finite_pixels_;
+  }
+  cloth_pixels_ = cloth.size();
   target_ = metered_exposure(log_average_luminance(cloth), bias_ev_);
   if (shown_ <= 0.0) shown_ = target_;
   requested_ = false;

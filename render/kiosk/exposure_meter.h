@@ -7,6 +7,7 @@
 //   if (meter.requested()) meter.meter_bound_framebuffer(w, h);
 //   meter.ease(now);                 // the exposure shown this frame: meter.shown()
 #include <chrono>
+#include <cstddef>
 #include <span>
 
 namespace weft {
@@ -33,6 +34,11 @@ public:
   // Moves shown() towards target() by the time since the previous ease.
   void ease(Clock::time_point now);
 
+  // Of the last metering: the cloth pixels, and those whose radiance was not finite (left out of
+  // the average; on screen they are black: a GPU driver that evaluates a shader otherwise).
+  size_t cloth_pixels() const { return cloth_pixels_; }
+  size_t non_finite_pixels() const { return non_finite_pixels_; }
+
   double shown() const { return shown_; }    // 0 until the first metering
   double target() const { return target_; }  // 0 until the first metering
   bool adapting() const;                     // shown() still visibly away from target()
@@ -42,6 +48,7 @@ private:
   double adapt_seconds_;
   bool requested_ = false;
   double shown_ = 0.0, target_ = 0.0;
+  size_t cloth_pixels_ = 0, non_finite_pixels_ = 0;
   Clock::time_point last_ease_;
 };
 

@@ -359,7 +359,7 @@ void Kiosk::draw_frame(double turn_deg) {
   renderer_->draw(turned_about_z(camera, turn_deg, glm::mix(pivot_, camera.target, zoom_shown_)), width_, height_);
   if (exposure_.requested()) {
     const gpu::StageScope stage(gpu::Stage::metering);
-    exposure_.meter_bound_framebuffer(width_, height_);
+    meter_frame(width_, height_);
   }
   exposure_.ease(Clock::now());
   present(Clock::now());
@@ -389,7 +389,17 @@ void Kiosk::meter_as_baked() {
   renderer_->draw(scene_->scene.camera, mw, mh);
   renderer_->refresh_all();  // kept per-vertex values are for this camera, not the next frame's
   exposure_.restart();  // shown at once, not eased in from another scene's
-  exposure_.meter_bound_framebuffer(mw, mh);
+  non_finite_logged_ = false;
+  meter_frame(mw, mh);
+}
+
+void Kiosk::meter_frame(int width, int height) {
+  exposure_.meter_bound_framebuffer(width, height);
+  if (exposure_.non_finite_pixels() == 0 || non_finite_logged_) return;
+  non_finite_logged_ = true;
+  kiosk_log_warning(std::to_string(exposure_.non_finite_pixels()) + " of " + std::to_string(exposure_.cloth_pixels()) +
+                    " cloth pixels are not finite (shown black): this GPU driver evaluates a shader unlike the one it "
+                    "was tested on; tests/gpu/gpu_check.sh on this machine names it, `--method sheen` avoids it");
 }
 
 }  // namespace weft

@@ -175,6 +175,8 @@ private:
 
   // Exposure: metered at boot and after each lighting change (never on a knob edit).
   ExposureMeter exposure_;
+  bool non_finite_logged_ = false;  // this scene's cloth was metered with NaN pixels and the journal told
+  void meter_frame(int width, int height);  // the exposure from the bound frame; NaN cloth logged once
   // Content updates; null when the bundle's directory cannot be watched.
   std::unique_ptr<BundleSwap> swap_;
   std::unique_ptr<StatusFile> status_;  // null: none asked for

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "kiosk/exposure_meter.h"
@@ -27,6 +28,21 @@ TEST(ExposureMeter, TakesTheClothsLogAverageToTheKeyAndIgnoresTheBackdrop) {
   m.meter(frame({0.1f, 0.4f, 0.1f, 0.4f}, 12));
   EXPECT_NEAR(m.target(), 2.5, 1e-6);
   EXPECT_NEAR(m.shown(), 2.5, 1e-6);  // the first metering is shown at once
+}
+
+// A driver's NaN on the cloth: counted, left out of the average (the rest meters as it would alone).
+TEST(ExposureMeter, CountsClothPixelsThatAreNotFiniteAndMetersWithoutThem) {
+  ExposureMeter clean(0.0, 0.7), with_nan(0.0, 0.7);
+  clean.meter(frame({0.1f, 0.4f}, 4));
+  std::vector<float> f = frame({0.1f, 0.4f, 0.3f, 0.3f}, 4);
+  f[8] = std::nanf("");                            // third cloth pixel's red
+  f[13] = std::numeric_limits<float>::infinity();  // fourth's green
+  f[16 + 1] = std::nanf("");                       // a backdrop pixel: not cloth, not counted
+  with_nan.meter(f);
+  EXPECT_EQ(clean.non_finite_pixels(), 0u);
+  EXPECT_EQ(with_nan.cloth_pixels(), 4u);
+  EXPECT_EQ(with_nan.non_finite_pixels(), 2u);
+  EXPECT_NEAR(with_nan.target(), clean.target(), 1e-9);
 }
 
 TEST(ExposureMeter, TheBiasIsInStops) {
