@@ -70,11 +70,7 @@ void VertexPass::set_marks(GLuint marks, unsigned stamp) {
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
-  blocks = std::max(blocks, 1);
-  const std::vector<const GlProgram*> programs(size_t(blocks), &program);
-  draw_blocks(programs, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
-  valid_blocks_ = blocks;
-  calls_ = 0;
+  run_shares(program, first_unit, std::vector<int>(size_t(std::max(blocks, 1)), 1));  // every share 1: the whole pass
 }
 
 void VertexPass::run_share(const GlProgram& program, int first_unit, int blocks, int shares) {
