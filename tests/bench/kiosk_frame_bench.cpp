@@ -38,6 +38,7 @@
 
 #include "bundle/bundle_reader.h"
 #include "image/image.h"
+#include "runtime/scene_bundle.h"
 #include "gl/frame_profile.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
@@ -85,15 +86,6 @@ double cpu_ms() {
   return 1e3 * (double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec));
 }
 
-// An RGBA readback (row 0 at the bottom) as an Image (row 0 at the top), alpha dropped.
-Image image_of(const std::vector<float>& rgba, int w, int h) {
-  Image im(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) im.at(x, h - 1 - y)[c] = rgba[(size_t(y) * w + x) * 4 + c];
-  return im;
-}
-
 // "cloth pixels, of them not finite, of them black" of a readback.
 std::string cloth_census(const std::vector<float>& rgba) {
   size_t cloth = 0, bad = 0, black = 0;
@@ -105,6 +97,34 @@ std::string cloth_census(const std::vector<float>& rgba) {
     else if (rgba[i] <= 0.0f && rgba[i + 1] <= 0.0f && rgba[i + 2] <= 0.0f) ++black;
   }
   return std::to_string(cloth) + " cloth px, " + std::to_string(bad) + " not finite, " + std::to_string(black) + " black";
+}
+
+// Per cloth object and value block (an SG, or a quadrature part) of the renderer's last draw: the
+// vertices whose per-vertex value is not finite, the first of them with its normal and warp.
+void print_non_finite_vertices(const SceneBundle& sb, const gpu::SceneRenderer& r) {
+  size_t cloth_index = 0;
+  for (const SceneObject& o : sb.scene.objects) {
+    if (!o.is_cloth()) continue;
+    int texels = 0;
+    const std::vector<float> values = r.cloth_vertex_values(cloth_index++, &texels);
+    for (size_t b = 0; texels > 0 && b * size_t(texels) * 4 < values.size(); ++b) {
+      size_t bad = 0, first = 0;
+      for (size_t i = 0; i < size_t(texels) && i < o.mesh.positions.size(); ++i) {
+        const float* v = &values[(b * size_t(texels) + i) * 4];
+        if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) continue;
+        if (bad++ == 0) first = i;
+      }
+      if (bad == 0) continue;
+      const glm::dvec3 n = o.mesh.normals[first], u = o.mesh.warps[first];
+      std::printf("  %s block %zu: %zu of %zu vertices not finite; first %zu, normal (%.6f %.6f %.6f), warp (%.6f %.6f %.6f)\n",
+                  o.name.c_str(), b, bad, o.mesh.positions.size(), first, n.x, n.y, n.z, u.x, u.y, u.z);
+      if (b < sb.sgs.size()) {
+        const SphericalGaussian& g = sb.sgs[b];
+        std::printf("    SG %zu: axis (%.6f %.6f %.6f), sharpness %.4f, cos to the normal %.6f\n", b, g.axis.x, g.axis.y, g.axis.z,
+                    g.sharpness, glm::dot(glm::normalize(g.axis), glm::normalize(n)));
+      }
+    }
+  }
 }
 
 double median(std::vector<double> v) {
@@ -239,40 +259,15 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
         if (const char* shots = std::getenv("WEFT_KIOSK_SHOTS")) {
           const std::string stem = std::string(shots) + "/" + name + "_" + method.name + "_" + (per_vertex ? vertices : "") + "_" +
                                    std::to_string(reuse.longest());
-          const std::vector<float> shown = target.read_rgba();
+          std::filesystem::create_directories(shots);
+          const std::vector<float> shown = target.read_rgba();  // binds the target for the image too
+          write_exr(gpu::read_linear_image(w, h), stem + ".exr");
           truth.bind();
           full->draw(camera_at(kWarm + frames), w, h);
           const std::vector<float> every = truth.read_rgba();
-          std::filesystem::create_directories(shots);
-          write_exr(image_of(shown, w, h), stem + ".exr");
-          write_exr(image_of(every, w, h), stem + "_every_vertex.exr");
+          write_exr(gpu::read_linear_image(w, h), stem + "_every_vertex.exr");
           std::cout << stem << ": drawn " << cloth_census(shown) << "; every vertex " << cloth_census(every) << "\n";
-          // Per cloth object and value block (an SG, or a quadrature part): the vertices whose
-          // value is not finite, and the first of them with its normal and warp.
-          size_t cloth_index = 0;
-          for (const SceneObject& o : kb.scene.scene.objects) {
-            if (o.material != Material::cloth) continue;
-            int texels = 0;
-            const std::vector<float> values = r->cloth_vertex_values(cloth_index++, &texels);
-            if (values.empty() || texels <= 0) continue;
-            for (size_t b = 0; b * size_t(texels) * 4 < values.size(); ++b) {
-              size_t bad = 0, first = 0;
-              for (size_t i = 0; i < size_t(texels) && i < o.mesh.positions.size(); ++i) {
-                const float* v = &values[(b * size_t(texels) + i) * 4];
-                if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) continue;
-                if (bad++ == 0) first = i;
-              }
-              if (bad == 0) continue;
-              const glm::dvec3 n = o.mesh.normals[first], u = o.mesh.warps[first];
-              std::printf("  %s block %zu: %zu of %zu vertices not finite; first %zu, normal (%.6f %.6f %.6f), warp (%.6f %.6f %.6f)\n",
-                          o.name.c_str(), b, bad, o.mesh.positions.size(), first, n.x, n.y, n.z, u.x, u.y, u.z);
-              if (b < kb.scene.sgs.size()) {
-                const auto& g = kb.scene.sgs[b];
-                std::printf("    SG %zu: axis (%.6f %.6f %.6f), sharpness %.4f, cos to the normal %.6f\n", b, g.axis.x, g.axis.y, g.axis.z,
-                            g.sharpness, glm::dot(glm::normalize(g.axis), glm::normalize(n)));
-              }
-            }
-          }
+          print_non_finite_vertices(kb.scene, *r);
         }
         // A camera that does not move: reused values are the values, so the frame is the full one.
         if (reused && (kDegPerFrame == 0.0 || reuse.longest() == 1)) {
