@@ -52,6 +52,21 @@ SphericalGaussian parse_sg(const std::string& text, const std::string& arg) {
   return g;
 }
 
+Camera parse_camera(const std::string& text, const Camera& base, const std::string& arg) {
+  const size_t c1 = text.find(':');
+  if (c1 == std::string::npos) throw UsageError(arg + ": expected 'scene', 'closeup' or EYE:TARGET[:FOV], got '" + text + "'");
+  const size_t c2 = text.find(':', c1 + 1);
+  const std::vector<double> eye = parse_numbers(text.substr(0, c1), 3, arg + " (eye)");
+  const std::vector<double> target =
+      parse_numbers(text.substr(c1 + 1, c2 == std::string::npos ? std::string::npos : c2 - c1 - 1), 3, arg + " (target)");
+  Camera c = base;
+  c.position = {eye[0], eye[1], eye[2]};
+  c.target = {target[0], target[1], target[2]};
+  if (c2 != std::string::npos) c.fov_deg = parse_numbers(text.substr(c2 + 1), 1, arg + " (field of view)")[0];
+  as_usage(arg, [&] { check_camera(c, "camera"); });
+  return c;
+}
+
 std::string read_argument_file(const std::string& path, const std::string& arg) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError(arg + ": cannot open '" + path + "'");

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/spherical_gaussian.h"
+#include "scene/scene.h"
 
 namespace weft {
 
@@ -20,6 +21,9 @@ std::vector<double> parse_numbers(const std::string& text, size_t count, const s
 glm::dvec3 parse_direction(const std::string& text, const std::string& arg);
 // `axis_x,axis_y,axis_z,λ,μ_r,μ_g,μ_b`: axis normalised, λ > 0, μ ≥ 0.
 SphericalGaussian parse_sg(const std::string& text, const std::string& arg);
+// --camera's "ex,ey,ez:tx,ty,tz[:fov]": `base` moved to the eye, looking at the target, its up kept and its
+// vertical field of view unless FOV (degrees) is given; checked as a scene's camera (check_camera).
+Camera parse_camera(const std::string& text, const Camera& base, const std::string& arg);
 // The whole of a file a command-line argument names; UsageError "<arg>: cannot open '<path>'".
 std::string read_argument_file(const std::string& path, const std::string& arg);
 

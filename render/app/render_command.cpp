@@ -3,8 +3,6 @@
 // GPU method (frame/ holds the work).
 #include <cmath>
 #include <iostream>
-#include <optional>
-#include <vector>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
@@ -43,26 +41,6 @@ struct RenderArgs {
   std::string camera = "scene";  // or "closeup", or "EYE:TARGET[:FOV]"
 };
 
-// --camera's explicit form "ex,ey,ez:tx,ty,tz[:fov]": a pinhole at EYE looking at TARGET, the
-// scene camera's up, its vertical field of view unless FOV (degrees) is given.
-std::optional<Camera> explicit_camera(const std::string& text, const Camera& scene_camera) {
-  const size_t c1 = text.find(':');
-  if (c1 == std::string::npos) return std::nullopt;
-  const size_t c2 = text.find(':', c1 + 1);
-  const std::vector<double> eye = parse_numbers(text.substr(0, c1), 3, "--camera (eye)");
-  const std::vector<double> target =
-      parse_numbers(text.substr(c1 + 1, c2 == std::string::npos ? std::string::npos : c2 - c1 - 1), 3, "--camera (target)");
-  Camera c = scene_camera;
-  c.position = {eye[0], eye[1], eye[2]};
-  c.target = {target[0], target[1], target[2]};
-  if (c2 != std::string::npos) c.fov_deg = parse_numbers(text.substr(c2 + 1), 1, "--camera (field of view)")[0];
-  if (glm::length(c.target - c.position) < 1e-9) throw UsageError("--camera: the eye and the target are the same point");
-  if (glm::length(glm::cross(glm::normalize(c.target - c.position), glm::normalize(c.up))) < 1e-6)
-    throw UsageError("--camera: the view is along the scene camera's up; look a little aside");
-  if (!(c.fov_deg > 0.5 && c.fov_deg < 170.0)) throw UsageError("--camera: the field of view must be within 0.5..170 degrees");
-  return c;
-}
-
 int run_render(const RenderArgs& a) {
   {
     std::string all = "reference";
@@ -85,8 +63,6 @@ int run_render(const RenderArgs& a) {
   if (!(a.exposure >= 0.0) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be ≥ 0 (0: automatic)");
   if (!std::isfinite(a.exposure_bias) || std::abs(a.exposure_bias) > 20) throw UsageError("--exposure-bias: must be within -20..20 EV");
   if (a.backdrop != "showroom" && a.backdrop != "measure") throw UsageError("--backdrop: must be 'showroom' or 'measure'");
-  if (a.camera != "scene" && a.camera != "closeup" && a.camera.find(':') == std::string::npos)
-    throw UsageError("--camera: must be 'scene', 'closeup' or EYE:TARGET[:FOV]");
   if (a.supersample < 0 || a.supersample > 16) throw UsageError("--supersample: must be within 1..16");
   if (std::filesystem::path(a.out).extension() != ".exr")
     throw UsageError("--out: must name an .exr file, got '" + a.out + "'");
@@ -100,7 +76,7 @@ int run_render(const RenderArgs& a) {
     throw UsageError(e.what());
   }
   if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
-  if (const std::optional<Camera> c = explicit_camera(a.camera, in.scene.camera)) in.scene.camera = *c;
+  else if (a.camera != "scene") in.scene.camera = parse_camera(a.camera, in.scene.camera, "--camera");
   if (method && method->needs_weighting_tables() && !in.iwasaki) {
     std::cerr << "weft render: baking the weighting tables in memory (weft bake stores them in a bundle)\n";
     IwasakiBakeOptions o;

@@ -15,6 +15,15 @@ glm::dvec3 camera_ray(const Camera& c, int width, int height, double px, double 
   return glm::normalize(forward + sx * right + sy * up);
 }
 
+void check_camera(const Camera& c, const std::string& where) {
+  if (!(c.fov_deg > 1.0 && c.fov_deg < 170.0))
+    throw SceneError(where + ".fov_deg: must be in (1, 170) degrees, got " + std::to_string(c.fov_deg));
+  const glm::dvec3 view = c.target - c.position;
+  if (!(glm::length(view) > 1e-9)) throw SceneError(where + ": position and target coincide");
+  if (!(glm::length(glm::cross(view, c.up)) > 1e-9 * glm::length(view)))
+    throw SceneError(where + ".up: zero or parallel to the view direction");
+}
+
 Fabric object_fabric(const SceneObject& o, Fabric fabric) {
   if (o.optical_thickness > 0.0) fabric.optical_thickness = o.optical_thickness;
   return fabric;

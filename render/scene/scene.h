@@ -33,6 +33,9 @@ struct Camera {
 // Unit direction of the pinhole ray through image point (px, py) of a width×height image;
 // (0,0) is the top-left corner, pixel (x, y)'s centre is (x+½, y+½).
 glm::dvec3 camera_ray(const Camera& camera, int width, int height, double px, double py);
+// A camera that can be used: field of view within (1, 170) degrees, eye and target apart, up not
+// along the view. Throws SceneError naming `where` and the problem.
+void check_camera(const Camera& camera, const std::string& where);
 
 enum class Material { cloth, lambertian };
 

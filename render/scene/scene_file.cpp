@@ -187,12 +187,7 @@ Camera parse_camera(const json& cam, const std::string& cw) {
   c.target = vec3(field(cam, "target", cw), cw + ".target");
   c.up = vec3(field(cam, "up", cw), cw + ".up");
   c.fov_deg = number(field(cam, "fov_deg", cw), cw + ".fov_deg");
-  if (!(c.fov_deg > 1.0 && c.fov_deg < 170.0))
-    throw SceneError(cw + ".fov_deg: must be in (1, 170) degrees, got " + std::to_string(c.fov_deg));
-  const glm::dvec3 view = c.target - c.position;
-  if (!(glm::length(view) > 1e-9)) throw SceneError(cw + ": position and target coincide");
-  if (!(glm::length(glm::cross(view, c.up)) > 1e-9 * glm::length(view)))
-    throw SceneError(cw + ".up: zero or parallel to the view direction");
+  check_camera(c, cw);
   return c;
 }
 
