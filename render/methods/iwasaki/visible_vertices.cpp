@@ -2,6 +2,7 @@
 
 #include <GLES3/gl32.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -88,31 +89,44 @@ unsigned VisibleVertices::mark(const glm::mat4& view_projection, int width, int 
   if (++stamp_ == 0) stamp_ = 1;  // 0 is never a view's
 
   GLint framebuffer = 0, viewport[4], program = 0, depth_func = GL_LESS;
-  GLboolean depth_mask = GL_TRUE;
+  GLboolean depth_mask = GL_TRUE, colour_mask[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_VIEWPORT, viewport);
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask);
   const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND),
                   offset = glIsEnabled(GL_POLYGON_OFFSET_FILL), cull = glIsEnabled(GL_CULL_FACE);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  const GLenum none = GL_NONE;
-  glDrawBuffers(1, &none);
-  glViewport(0, 0, width, height);
+  // Where draw_depth already put every mesh's depth for this view into the bound framebuffer (the
+  // kiosk's frame draws it before the cloth), the marks test against that depth: one draw of the
+  // meshes instead of two, and no target of our own. Its depth lies four steps further away, so a
+  // few more vertices pass (never fewer).
+  const bool frame_depth = std::all_of(meshes_.begin(), meshes_.end(), [&](const Mesh& m) {
+    return m.depth_view_projection == view_projection && m.depth_framebuffer == framebuffer && m.depth_viewport[0] == viewport[0] &&
+           m.depth_viewport[1] == viewport[1] && m.depth_viewport[2] == width && m.depth_viewport[3] == height;
+  });
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
-  glClear(GL_DEPTH_BUFFER_BIT);
   program_.use();
   glUniformMatrix4fv(program_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
   glUniform1ui(program_.uniform("u_stamp"), stamp_);
-  glUniform1i(program_.uniform("u_mark"), 0);
-  for (const Mesh& m : meshes_) m.drawn->draw();
+  if (frame_depth) {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    const GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
+    glViewport(0, 0, width, height);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUniform1i(program_.uniform("u_mark"), 0);
+    for (const Mesh& m : meshes_) m.drawn->draw();
+  }
   glUniform1i(program_.uniform("u_mark"), 1);
   glDepthMask(GL_FALSE);
   glDepthFunc(GL_LEQUAL);
@@ -136,6 +150,7 @@ unsigned VisibleVertices::mark(const glm::mat4& view_projection, int width, int 
   if (blend) glEnable(GL_BLEND);
   if (!offset) glDisable(GL_POLYGON_OFFSET_FILL);
   if (cull) glEnable(GL_CULL_FACE);
+  glColorMask(colour_mask[0], colour_mask[1], colour_mask[2], colour_mask[3]);
   check_gl("marking the visible vertices");
   return stamp_;
 }
@@ -147,7 +162,11 @@ void VisibleVertices::mark_for(VertexPass& pass, size_t mesh, const glm::mat4& v
   pass.set_marks(marks(mesh), stamp);
 }
 
-void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) const {
+void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) {
+  Mesh& m = meshes_.at(mesh);
+  m.depth_view_projection = view_projection;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &m.depth_framebuffer);
+  glGetIntegerv(GL_VIEWPORT, m.depth_viewport);
   GLint program = 0;
   GLboolean colour_mask[4];
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
@@ -159,7 +178,7 @@ void VisibleVertices::draw_depth(size_t mesh, const glm::mat4& view_projection) 
   const GLboolean offset = glIsEnabled(GL_POLYGON_OFFSET_FILL);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(0.0f, 4.0f);  // the draw's own fragment, rounded either way, still passes GL_LESS
-  meshes_.at(mesh).drawn->draw();
+  m.drawn->draw();
   glPolygonOffset(0.0f, 0.0f);
   if (!offset) glDisable(GL_POLYGON_OFFSET_FILL);
   glColorMask(colour_mask[0], colour_mask[1], colour_mask[2], colour_mask[3]);

@@ -8,7 +8,8 @@
 // both rasterise alike): depth first; then, at depth ≤ the front pulled a little toward the eye
 // (a tie or a rounding marks both triangles: more vertices, never fewer), each fragment stores
 // the stamp of this view in its triangle's three vertices (shader storage indexed by
-// gl_PrimitiveID: GLES 3.2). Meshes drawn in front of the cloth by others (the floor) are not
+// gl_PrimitiveID: GLES 3.2); where the frame already holds the meshes' depth (draw_depth), only the
+// second draw, against it. Meshes drawn in front of the cloth by others (the floor) are not
 // drawn here: they only hide vertices that are then computed anyway. Where the GL lacks GLES 3.2,
 // supported() is false and the passes compute every vertex.
 #include <GLES3/gl31.h>
@@ -44,7 +45,9 @@ public:
   void mark_for(VertexPass& pass, size_t mesh, const glm::mat4& view_projection);
   // The mesh's depth alone into the bound framebuffer (colour untouched), as the per-vertex draw
   // places it pushed four depth steps away (ClothMethod::draw_depth); the program in use is kept.
-  void draw_depth(size_t mesh, const glm::mat4& view_projection) const;
+  // Once every mesh's depth is there for a view, mark() for that view in that framebuffer tests
+  // against it instead of drawing the meshes' depth again into its own target.
+  void draw_depth(size_t mesh, const glm::mat4& view_projection);
   GLuint marks(size_t mesh) const { return meshes_.at(mesh).marks; }
   // How many vertices of `mesh` the last mark found visible (reads the marks back: for tests).
   size_t visible(size_t mesh) const;
@@ -54,6 +57,9 @@ private:
     const GpuMesh* drawn;
     GLuint triangles = 0, marks = 0;  // shader storage buffers
     int vertices = 0;
+    // The last draw_depth: its view, framebuffer and viewport.
+    glm::mat4 depth_view_projection{0.0f};
+    GLint depth_framebuffer = -1, depth_viewport[4] = {0, 0, 0, 0};
   };
   GlProgram program_;
   std::vector<Mesh> meshes_;
