@@ -9,6 +9,13 @@ ClothBsdf::ClothBsdf(const Fabric& fabric, std::array<int, 2> samples) : fabric_
   for (int j = 0; j < 2; ++j) {
     tilts_[j] = fabric_.threads[j].curve.sample_tilts(samples[j]);
     spreads_[j] = fabric_.threads[j].curve.sample_tilt_spreads(samples[j]);
+    const size_t n = tilts_[j].size();
+    multiplicity_[j].assign(n, 0);
+    for (size_t k = 0; k < n; ++k) {
+      size_t first = 0;
+      while (tilts_[j][first] != tilts_[j][k] || spreads_[j][first] != spreads_[j][k]) ++first;
+      ++multiplicity_[j][first];
+    }
   }
 }
 

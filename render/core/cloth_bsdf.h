@@ -22,6 +22,10 @@ public:
   double tilt(int thread, int k) const { return tilts_[thread][k]; }
   // RMS tilt over the arc sample k stands for (TangentCurve::sample_tilt_spreads).
   double tilt_spread(int thread, int k) const { return spreads_[thread][k]; }
+  // How many of the thread's samples have sample k's tilt and spread, where k is the first of
+  // them; 0 for the others. Such samples give the same terms (a float's flat run yields several
+  // at tilt 0): a sum over samples may take the first times its multiplicity and skip the rest.
+  int sample_multiplicity(int thread, int k) const { return multiplicity_[thread][k]; }
 
   // The model bound to one shading frame. Holds scratch space: one per thread of execution.
   class Point {
@@ -68,6 +72,7 @@ private:
   Fabric fabric_;
   std::array<std::vector<double>, 2> tilts_;
   std::array<std::vector<double>, 2> spreads_;
+  std::array<std::vector<int>, 2> multiplicity_;
 };
 
 }  // namespace weft

@@ -30,7 +30,8 @@ std::string shader_preamble() {
 
 void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
   program.use();
-  std::vector<float> tilts(2 * kMaxTangentSamples, 0.0f), spreads(2 * kMaxTangentSamples, 0.0f);
+  std::vector<float> tilts(2 * kMaxTangentSamples, 0.0f), spreads(2 * kMaxTangentSamples, 0.0f),
+      multiplicity(2 * kMaxTangentSamples, 0.0f);
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& p = bsdf.fabric().threads[j];
     const int n = bsdf.sample_count(j);
@@ -48,12 +49,14 @@ void upload_fabric(const GlProgram& program, const ClothBsdf& bsdf) {
     for (int k = 0; k < n; ++k) {
       tilts[j * kMaxTangentSamples + k] = float(bsdf.tilt(j, k));
       spreads[j * kMaxTangentSamples + k] = float(bsdf.tilt_spread(j, k));
+      multiplicity[j * kMaxTangentSamples + k] = float(bsdf.sample_multiplicity(j, k));
     }
   }
   // Four to a vec4 (microcylinder.glsl says why).
   glUniform4fv(program.uniform("u_tilts"), 2 * kMaxTangentSamples / 4, tilts.data());
   // Only shaders that widen their lobes by it declare it (iwasaki.glsl); elsewhere a no-op.
   glUniform4fv(program.uniform("u_tilt_spreads"), 2 * kMaxTangentSamples / 4, spreads.data());
+  glUniform4fv(program.uniform("u_sample_multiplicity"), 2 * kMaxTangentSamples / 4, multiplicity.data());
 }
 
 }  // namespace weft::gpu

@@ -183,6 +183,34 @@ TEST(TangentCurve, EveryPresetSamplesUniformlyInArcLength) {
   }
 }
 
+// A satin's float is a flat run of its warp's curve: several of its arc-midpoint samples lie at
+// tilt 0 with no spread, and each run of alike samples is counted once, by its first.
+TEST(ClothBsdf, AlikeSamplesAreCountedByTheFirst) {
+  const ClothBsdf bsdf(preset("polyester_satin_charmeuse"), {15, 3});
+  for (int j = 0; j < 2; ++j) {
+    int total = 0, merged = 0;
+    for (int k = 0; k < bsdf.sample_count(j); ++k) {
+      const int m = bsdf.sample_multiplicity(j, k);
+      total += m;
+      int alike = 0;
+      bool earlier = false;
+      for (int q = 0; q < bsdf.sample_count(j); ++q) {
+        const bool same = bsdf.tilt(j, q) == bsdf.tilt(j, k) && bsdf.tilt_spread(j, q) == bsdf.tilt_spread(j, k);
+        alike += same ? 1 : 0;
+        earlier = earlier || (same && q < k);
+      }
+      EXPECT_EQ(m, earlier ? 0 : alike) << "thread " << j << " sample " << k;
+      merged += m == 0 ? 1 : 0;
+    }
+    EXPECT_EQ(total, bsdf.sample_count(j));
+    if (j == 0) {
+      EXPECT_GE(merged, 3) << "the float's flat run and its two ends";
+    }
+  }
+  const ClothBsdf linen(preset("linen_plain"), 15);  // a plain weave's curves bend everywhere
+  for (int k = 0; k < 15; ++k) EXPECT_EQ(linen.sample_multiplicity(0, k), 1);
+}
+
 TEST(TangentCurve, RejectsMismatchedLengths) {
   EXPECT_THROW(TangentCurve({0, 1, 2}, {1}), std::invalid_argument);
   EXPECT_THROW(TangentCurve({0, 1}, {0}), std::invalid_argument);

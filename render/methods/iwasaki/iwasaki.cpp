@@ -158,6 +158,9 @@ IwasakiTerms radiance_of(const ClothBsdf& bsdf, const WeightingTables& tables, c
       const int n = bsdf.sample_count(j);
       dvec3 surf(0.0), vol(0.0);
       for (int k = 0; k < n; ++k, ++s) {
+        // Samples alike in tilt and spread give the same terms: the first, times their count.
+        const double m = bsdf.sample_multiplicity(j, k);
+        if (m == 0.0) continue;
         const ThreadFrame tf = thread_frame(frame, j, bsdf.tilt(j, k));
         const SgCircularSplit sg = split_sg(g, tf);  // Eq. 11
         const FiberAngles o = fiber_angles(tf, wo);
@@ -204,7 +207,7 @@ IwasakiTerms radiance_of(const ClothBsdf& bsdf, const WeightingTables& tables, c
           const double cos_half = smooth(l.mu, fr, geo);
           const double I = pair_integral(l.mu, l.sigma, sp,
                                          lobe_horizon_fraction(tf, frame.n, l.mu, sg.phi_k, l.sigma, sp), sdf, visibility);
-          surf += dvec3(T_lobe * l.alpha * fr * cos_half * geo * I * lobe_spread(spread_k, l.sigma, sg.sigma_k));
+          surf += dvec3(m * T_lobe * l.alpha * fr * cos_half * geo * I * lobe_spread(spread_k, l.sigma, sg.sigma_k));
         }
         // Volume lobe: (1 − k_d) g^u(θ_h; γ_v) part and the isotropic k_d part.
         {
@@ -227,7 +230,7 @@ IwasakiTerms radiance_of(const ClothBsdf& bsdf, const WeightingTables& tables, c
                             lobe_horizon_fraction(tf, frame.n, sg.theta_k, sg.phi_k, sg.sigma_k, spk), sdf, visibility);
           const double iso = p.kd * td * td * geo /
                              std::max(std::cos(sg.theta_k) + std::cos(o.theta), kModelDenominatorFloor) * Ik * spread_k;
-          vol += (T_lobe * lobe + T * iso) * p.albedo;
+          vol += m * (T_lobe * lobe + T * iso) * p.albedo;
         }
       }
       dvec3 amplitude = visibility && visibility->open_share ? g.amplitude * visibility->open_share(int(sg_index))

@@ -31,6 +31,9 @@ uniform vec4 u_log_lambdas[MAX_LEVELS / 4];  // log λ of each level (WeightingT
 uniform ivec4 u_sample_table[MAX_TANGENT_SAMPLES / 2];  // sample s (thread 0's, then thread 1's) → d
 uniform float u_xi_n;
 uniform vec4 u_tilt_spreads[MAX_TANGENT_SAMPLES / 2];  // ClothBsdf::tilt_spread, laid out as u_tilts
+// ClothBsdf::sample_multiplicity, laid out as u_tilts: a sample stands for this many of its
+// thread's samples (those with its tilt and spread), 0 where an earlier one stands for it.
+uniform vec4 u_sample_multiplicity[MAX_TANGENT_SAMPLES / 2];
 ivec2 table_entry(int index) {
   ivec4 pair = u_tables[index >> 1];
   return (index & 1) == 0 ? pair.xy : pair.zw;
@@ -38,6 +41,7 @@ ivec2 table_entry(int index) {
 float log_lambda(int level) { return u_log_lambdas[level >> 2][level & 3]; }
 int sample_table(int s) { return u_sample_table[s >> 2][s & 3]; }
 float tilt_spread(int s) { return u_tilt_spreads[s >> 2][s & 3]; }
+float sample_multiplicity(int s) { return u_sample_multiplicity[s >> 2][s & 3]; }
 uniform float u_wo_n;
 
 uniform bool u_visibility;
@@ -275,6 +279,9 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
         vec3 along = j == 0 ? u : v, axis = j == 0 ? v : u;
         float surf = 0.0, vol = 0.0;
         for (int q = 0; q < count; ++q) {
+          // Samples alike in tilt and spread give the same terms: the first, times their count.
+          float m = sample_multiplicity(j * MAX_TANGENT_SAMPLES + q);
+          if (m == 0.0) continue;
           int d = sample_table(j * MAX_TANGENT_SAMPLES + q);
           float T = max(table_t(d, l0, l1, lw, xi_tc, wo_tc), 0.0);
           float alpha = thread_tilt(j * MAX_TANGENT_SAMPLES + q);
@@ -309,7 +316,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += T_lobe * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
+            surf += m * T_lobe * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
                     lobe_spread(spread_k, l.sigma, sigma_k);
           }
           // Volume lobe and the isotropic k_d part.
@@ -327,7 +334,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
                         lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz) * spread_k;
-            vol += T_lobe * lobe + T * iso;
+            vol += m * (T_lobe * lobe + T * iso);
           }
         }
         split.x += amplitude * surf / float(count);
