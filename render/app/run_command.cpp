@@ -56,13 +56,18 @@ CommandAction add_run_command(CLI::App& app) {
   sub->add_option("--stats-every", a->stats_every, "Seconds between stats lines (frames, ms/frame, memory); 0: none")
       ->capture_default_str();
   sub->add_option("--vertex-refresh", a->vertex_refresh,
-                  "While only the turntable moves, recompute the cloth's per-vertex shading over this many frames "
-                  "(each frame a share; knob, light and zoom changes recompute all at once); 1: every vertex every frame")
+                  "While only the turntable moves, recompute the cloth's per-vertex shading over at least this many frames "
+                  "(each frame a share, kept values carried on to the frame's time; knob, light and zoom changes "
+                  "recompute all at once); 1: as --vertex-refresh-deg says")
+      ->capture_default_str();
+  sub->add_option("--vertex-refresh-deg", a->vertex_refresh_deg,
+                  "While only the turntable moves, recompute the cloth's per-vertex shading once per this many degrees of "
+                  "turn, a share each frame (with --vertex-refresh 1 and this 0: every vertex every frame)")
       ->capture_default_str();
   sub->add_option("--broad-lobe-refresh-deg", a->broad_lobe_refresh_deg,
                   "While only the turntable moves, recompute the broad sky lobes' quadrature (the part of the per-vertex "
                   "shading that changes slowly with the view) once per this many degrees of turn, a share each frame; "
-                  "the sharper lobes follow --vertex-refresh; 0: every frame")
+                  "the sharper lobes follow --vertex-refresh and --vertex-refresh-deg; 0: every frame")
       ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "

@@ -17,6 +17,7 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   GLuint colour_texture() const { return colour_; }  // for tone mapping onto a display
+  GLuint framebuffer() const { return fbo_; }
   // Linear RGBA, row 0 at the bottom (GL's convention), after glFinish.
   std::vector<float> read_rgba() const;
 

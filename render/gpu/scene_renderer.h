@@ -78,6 +78,8 @@ public:
   void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
   void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
   void refresh_all() { cloth_->refresh_all(); }
+  // The next draw's time (ClothMethod::set_clock): kept per-vertex values follow the camera.
+  void set_clock(double seconds) { cloth_->set_clock(seconds); }
   // The i-th cloth object's per-vertex values (ClothMethod::vertex_values), for tests and diagnostics.
   std::vector<float> cloth_vertex_values(size_t cloth_index, int* block_texels) const;
   // ClothMethod::set_visible_vertices_only and the weave layer's (on by default).

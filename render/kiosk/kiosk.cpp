@@ -351,8 +351,13 @@ void Kiosk::draw_frame(double turn_deg) {
   const auto t0 = Clock::now();
   if (profile_) profile_->begin_frame();
   if (zoom_shown_ != zoom_drawn_) renderer_->refresh_all();  // the dolly moves the eye far in a frame
-  renderer_->set_vertex_refresh(config_.vertex_refresh);
-  renderer_->set_broad_lobe_refresh(refresh_shares(config_.broad_lobe_refresh_deg, std::abs(turn_deg - shown_turn_)));
+  // The turn a frame, smoothed: a share count that follows each frame's time would jump between
+  // neighbours and break the shares' turns.
+  const double turn = std::abs(turn_deg - shown_turn_);
+  turn_per_frame_ = turn_per_frame_ > 0.0 ? 0.9 * turn_per_frame_ + 0.1 * turn : turn;
+  renderer_->set_vertex_refresh(std::max(config_.vertex_refresh, refresh_shares(config_.vertex_refresh_deg, turn_per_frame_)));
+  renderer_->set_broad_lobe_refresh(refresh_shares(config_.broad_lobe_refresh_deg, turn_per_frame_));
+  renderer_->set_clock(std::chrono::duration<double>(t0.time_since_epoch()).count());
   target_->bind();
   // Far away the camera circles the product; all the way in, the point it looks at up close.
   const Camera camera = dolly(scene_->scene.camera, closeup_, zoom_shown_);

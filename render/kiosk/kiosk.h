@@ -185,6 +185,7 @@ private:
   long hang_after_ = -1;
   Clock::time_point loop_start_, last_stats_;
   double shown_turn_ = 0;
+  double turn_per_frame_ = 0;  // degrees, smoothed over the frames drawn (the reuse shares follow it)
   // The zoom knob: the close-up of the scene shown, the knobs' zoom, the zoom shown (eased).
   Camera closeup_;
   glm::dvec3 pivot_{0.0};  // the turntable's (turntable.h)

@@ -53,6 +53,8 @@ void check_kiosk_config(const KioskConfig& c) {
   } catch (const std::invalid_argument& e) {
     throw KioskConfigError(std::string("--screen-off: ") + e.what());
   }
+  if (!(c.vertex_refresh_deg >= 0.0 && c.vertex_refresh_deg <= 90.0))
+    throw KioskConfigError("--vertex-refresh-deg: degrees of turn over which every vertex is recomputed once, in [0, 90]");
   if (!(c.broad_lobe_refresh_deg >= 0.0 && c.broad_lobe_refresh_deg <= 90.0))
     throw KioskConfigError("--broad-lobe-refresh-deg: degrees of turn over which the broad lobes' quadrature is recomputed once, in [0, 90]");
   if (c.profile != "off" && c.profile != "auto" && c.profile != "gpu" && c.profile != "cpu")

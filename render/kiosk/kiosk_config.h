@@ -30,9 +30,14 @@ struct KioskConfig {
   double exposure_bias = 0.0;
   double exposure = 1.0;
   // Temporal reuse of the per-vertex passes while only the turntable moves the camera
-  // (gpu::SceneRenderer::set_vertex_refresh): each frame recomputes 1/vertex_refresh of the cloth's
-  // vertices; a knob, lighting or zoom change recomputes all at once. 1: all, every frame.
+  // (gpu::SceneRenderer::set_vertex_refresh): each frame recomputes 1/shares of the cloth's
+  // vertices, where shares is the larger of vertex_refresh and the frames the turntable takes to
+  // turn vertex_refresh_deg; a kept value is carried on along the line through its last two
+  // computations to the frame's time (gpu::SceneRenderer::set_clock), and vertices seen nearly
+  // edge-on are recomputed every frame. A knob, lighting or zoom change recomputes all at once.
+  // vertex_refresh 1 with vertex_refresh_deg 0: all, every frame.
   int vertex_refresh = 1;
+  double vertex_refresh_deg = 1.6;
   // The broad lobes' quadrature alone (gpu::SceneRenderer::set_broad_lobe_refresh), whose radiance
   // changes slowly with the view, is recomputed for every vertex at least once per this many degrees
   // of turntable (each frame the share its turn calls for); 0: every frame.

@@ -66,6 +66,11 @@ public:
   // changes slowly with the view: recomputed once every max(shares, vertex refresh) draws.
   virtual void set_broad_lobe_refresh(int shares) { (void)shares; }
   virtual void refresh_all() {}
+  // The time of the next draw, in seconds on the caller's clock (any origin, non-decreasing). With
+  // temporal reuse, a method that can carries each kept per-vertex value on to it along the line
+  // through that value's last two computations (methods/iwasaki/vertex_history.glsl): a turning
+  // camera's kept values lag the view far less. A caller that never sets it gets plain reuse.
+  virtual void set_clock(double seconds) { (void)seconds; }
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }

@@ -20,6 +20,7 @@
 // WEFT_KIOSK_SHOTS: a folder for each case's last frame and the same view with every vertex
 // computed (EXR, linear, NaN kept), and a line per case counting the cloth pixels that are not
 // finite or black in each (a driver's NaN shows as black cloth on screen);
+// WEFT_KIOSK_PLAIN_REUSE: no clock for the renderer, so kept values are not extrapolated;
 // WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
 #include <gtest/gtest.h>
 
@@ -172,6 +173,10 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
   const int w = std::stoi(size.at(0)), h = std::stoi(size.at(1));
   // 6°/s at 15 frames/s; the smoke holds the camera still, where reuse must change nothing.
   const double kDegPerFrame = std::stod(env_or("WEFT_KIOSK_DEG_PER_FRAME", smoke ? "0" : "0.4"));
+  constexpr double kFramesPerSecond = 15.0;
+  // The renderer's clock (kept per-vertex values extrapolated to each frame's time) unless
+  // WEFT_KIOSK_PLAIN_REUSE: reuse holding kept values as they are.
+  const bool clocked = std::getenv("WEFT_KIOSK_PLAIN_REUSE") == nullptr;
   // Frames before timing: the reuse reaches its steady state within R of them.
   int kWarm = smoke ? 4 : 16;
   for (const Reuse& s : shares) kWarm = std::max(kWarm, s.longest());
@@ -229,6 +234,7 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
           const auto t0 = std::chrono::steady_clock::now();
           const double c0 = cpu_ms();
           target.bind();
+          if (clocked) r->set_clock(double(k) / kFramesPerSecond);
           r->draw(camera_at(k), w, h);
           glFinish();
           if (timed) {

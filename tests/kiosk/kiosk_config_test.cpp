@@ -32,6 +32,9 @@ TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 64; }), "");
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 0; }).rfind("--vertex-refresh:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh = 65; }).rfind("--vertex-refresh:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh_deg = 0; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh_deg = 91; }).rfind("--vertex-refresh-deg:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.vertex_refresh_deg = std::numeric_limits<double>::infinity(); }).rfind("--vertex-refresh-deg:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = 0; }), "");
   EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = -1; }).rfind("--broad-lobe-refresh-deg:", 0), 0u);
   EXPECT_EQ(error([](KioskConfig& c) { c.broad_lobe_refresh_deg = std::numeric_limits<double>::quiet_NaN(); }).rfind("--broad-lobe-refresh-deg:", 0), 0u);

@@ -2,11 +2,15 @@
 // the call number into every texel it computes, each vertex of each block must hold the call at
 // which its block's share last covered it — every vertex once per `shares` calls, no vertex twice,
 // none skipped — with a rate per block, and a whole pass after invalidate(); with a program per
-// block, each block drawn by its own.
+// block, each block drawn by its own. With history, kept values carried along their chords to the
+// frame's time reproduce a value linear in time exactly.
 #include <GLES3/gl31.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "gl/gl_program.h"
 #include "gl/offscreen_target.h"
@@ -132,4 +136,96 @@ TEST(VertexPass, EachBlockIsDrawnByItsOwnProgram) {
     }
     if (marks) glDeleteBuffers(1, &marks);
   }
+}
+
+namespace {
+// Writes a value linear in the run's time, different per vertex and block, with the time in w.
+const std::string kLinearFs = std::string("#version 300 es\nprecision highp float;\nprecision highp int;\n") +
+                              std::string(shaders::source("vertex_pass.glsl")) + R"(
+out vec4 o_value;
+vec3 linear_value(int i, int k, float t) { return vec3(1.0 + 0.01 * float(i), 2.0, 3.0 + float(k)) + t * vec3(0.5, -0.25 * float(k + 1), 0.001 * float(i)); }
+void main() {
+  PassTexel t = pass_texel();
+  if (pass_keeps(t)) discard;
+  o_value = vec4(linear_value(t.i, t.k, u_pass_time), u_pass_time);
+}
+)";
+// Reads every texel back through vertex_history.glsl's extrapolated_value, as a draw would.
+const std::string kReadFs = std::string("#version 300 es\nprecision highp float;\nprecision highp int;\n#define MAX_PASS_VALUES 8\n") +
+                            std::string(shaders::source("vertex_history.glsl")) + R"(
+uniform highp sampler2D u_vertex_radiance;
+uniform int u_vertex_rows;
+out vec4 o_value;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  o_value = vec4(extrapolated_value(texelFetch(u_vertex_radiance, p, 0), p, p.y / u_vertex_rows), 0.0);
+}
+)";
+}  // namespace
+
+TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  const int n = 700, width = 256, rows = 3;
+  const std::vector<int> shares = {3, 5};
+  gpu::VertexPass pass(line_of_vertices(n));
+  pass.set_history(true);
+  gpu::GlProgram program(gpu::fullscreen_triangle_vs(), kLinearFs), read(gpu::fullscreen_triangle_vs(), kReadFs);
+  gpu::OffscreenTarget out(width, rows * int(shares.size()));
+  auto linear = [](int i, int k, double t) {
+    return glm::dvec3(1.0 + 0.01 * i, 2.0, 3.0 + k) + t * glm::dvec3(0.5, -0.25 * (k + 1), 0.001 * i);
+  };
+  const double start = 1000.0, frame = 0.07;
+  size_t carried = 0;
+  for (int call = 0; call < 16; ++call) {
+    const double now = start + frame * call;
+    pass.set_clock(now);
+    program.use();
+    pass.run_shares(program, 0, shares);
+    out.bind();
+    glViewport(0, 0, width, rows * int(shares.size()));
+    read.use();
+    pass.bind_result(read, 0);
+    pass.bind_history(read, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const std::vector<float> shown = out.read_rgba(), kept = pass.read_values();
+    for (size_t k = 0; k < shares.size(); ++k)
+      for (int i = 0; i < n; ++i) {
+        const size_t t = (k * rows * width + size_t(i)) * 4;
+        // The pass's time runs from its first run.
+        const glm::dvec3 exact = linear(i, int(k), now - start);
+        const double computed_at = kept[t + 3];
+        // A whole round of shares after the first share run, every vertex has two computations in
+        // its chord: the value shown is the linear value now; before, some are kept as they are.
+        const bool chord = call > 2 * shares[k];
+        for (int c = 0; c < 3; ++c) {
+          const double expected = chord ? exact[c] : linear(i, int(k), computed_at)[c];
+          if (!chord && std::abs(shown[t + size_t(c)] - expected) > 1e-4) {  // carried early: still exact
+            ASSERT_NEAR(shown[t + size_t(c)], exact[c], 1e-4) << "call " << call << " block " << k << " vertex " << i;
+            continue;
+          }
+          ASSERT_NEAR(shown[t + size_t(c)], expected, 1e-4) << "call " << call << " block " << k << " vertex " << i;
+        }
+        if (computed_at < (now - start) - 1e-6) ++carried;
+      }
+  }
+  EXPECT_GT(carried, size_t(n));  // kept values were shown, carried on
+  // After invalidate() (a knob, a light): a whole pass, and no chord reaches back past it.
+  pass.invalidate();
+  const double now = start + frame * 16 + 5.0;  // and the values jump: another fabric
+  pass.set_clock(now);
+  program.use();
+  pass.run_shares(program, 0, shares);
+  pass.set_clock(now + frame);
+  pass.run_shares(program, 0, shares);
+  out.bind();
+  read.use();
+  pass.bind_result(read, 0);
+  pass.bind_history(read, 1);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const std::vector<float> shown = out.read_rgba(), kept = pass.read_values();
+  for (size_t k = 0; k < shares.size(); ++k)
+    for (int i = 0; i < n; ++i) {
+      const size_t t = (k * rows * width + size_t(i)) * 4;
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(shown[t + size_t(c)], kept[t + size_t(c)]) << "block " << k << " vertex " << i;
+    }
 }

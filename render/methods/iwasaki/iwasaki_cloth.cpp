@@ -77,7 +77,7 @@ IwasakiShaders iwasaki_shaders() {
   s.pass_fs = iwasaki_glsl();
   s.pass_fs.push_back("vertex_pass.glsl");
   s.pass_fs.push_back("iwasaki_vertex_pass.frag");
-  s.vertex_vs = {"iwasaki_vertex.vert"};
+  s.vertex_vs = {"vertex_history.glsl", "iwasaki_vertex.vert"};
   s.vertex_fs = {"microcylinder.glsl",    "erf.glsl",       "sg_lighting.glsl",      "facet_horizon.glsl",
                  "thread_maps.glsl",      "normal_map_frame.glsl", "cloth_normal_map.glsl", "vertex_normal_map.glsl",
                  "iwasaki_vertex.frag"};
@@ -178,6 +178,8 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
   }
   // Each vertex reads its own SDF values; per pixel, the pass computes the broad lobes' part.
   if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh);
+  // Per SG per vertex, the blocks' RGB hold the values: their fourth channel can hold the time.
+  if (per_vertex && shaders_.facet_per_sg) o->pass->set_history(true);
   o->vertices = mesh.positions.size();
   if (per_vertex && visible_) o->marks = visible_->add_mesh(mesh, o->mesh, o->pass->texels());
   if (quadrature) {
@@ -252,7 +254,7 @@ const GlProgram& IwasakiCloth::facet_draw(int sgs, bool normal_mapped) {
                 "#define BROAD_LOBE_SHARPNESS %.9e\n",
                 kNormalMapRatioBias, kNormalMapRatioCap, kNormalMapFlatTilt, kBroadLobeSharpness);
   const std::string defines =
-      "#define SG_GROUPS " + std::to_string(groups) + "\n#define NORMAL_MAPPED " + (normal_mapped ? "1" : "0") + "\n" + ratio;
+      "#define SG_GROUPS " + std::to_string(groups) + "\n#define MAX_PASS_VALUES (4 * SG_GROUPS)\n#define NORMAL_MAPPED " + (normal_mapped ? "1" : "0") + "\n" + ratio;
   auto program = std::make_unique<GlProgram>(program_source(shaders_.vertex_vs, defines),
                                              program_source(shaders_.vertex_fs, defines));
   return *facet_draws_.emplace(std::pair{groups, normal_mapped}, std::move(program)).first->second;
@@ -413,6 +415,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     for (int k = 0; k < count; ++k)
       if (broad[size_t(k)] == 0) programs[size_t(k)] = narrow_pass_.get();
   }
+  o.pass->set_clock(clock_);
   o.pass->run_shares(programs, 4, shares);
   const bool normal_mapped = o.maps.normal_texture != 0;
   const GlProgram& d = facet_draw(count, normal_mapped);
@@ -444,6 +447,7 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
   glUniform3fv(d.uniform("u_thread_albedo"), 2, albedo);
   bind_thread_maps(d, o.maps, white_.id(), 9);
   o.pass->bind_result(d, 0);
+  o.pass->bind_history(d, 8);
   o.mesh.draw();
 }
 

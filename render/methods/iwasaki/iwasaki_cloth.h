@@ -96,6 +96,7 @@ public:
   void set_vertex_refresh(int shares) override { vertex_shares_ = shares < 1 ? 1 : shares; }
   void set_broad_lobe_refresh(int shares) override { broad_shares_ = shares < 1 ? 1 : shares; }
   void refresh_all() override;
+  void set_clock(double seconds) override { clock_ = seconds; }
   // Per vertex: the passes compute only the vertices the frame shows (visible_vertices.h), where
   // the GL can mark them; on by default.
   void set_visible_vertices_only(bool on) override { visible_only_ = on; }
@@ -128,6 +129,7 @@ private:
   std::map<std::string, std::unique_ptr<WeightingTablesTexture>> tables_;
   std::vector<std::unique_ptr<Object>> objects_;
   int vertex_shares_ = 1;
+  double clock_ = 0.0;
   int broad_shares_ = 1;
   std::unique_ptr<VisibleVertices> visible_;  // per vertex, opaque, where supported
   bool visible_only_ = true;

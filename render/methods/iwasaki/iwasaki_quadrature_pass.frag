@@ -12,7 +12,7 @@ out vec4 o_radiance;
 void main() {
   PassTexel t = pass_texel();
   int i = t.i, k = t.k;
-  if (pass_keeps(t)) discard;  // no visible triangle uses it, or it is not its turn
+  if (pass_keeps_turn(t, u_eye)) discard;  // no visible triangle uses it, or it is not its turn
   if (i >= u_vertex_count || (u_pass_narrow ? k >= u_sg_count : k >= 3)) {
     o_radiance = vec4(0.0);
     return;
@@ -29,5 +29,5 @@ void main() {
   } else {
     value = iwasaki_sg_split(position, normal, warp, ivec3(i), vec3(1.0, 0.0, 0.0), k);
   }
-  o_radiance = vec4(value, 1.0);
+  o_radiance = vec4(value, u_pass_time);
 }

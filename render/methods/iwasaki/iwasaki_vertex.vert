@@ -4,7 +4,8 @@
 // for vertex i and SG k), passed on per SG so that iwasaki_vertex.frag can apply the amplitudes,
 // the albedos with a texture's texels, and cut each SG by the facet's plane after the rasteriser
 // interpolates them (Gouraud: the parts are linear in the albedo, so interpolating them first is
-// exact); the warp with them, for the frame a normal map turns. Four SGs per vec4 and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp,
+// exact); the warp with them, for the frame a normal map turns. With the pass's history, each kept
+// value carried on to the frame's time (vertex_history.glsl, before this file). Four SGs per vec4 and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp,
 // from the SGs drawn and the GL's output limit).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -30,7 +31,8 @@ void main() {
     for (int c = 0; c < 4; ++c) {
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
-      vec3 x = texelFetch(u_vertex_radiance, texel + ivec2(0, k * u_vertex_rows), 0).rgb;
+      ivec2 at = texel + ivec2(0, k * u_vertex_rows);
+      vec3 x = extrapolated_value(texelFetch(u_vertex_radiance, at, 0), at, k);
       s[c] = x.x;
       w[c] = x.y;
       f[c] = x.z;

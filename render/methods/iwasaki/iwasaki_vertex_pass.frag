@@ -8,12 +8,12 @@
 out vec4 o_radiance;
 void main() {
   PassTexel t = pass_texel();
-  if (pass_keeps(t)) discard;  // no visible triangle uses it, or it is not its turn
+  if (pass_keeps_turn(t, u_eye)) discard;  // no visible triangle uses it, or it is not its turn
   if (t.i >= u_vertex_count || t.k >= u_sg_count) {
     o_radiance = vec4(0.0);
     return;
   }
   o_radiance = vec4(iwasaki_sg_split(texelFetch(u_vertex_position, t.p, 0).xyz, texelFetch(u_vertex_normal, t.p, 0).xyz,
                                      texelFetch(u_vertex_warp, t.p, 0).xyz, ivec3(t.i), vec3(1.0, 0.0, 0.0), t.k),
-                    1.0);
+                    u_pass_time);
 }

@@ -88,10 +88,16 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
     throw GpuError("per-vertex pass: a program and a share per block");
   const int blocks = int(block_shares.size());
   const bool reuse = std::any_of(block_shares.begin(), block_shares.end(), [](int s) { return s > 1; });
+  start_run();
+  gaps_.assign(size_t(blocks), 0.0f);
   if (!reuse || valid_blocks_ != blocks) {
     draw_blocks(block_programs, first_unit, std::vector<std::pair<int, int>>(size_t(blocks), {0, count_}));
     valid_blocks_ = blocks;
     calls_ = 0;
+    // Every value shown is from now on: no chord reaches back past this run (the fabric, the
+    // lighting or the view may have jumped).
+    floor_ = now_;
+    run_times_.assign(1, now_);
     return;
   }
   ++calls_;
@@ -101,7 +107,96 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
     const long s = (calls_ - 1) % shares;
     ranges[size_t(b)] = {int(long(count_) * s / shares), int(long(count_) * (s + 1) / shares)};
   }
+  if (history_) copy_to_history(ranges);
   draw_blocks(block_programs, first_unit, ranges);
+  if (!history_) return;
+  run_times_.push_back(now_);
+  constexpr size_t kKeptRuns = 512;
+  if (run_times_.size() > kKeptRuns) run_times_.erase(run_times_.begin(), run_times_.end() - kKeptRuns);
+  // A texel's two latest computations are a whole round of its block's shares apart (the vertices
+  // that come into view between turns: less); half a round more allows for frame times that vary.
+  for (int b = 0; b < blocks; ++b) {
+    const size_t shares = size_t(std::clamp(block_shares[size_t(b)], 1, std::max(count_, 1)));
+    if (shares > 1 && run_times_.size() > shares)
+      gaps_[size_t(b)] = 1.5f * (now_ - run_times_[run_times_.size() - 1 - shares]);
+  }
+}
+
+void VertexPass::set_history(bool on) {
+  history_ = on;
+  if (!on) previous_.reset();
+  valid_blocks_ = 0;  // the first run with history is whole: it starts the chords
+}
+
+void VertexPass::start_run() {
+  if (!history_) return;
+  constexpr double kEpochSeconds = 3600.0;  // a float's step at an hour is 0.25 ms: ample for a frame's time
+  if (!epoch_set_ || clock_ < epoch_ + double(now_) || clock_ - epoch_ > kEpochSeconds) {
+    epoch_ = clock_;
+    epoch_set_ = true;
+    valid_blocks_ = 0;
+    if (previous_) {  // no chord may join times of two epochs: every texel's time before the floor
+      GLint framebuffer = 0;
+      glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+      previous_->bind();
+      const GLfloat never[4] = {0.0f, 0.0f, 0.0f, -1e30f};
+      glClearBufferfv(GL_COLOR, 0, never);
+      glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+    }
+  }
+  now_ = float(clock_ - epoch_);
+}
+
+void VertexPass::copy_to_history(const std::vector<std::pair<int, int>>& ranges) {
+  if (!target_) return;
+  if (!previous_ || previous_->width() != target_->width() || previous_->height() != target_->height()) {
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+    previous_ = std::make_unique<OffscreenTarget>(target_->width(), target_->height(), /*full_float=*/true);
+    const GLfloat never[4] = {0.0f, 0.0f, 0.0f, -1e30f};
+    glClearBufferfv(GL_COLOR, 0, never);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+  }
+  GLint read = 0, draw = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->framebuffer());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, previous_->framebuffer());
+  // Exactly the range's texels (a texel copied out of its turn would lose its chord): a partial
+  // first row, whole rows, a partial last row.
+  for (size_t b = 0; b < ranges.size(); ++b) {
+    const auto [begin, end] = ranges[b];
+    if (end <= begin) continue;
+    auto copy = [&](int x0, int x1, int y0, int y1) {
+      if (x1 <= x0 || y1 <= y0) return;
+      y0 += int(b) * height_, y1 += int(b) * height_;
+      glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    };
+    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
+    if (r0 == r1) {
+      copy(c0, c1, r0, r0 + 1);
+    } else {
+      copy(c0, width_, r0, r0 + 1);
+      copy(0, width_, r0 + 1, r1);
+      copy(0, c1, r1, r1 + 1);
+    }
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw));
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+}
+
+void VertexPass::bind_history(const GlProgram& program, int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, previous_ ? previous_->colour_texture() : target_->colour_texture());
+  glUniform1i(program.uniform("u_vertex_history"), unit);
+  glUniform1f(program.uniform("u_history_now"), now_);
+  glUniform1f(program.uniform("u_history_floor"), floor_);
+  std::vector<float> gaps(std::max<size_t>(gaps_.size(), 1), 0.0f);  // the last run's blocks
+  if (history_ && previous_) std::copy(gaps_.begin(), gaps_.end(), gaps.begin());
+  glUniform1fv(program.uniform("u_history_gap"), GLsizei(gaps.size()), gaps.data());
 }
 
 void VertexPass::draw_blocks(std::span<const GlProgram* const> programs, int first_unit,
@@ -161,6 +256,7 @@ void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, c
   glUniform1i(program.uniform("u_vertex_width"), width_);
   glUniform1i(program.uniform("u_vertex_rows"), height_);
   glUniform1i(program.uniform("u_vertex_count"), count_);
+  glUniform1f(program.uniform("u_pass_time"), now_);
   const GlTexture* marks[2] = {&marks_[current_marks_], &marks_[1 - current_marks_]};
   const char* mark_names[2] = {"u_vertex_mark", "u_vertex_mark_before"};
   for (int i = 0; i < 2; ++i) {  // bound culled or not: each declared sampler needs a texture of its type

@@ -7,6 +7,7 @@ uniform highp sampler2D u_vertex_warp;
 uniform int u_vertex_width;
 uniform int u_vertex_rows;
 uniform int u_vertex_count;
+uniform float u_pass_time;  // the run's time (VertexPass::set_history): iwasaki's passes write it in .w
 
 struct PassTexel {
   ivec2 p;  // the vertex's texel in block 0
@@ -31,10 +32,20 @@ uniform highp usampler2D u_vertex_mark_before;
 uniform uint u_vertex_stamp;
 uniform uint u_vertex_stamp_before;
 uniform ivec2 u_vertex_range[MAX_PASS_BLOCKS];  // block k recomputes vertices [x, y)
-bool pass_keeps(PassTexel t) {
+// pass_keeps_turn also takes the eye, for a pass that shades the side of a vertex facing it: a
+// visible vertex seen within ~3° of its tangent plane is then recomputed at every run, its turn or
+// not, since a kept value there may be of its other side (the side shaded flips with the eye); a
+// turntable takes several frames to turn a vertex 3°. pass_keeps: no such vertex.
+bool pass_keeps_turn(PassTexel t, vec3 eye) {
   if (!u_vertex_cull) return false;
   if (texelFetch(u_vertex_mark, t.p, 0).r != u_vertex_stamp) return true;
+  if (eye != vec3(0.0)) {
+    vec3 n = texelFetch(u_vertex_normal, t.p, 0).xyz, p = texelFetch(u_vertex_position, t.p, 0).xyz;
+    if (abs(dot(normalize(n), normalize(eye - p))) < 0.05) return false;
+  }
   ivec2 r = u_vertex_range[t.k];
   if (t.i >= r.x && t.i < r.y) return false;
   return texelFetch(u_vertex_mark_before, t.p, 0).r == u_vertex_stamp_before;
 }
+bool pass_keeps(PassTexel t) { return pass_keeps_turn(t, vec3(0.0)); }
+

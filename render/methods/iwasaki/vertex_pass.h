@@ -41,6 +41,20 @@ public:
   void run_shares(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares);
   // The kept values are stale for the next run_share (the fabric, the lighting or the eye jumped).
   void invalidate() { valid_blocks_ = 0; }
+  // Extrapolated reuse: the kept values follow a moving camera. The programs write the time of
+  // their run (u_pass_time, set here: seconds since an epoch of the pass's own) in each texel's
+  // fourth channel, which their draw must not need (iwasaki's per-SG blocks hold RGB), and a
+  // second target keeps each texel's value from its computation before the last. A draw then
+  // extrapolates a kept value along the line through its last two computations to the time of the
+  // frame (vertex_history.glsl), where both are of its share's latest turns since the last whole
+  // pass. Off by default.
+  void set_history(bool on);
+  // The caller's time of the next run and of the draws after it, in seconds (any origin,
+  // non-decreasing: a step back starts a new epoch, as does an hour's run, with a whole pass).
+  void set_clock(double seconds) { clock_ = seconds; }
+  // For a draw reading the results: u_vertex_history on `unit` (the results again without history),
+  // u_history_now, u_history_floor and u_history_gap[block] (0: no extrapolation in that block).
+  void bind_history(const GlProgram& program, int unit) const;
   // Visible vertices only (visible_vertices.h): from the next run on, a vertex whose mark in
   // `marks` (a buffer of one uint per vertex) is not `stamp` keeps its value, as no visible triangle
   // uses it; a share recomputes its visible vertices, and every vertex that was not visible at
@@ -57,6 +71,8 @@ public:
   int texels() const { return width_ * height_; }  // of an input or a block
   // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
   std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
+  // The history target's (set_history), laid out alike; empty without one.
+  std::vector<float> read_history() const { return previous_ ? previous_->read_rgba() : std::vector<float>{}; }
 
 private:
   int count_, width_, height_;  // height_: rows per block
@@ -70,6 +86,16 @@ private:
   int current_marks_ = 0;  // marks_[current_marks_]: this run's
   unsigned stamp_ = 0, previous_stamp_ = 0;
   bool marked_ = false;  // run_shares calls since the last whole pass: block b draws share calls_ mod its shares
+  // History (set_history): each texel's value before its last computation; the clock.
+  bool history_ = false;
+  std::unique_ptr<OffscreenTarget> previous_;
+  double clock_ = 0.0, epoch_ = 0.0;
+  bool epoch_set_ = false;
+  float now_ = 0.0f, floor_ = 0.0f;  // the run's time and the last whole pass's, since the epoch
+  std::vector<float> run_times_;     // since the last whole pass, oldest first
+  std::vector<float> gaps_;          // per block: the longest chord still of its share's turns
+  void start_run();                  // the clock's time for this run (a new epoch: a whole pass)
+  void copy_to_history(const std::vector<std::pair<int, int>>& ranges);  // the rows of each block's range
   // Block b recomputes vertices [ranges[b].first, ranges[b].second).
   // Each distinct program draws its own blocks (rows of the target), in turn.
   void draw_blocks(std::span<const GlProgram* const> programs, int first_unit, const std::vector<std::pair<int, int>>& ranges);
