@@ -174,6 +174,16 @@ TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
   auto linear = [](int i, int k, double t) {
     return glm::dvec3(1.0 + 0.01 * i, 2.0, 3.0 + k) + t * glm::dvec3(0.5, -0.25 * (k + 1), 0.001 * i);
   };
+  // What a draw shows: every texel read through extrapolated_value into `out`.
+  auto shown_now = [&] {
+    out.bind();
+    glViewport(0, 0, width, rows * int(shares.size()));
+    read.use();
+    pass.bind_result(read, 0);
+    pass.bind_history(read, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return out.read_rgba();
+  };
   const double start = 1000.0, frame = 0.07;
   size_t carried = 0;
   for (int call = 0; call < 16; ++call) {
@@ -181,13 +191,7 @@ TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
     pass.set_clock(now);
     program.use();
     pass.run_shares(program, 0, shares);
-    out.bind();
-    glViewport(0, 0, width, rows * int(shares.size()));
-    read.use();
-    pass.bind_result(read, 0);
-    pass.bind_history(read, 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    const std::vector<float> shown = out.read_rgba(), kept = pass.read_values();
+    const std::vector<float> shown = shown_now(), kept = pass.read_values();
     for (size_t k = 0; k < shares.size(); ++k)
       for (int i = 0; i < n; ++i) {
         const size_t t = (k * rows * width + size_t(i)) * 4;
@@ -217,12 +221,7 @@ TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
   pass.run_shares(program, 0, shares);
   pass.set_clock(now + frame);
   pass.run_shares(program, 0, shares);
-  out.bind();
-  read.use();
-  pass.bind_result(read, 0);
-  pass.bind_history(read, 1);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  const std::vector<float> shown = out.read_rgba(), kept = pass.read_values();
+  const std::vector<float> shown = shown_now(), kept = pass.read_values();
   for (size_t k = 0; k < shares.size(); ++k)
     for (int i = 0; i < n; ++i) {
       const size_t t = (k * rows * width + size_t(i)) * 4;

@@ -25,6 +25,23 @@ void allocate_marks(const GlTexture& t, int width, int height) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
+// Vertices [begin, end) of a block of `width`-texel rows are texels of whole rows between a partial
+// first and last row: up to three rectangles (x0, x1, y0, y1), rows counted within the block.
+template <class Rect>
+void range_rectangles(int begin, int end, int width, Rect rect) {
+  const int r0 = begin / width, c0 = begin % width, r1 = end / width, c1 = end % width;
+  auto some = [&](int x0, int x1, int y0, int y1) {
+    if (x1 > x0 && y1 > y0) rect(x0, x1, y0, y1);
+  };
+  if (r0 == r1) {
+    some(c0, c1, r0, r0 + 1);
+  } else {
+    some(c0, width, r0, r0 + 1);
+    some(0, width, r0 + 1, r1);
+    some(0, c1, r1, r1 + 1);
+  }
+}
+
 void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height) {
   std::vector<float> texels(size_t(width) * height * 4, 0.0f);
   for (size_t i = 0; i < values.size(); ++i)
@@ -164,24 +181,12 @@ void VertexPass::copy_to_history(const std::vector<std::pair<int, int>>& ranges)
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->framebuffer());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, previous_->framebuffer());
-  // Exactly the range's texels (a texel copied out of its turn would lose its chord): a partial
-  // first row, whole rows, a partial last row.
+  // Exactly the range's texels: a texel copied out of its turn would lose its chord.
   for (size_t b = 0; b < ranges.size(); ++b) {
-    const auto [begin, end] = ranges[b];
-    if (end <= begin) continue;
-    auto copy = [&](int x0, int x1, int y0, int y1) {
-      if (x1 <= x0 || y1 <= y0) return;
-      y0 += int(b) * height_, y1 += int(b) * height_;
-      glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    };
-    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
-    if (r0 == r1) {
-      copy(c0, c1, r0, r0 + 1);
-    } else {
-      copy(c0, width_, r0, r0 + 1);
-      copy(0, width_, r0 + 1, r1);
-      copy(0, c1, r1, r1 + 1);
-    }
+    const int base = int(b) * height_;
+    range_rectangles(ranges[b].first, ranges[b].second, width_, [&](int x0, int x1, int y0, int y1) {
+      glBlitFramebuffer(x0, base + y0, x1, base + y1, x0, base + y0, x1, base + y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    });
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw));
@@ -293,24 +298,13 @@ void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, c
     }
     return;
   }
-  // Vertices [begin, end) of a block are texels of whole rows between a partial first and last
-  // row: up to three rectangles.
+  // Each block's range, by scissor rectangles.
   for (int b = 0; b < blocks; ++b) {
     if (!mine[size_t(b)]) continue;
-    const auto [begin, end] = ranges[size_t(b)];
-    const int r0 = begin / width_, c0 = begin % width_, r1 = end / width_, c1 = end % width_;
-    auto rect = [&](int x0, int x1, int y0, int y1) {
-      if (x1 <= x0 || y1 <= y0) return;
+    range_rectangles(ranges[size_t(b)].first, ranges[size_t(b)].second, width_, [&](int x0, int x1, int y0, int y1) {
       glScissor(x0, b * height_ + y0, x1 - x0, y1 - y0);
       glDrawArrays(GL_TRIANGLES, 0, 3);
-    };
-    if (r0 == r1) {
-      rect(c0, c1, r0, r0 + 1);
-    } else {
-      rect(c0, width_, r0, r0 + 1);
-      rect(0, width_, r0 + 1, r1);
-      rect(0, c1, r1, r1 + 1);
-    }
+    });
   }
 }
 
