@@ -80,6 +80,7 @@ public:
   void refresh_all() { cloth_->refresh_all(); }
   // The next draw's time (ClothMethod::set_clock): kept per-vertex values follow the camera.
   void set_clock(double seconds) { cloth_->set_clock(seconds); }
+  bool reuse_follows_camera() const { return cloth_->reuse_follows_camera(); }
   // The i-th cloth object's per-vertex values (ClothMethod::vertex_values), for tests and diagnostics.
   std::vector<float> cloth_vertex_values(size_t cloth_index, int* block_texels) const;
   // ClothMethod::set_visible_vertices_only and the weave layer's (on by default).

@@ -355,7 +355,10 @@ void Kiosk::draw_frame(double turn_deg) {
   // neighbours and break the shares' turns.
   const double turn = std::abs(turn_deg - shown_turn_);
   turn_per_frame_ = turn_per_frame_ > 0.0 ? 0.9 * turn_per_frame_ + 0.1 * turn : turn;
-  renderer_->set_vertex_refresh(std::max(config_.vertex_refresh, refresh_shares(config_.vertex_refresh_deg, turn_per_frame_)));
+  // By degrees only where kept values follow the camera (a rung that would hold them, sheer_vertex,
+  // keeps --vertex-refresh alone).
+  const int by_turn = renderer_->reuse_follows_camera() ? refresh_shares(config_.vertex_refresh_deg, turn_per_frame_) : 1;
+  renderer_->set_vertex_refresh(std::max(config_.vertex_refresh, by_turn));
   renderer_->set_broad_lobe_refresh(refresh_shares(config_.broad_lobe_refresh_deg, turn_per_frame_));
   renderer_->set_clock(std::chrono::duration<double>(t0.time_since_epoch()).count());
   target_->bind();

@@ -34,7 +34,8 @@ struct KioskConfig {
   // vertices, where shares is the larger of vertex_refresh and the frames the turntable takes to
   // turn vertex_refresh_deg; a kept value is carried on along the line through its last two
   // computations to the frame's time (gpu::SceneRenderer::set_clock), and vertices seen nearly
-  // edge-on are recomputed every frame. A knob, lighting or zoom change recomputes all at once.
+  // edge-on are recomputed every frame (the degrees apply only to a method that does this:
+  // ClothMethod::reuse_follows_camera). A knob, lighting or zoom change recomputes all at once.
   // vertex_refresh 1 with vertex_refresh_deg 0: all, every frame.
   int vertex_refresh = 1;
   double vertex_refresh_deg = 1.6;

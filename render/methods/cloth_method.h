@@ -71,6 +71,10 @@ public:
   // through that value's last two computations (methods/iwasaki/vertex_history.glsl): a turning
   // camera's kept values lag the view far less. A caller that never sets it gets plain reuse.
   virtual void set_clock(double seconds) { (void)seconds; }
+  // Whether kept per-vertex values follow the clock (and vertices seen edge-on are recomputed at
+  // every draw): temporal reuse then costs a fraction of what holding values does, and a caller
+  // may reuse by default.
+  virtual bool reuse_follows_camera() const { return false; }
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }

@@ -118,6 +118,9 @@ TEST(VisibleVertices, OnlyTheShownVerticesAreComputedAndTheFrameIsTheSame) {
   const SgLighting sgs = {{glm::normalize(glm::dvec3(0.2, -0.5, 0.8)), 2.0, glm::dvec3(1.0, 0.9, 0.8)},
                           {glm::normalize(glm::dvec3(-0.4, -0.6, 0.7)), 60.0, glm::dvec3(4.0, 3.5, 3.0)}};
   gpu::IwasakiCloth cloth(data, gpu::IwasakiCloth::Evaluation::per_vertex, gpu::iwasaki_quadrature_shaders());
+  // Its per-SG blocks carry kept values on (the kiosk's reuse by degrees); per pixel nothing is kept.
+  EXPECT_TRUE(cloth.reuse_follows_camera());
+  EXPECT_FALSE(gpu::IwasakiCloth(data, gpu::IwasakiCloth::Evaluation::per_pixel).reuse_follows_camera());
   for (size_t i = 0; i < scene.objects.size(); ++i) cloth.add_object(i, scene.objects[i].mesh, fabric);
   gpu::OffscreenTarget target(kWidth, kHeight);
 
