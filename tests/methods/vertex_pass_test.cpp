@@ -227,4 +227,15 @@ TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
       const size_t t = (k * rows * width + size_t(i)) * 4;
       for (int c = 0; c < 3; ++c) ASSERT_EQ(shown[t + size_t(c)], kept[t + size_t(c)]) << "block " << k << " vertex " << i;
     }
+  // A clock that steps back starts a new epoch (the history cleared, a whole pass): the caller's
+  // framebuffer and viewport stay as they were, as after any run.
+  out.bind();
+  glViewport(3, 2, 17, 9);
+  pass.set_clock(start);
+  pass.run_shares(program, 0, shares);
+  GLint viewport[4] = {0, 0, 0, 0}, framebuffer = 0;
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+  EXPECT_EQ(GLuint(framebuffer), out.framebuffer());
+  EXPECT_EQ(std::vector<GLint>(viewport, viewport + 4), (std::vector<GLint>{3, 2, 17, 9}));
 }

@@ -104,7 +104,9 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
   if (block_programs.size() != block_shares.size() || block_programs.empty())
     throw GpuError("per-vertex pass: a program and a share per block");
   const int blocks = int(block_shares.size());
-  const bool reuse = std::any_of(block_shares.begin(), block_shares.end(), [](int s) { return s > 1; });
+  std::vector<int> shares(static_cast<size_t>(blocks));  // each block's, at most one vertex a share
+  for (int b = 0; b < blocks; ++b) shares[size_t(b)] = std::clamp(block_shares[size_t(b)], 1, std::max(count_, 1));
+  const bool reuse = std::any_of(shares.begin(), shares.end(), [](int s) { return s > 1; });
   start_run();
   gaps_.assign(size_t(blocks), 0.0f);
   if (!reuse || valid_blocks_ != blocks) {
@@ -119,10 +121,9 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
   }
   ++calls_;
   std::vector<std::pair<int, int>> ranges(size_t(blocks), {0, count_});
-  for (int b = 0; b < int(block_shares.size()); ++b) {
-    const int shares = std::clamp(block_shares[size_t(b)], 1, std::max(count_, 1));
-    const long s = (calls_ - 1) % shares;
-    ranges[size_t(b)] = {int(long(count_) * s / shares), int(long(count_) * (s + 1) / shares)};
+  for (int b = 0; b < blocks; ++b) {
+    const long s = (calls_ - 1) % shares[size_t(b)];
+    ranges[size_t(b)] = {int(long(count_) * s / shares[size_t(b)]), int(long(count_) * (s + 1) / shares[size_t(b)])};
   }
   if (history_) copy_to_history(ranges);
   draw_blocks(block_programs, first_unit, ranges);
@@ -133,9 +134,8 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
   // A texel's two latest computations are a whole round of its block's shares apart (the vertices
   // that come into view between turns: less); half a round more allows for frame times that vary.
   for (int b = 0; b < blocks; ++b) {
-    const size_t shares = size_t(std::clamp(block_shares[size_t(b)], 1, std::max(count_, 1)));
-    if (shares > 1 && run_times_.size() > shares)
-      gaps_[size_t(b)] = 1.5f * (now_ - run_times_[run_times_.size() - 1 - shares]);
+    const size_t round = size_t(shares[size_t(b)]);
+    if (round > 1 && run_times_.size() > round) gaps_[size_t(b)] = 1.5f * (now_ - run_times_[run_times_.size() - 1 - round]);
   }
 }
 
@@ -152,31 +152,35 @@ void VertexPass::start_run() {
     epoch_ = clock_;
     epoch_set_ = true;
     valid_blocks_ = 0;
-    if (previous_) {  // no chord may join times of two epochs: every texel's time before the floor
-      GLint framebuffer = 0;
-      glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-      previous_->bind();
-      const GLfloat never[4] = {0.0f, 0.0f, 0.0f, -1e30f};
-      glClearBufferfv(GL_COLOR, 0, never);
-      glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-    }
+    if (previous_) clear_history();  // no chord may join times of two epochs
   }
   now_ = float(clock_ - epoch_);
 }
 
+void VertexPass::clear_history() {
+  // Not previous_->bind(): that sets the viewport, which the caller keeps; a clear ignores it but
+  // not the scissor.
+  GLint framebuffer = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, previous_->framebuffer());
+  const GLfloat never[4] = {0.0f, 0.0f, 0.0f, -1e30f};  // every texel's time before any floor
+  glClearBufferfv(GL_COLOR, 0, never);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+}
+
 void VertexPass::copy_to_history(const std::vector<std::pair<int, int>>& ranges) {
   if (!target_) return;
-  if (!previous_ || previous_->width() != target_->width() || previous_->height() != target_->height()) {
-    GLint framebuffer = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-    previous_ = std::make_unique<OffscreenTarget>(target_->width(), target_->height(), /*full_float=*/true);
-    const GLfloat never[4] = {0.0f, 0.0f, 0.0f, -1e30f};
-    glClearBufferfv(GL_COLOR, 0, never);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-  }
+  // The caller's framebuffers, taken before a new target binds its own.
   GLint read = 0, draw = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+  if (!previous_ || previous_->width() != target_->width() || previous_->height() != target_->height()) {
+    previous_ = std::make_unique<OffscreenTarget>(target_->width(), target_->height(), /*full_float=*/true);
+    clear_history();
+  }
   const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->framebuffer());
@@ -199,7 +203,8 @@ void VertexPass::bind_history(const GlProgram& program, int unit) const {
   glUniform1i(program.uniform("u_vertex_history"), unit);
   glUniform1f(program.uniform("u_history_now"), now_);
   glUniform1f(program.uniform("u_history_floor"), floor_);
-  std::vector<float> gaps(std::max<size_t>(gaps_.size(), 1), 0.0f);  // the last run's blocks
+  // The last run's blocks (all 0 without history: no chords).
+  std::vector<float> gaps(std::max<size_t>(gaps_.size(), 1), 0.0f);
   if (history_ && previous_) std::copy(gaps_.begin(), gaps_.end(), gaps.begin());
   glUniform1fv(program.uniform("u_history_gap"), GLsizei(gaps.size()), gaps.data());
 }

@@ -71,8 +71,6 @@ public:
   int texels() const { return width_ * height_; }  // of an input or a block
   // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
   std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
-  // The history target's (set_history), laid out alike; empty without one.
-  std::vector<float> read_history() const { return previous_ ? previous_->read_rgba() : std::vector<float>{}; }
 
 private:
   int count_, width_, height_;  // height_: rows per block
@@ -95,7 +93,8 @@ private:
   std::vector<float> run_times_;     // since the last whole pass, oldest first
   std::vector<float> gaps_;          // per block: the longest chord still of its share's turns
   void start_run();                  // the clock's time for this run (a new epoch: a whole pass)
-  void copy_to_history(const std::vector<std::pair<int, int>>& ranges);  // the rows of each block's range
+  void clear_history();              // every history texel before any floor (previous_ exists)
+  void copy_to_history(const std::vector<std::pair<int, int>>& ranges);  // each block's range, before it is recomputed
   // Block b recomputes vertices [ranges[b].first, ranges[b].second).
   // Each distinct program draws its own blocks (rows of the target), in turn.
   void draw_blocks(std::span<const GlProgram* const> programs, int first_unit, const std::vector<std::pair<int, int>>& ranges);
