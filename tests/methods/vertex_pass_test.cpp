@@ -239,3 +239,48 @@ TEST(VertexPass, HistoryCarriesKeptValuesAlongTheirChords) {
   EXPECT_EQ(GLuint(framebuffer), out.framebuffer());
   EXPECT_EQ(std::vector<GLint>(viewport, viewport + 4), (std::vector<GLint>{3, 2, 17, 9}));
 }
+
+// With marks, a visible vertex seen within ~3° of edge-on (|n·ω_o| < 0.05) is recomputed at every
+// run, its share's turn or not: the line's normals are +z, and from an eye 10 above the first
+// vertex, those from x ≈ 200 on are edge-on.
+TEST(VertexPass, EdgeOnVerticesAreRecomputedEveryRun) {
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  const int n = 700;
+  const std::string fs = std::string("#version 300 es\nprecision highp float;\nprecision highp int;\n") +
+                         std::string(shaders::source("vertex_pass.glsl")) + R"(
+uniform float u_call;
+out vec4 o_value;
+void main() {
+  PassTexel t = pass_texel();
+  if (pass_keeps_turn(t, vec3(0.0, 0.0, 10.0))) discard;
+  o_value = vec4(u_call, 0.0, 0.0, 1.0);
+}
+)";
+  gpu::VertexPass pass(line_of_vertices(n));
+  gpu::GlProgram program(gpu::fullscreen_triangle_vs(), fs);
+  const std::vector<GLuint> stamps(size_t(pass.texels()), 1u);  // every vertex visible
+  GLuint marks = 0;
+  glGenBuffers(1, &marks);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
+  glBufferData(GL_PIXEL_UNPACK_BUFFER, GLsizeiptr(stamps.size() * sizeof(GLuint)), stamps.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  const std::vector<int> shares = {7};
+  std::vector<int> last(n, 0);
+  for (int call = 0; call < 9; ++call) {
+    program.use();
+    glUniform1f(program.uniform("u_call"), float(call));
+    pass.set_marks(marks, 1u);
+    pass.run_shares(program, 0, shares);
+    const int s = (call - 1) % shares[0];
+    for (int i = 0; i < n; ++i) {
+      const bool edge_on = 10.0 / std::sqrt(100.0 + double(i) * i) < 0.05;
+      if (call == 0 || edge_on || (i >= n * s / shares[0] && i < n * (s + 1) / shares[0])) last[size_t(i)] = call;
+    }
+    const std::vector<float> texels = pass.read_values();
+    for (int i = 0; i < n; ++i)
+      ASSERT_EQ(texels[size_t(i) * 4], float(last[size_t(i)])) << "call " << call << " vertex " << i;
+  }
+  EXPECT_EQ(last[size_t(n - 1)], 8);  // an edge-on vertex: the last run's
+  EXPECT_LT(last[150], 8);            // one seen from above, out of the last run's share: its share's
+  glDeleteBuffers(1, &marks);
+}

@@ -5,8 +5,9 @@
 // the albedos with a texture's texels, and cut each SG by the facet's plane after the rasteriser
 // interpolates them (Gouraud: the parts are linear in the albedo, so interpolating them first is
 // exact); the warp with them, for the frame a normal map turns. With the pass's history, each kept
-// value carried on to the frame's time (vertex_history.glsl, before this file). Four SGs per vec4 and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp,
-// from the SGs drawn and the GL's output limit).
+// value carried on to the frame's time (vertex_history.glsl, before this file). Four SGs per vec4
+// and part: SG_GROUPS groups (defined by the caller, iwasaki_cloth.cpp, from the SGs drawn and the
+// GL's output limit).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_warp;
