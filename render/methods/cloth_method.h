@@ -75,6 +75,9 @@ public:
   // every draw): temporal reuse then costs a fraction of what holding values does, and a caller
   // may reuse by default.
   virtual bool reuse_follows_camera() const { return false; }
+  // Whether draw() interpolates shading computed at the vertices (Gouraud): the weave layer then
+  // takes its fabric-level terms per vertex too, so that its ratio cancels that interpolation.
+  virtual bool shades_per_vertex() const { return false; }
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }

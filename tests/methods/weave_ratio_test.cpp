@@ -24,10 +24,10 @@ struct Swatch {
   dvec3 wo = glm::normalize(dvec3(0.3, -0.4, 0.85));
   std::vector<SphericalGaussian> sgs{{glm::normalize(dvec3(-0.45, 0.55, 0.70)), 30.0, {6.0, 6.0, 6.0}},
                                      {dvec3(0, 0, 1), 3.0, {0.8, 0.8, 0.8}}};
-  WeaveVertexTerms terms;
+  WeaveTerms terms;
   explicit Swatch(const std::string& name)
       : fabric(load_fabric_preset(name, kAssets / "fabrics")), bsdf(fabric, 16), layout(fabric) {
-    terms = weave_vertex_terms(bsdf, frame, wo, sgs);
+    terms = weave_terms(bsdf, frame, wo, sgs);
   }
 };
 }  // namespace
@@ -59,15 +59,17 @@ TEST(WeaveRatioFiltered, KeepsTheRepeatsMean) {
   for (const std::string name : {"linen_plain", "polyester_satin_charmeuse"}) {
     const Swatch s(name);
     constexpr int kN = 96;
+    // A footprint of about half a thread, turned: the layer draws up to one thread a pixel.
+    const double scale = 2.0 / s.layout.rows();
     dvec3 point(0.0), filtered(0.0);
     for (int i = 0; i < kN; ++i)
       for (int j = 0; j < kN; ++j) {
         const dvec2 st((i + 0.5) / kN, (j + 0.5) / kN);
         point += weave_ratio(s.bsdf, s.layout, s.frame, s.wo, st, s.terms, s.sgs);
-        filtered += weave_ratio_filtered(s.bsdf, s.layout, s.frame, s.wo, st, {0.21, 0.05}, {-0.04, 0.17}, s.terms, s.sgs);
+        filtered += weave_ratio_filtered(s.bsdf, s.layout, s.frame, s.wo, st, scale * dvec2(0.21, 0.05),
+                                         scale * dvec2(-0.04, 0.17), s.terms, s.sgs);
       }
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(filtered[c] / point[c], 1.0, 0.01) << name;
-
   }
 }
 

@@ -96,32 +96,43 @@ bool WeaveLayer::resolves(size_t handle, const Camera& camera, int height) const
   return weave_thread_footprint(*o.layout, 1.0 / (o.smallest_repeat * pixels_per_metre)) < kWeaveCoarseFootprint;
 }
 
-WeaveLayer::Programs& WeaveLayer::programs(int q_groups) {
-  auto it = programs_.find(q_groups);
+const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms) {
+  auto it = programs_.find({q_groups, vertex_terms});
   if (it != programs_.end()) return it->second;
-  GLint out = 0, in = 0;
-  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
-  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
-  const int needed = 4 * q_groups + 20, limit = std::min(out, in);
-  if (needed > limit)
-    throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " SGs need " + std::to_string(needed) +
-                   " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
-  const std::string defines = weave_defines(q_groups);
+  std::string defines = weave_defines(q_groups);
   Programs p;
-  p.pass = std::make_unique<GlProgram>(
-      fullscreen_triangle_vs(),
-      program_source({"microcylinder.glsl", "vertex_pass.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"}, defines));
+  if (vertex_terms) {
+    GLint out = 0, in = 0;
+    glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
+    glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
+    const int needed = 4 * q_groups + 20, limit = std::min(out, in);
+    if (needed > limit)
+      throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " SGs need " + std::to_string(needed) +
+                     " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
+    p.pass = std::make_unique<GlProgram>(
+        fullscreen_triangle_vs(),
+        program_source({"microcylinder.glsl", "vertex_pass.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"},
+                       defines));
+    defines += "#define WEAVE_VERTEX_TERMS\n";
+  }
   p.draw = std::make_unique<GlProgram>(
       program_source({"weave_layer.vert"}, defines),
       program_source({"microcylinder.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
-  return programs_.emplace(q_groups, std::move(p)).first->second;
+  return programs_.emplace(std::make_pair(q_groups, vertex_terms), std::move(p)).first->second;
+}
+
+void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf) {
+  std::vector<float> spreads(2 * kMaxTangentSamples, 0.0f);
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < bsdf.sample_count(j); ++k) spreads[j * kMaxTangentSamples + k] = float(bsdf.tilt_spread(j, k));
+  glUniform4fv(program.uniform("u_weave_tilt_spreads"), 2 * kMaxTangentSamples / 4, spreads.data());
 }
 
 void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
   Object& o = *objects_.at(handle);
   if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
   const int groups = std::max(1, int((sgs.size() + 3) / 4));
-  Programs& p = programs(groups);
+  const Programs& p = programs(groups, vertex_terms_);
   std::vector<float> axes, powers, widen2;
   for (const auto& g : sgs) {
     const glm::dvec3 power = sg_power(g);
@@ -133,6 +144,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     program.use();
     glUniform3f(program.uniform("u_eye"), eye.x, eye.y, eye.z);
     upload_fabric(program, *o.bsdf);
+    upload_weave_tilt_spreads(program, *o.bsdf);
     upload_weave_layout(program, *o.layout, o.bsdf->fabric(), o.tiles_per_uv);
     glUniform1i(program.uniform("u_sg_count"), GLint(sgs.size()));
     if (!sgs.empty()) {
@@ -141,16 +153,18 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
       glUniform1fv(program.uniform("u_sg_widen2"), GLsizei(sgs.size()), widen2.data());
     }
   };
-  set_up(*p.pass);
-  if (visible_ && visible_only_)
-    visible_->mark_for(*o.pass, o.marks, vp);
-  else
-    o.pass->clear_marks();  // culling switched off after frames with it on: every vertex again
-  o.pass->run(*p.pass, 0, groups + 1);
+  if (p.pass) {
+    set_up(*p.pass);
+    if (visible_ && visible_only_)
+      visible_->mark_for(*o.pass, o.marks, vp);
+    else
+      o.pass->clear_marks();  // culling switched off after frames with it on: every vertex again
+    o.pass->run(*p.pass, 0, groups + 1);
+  }
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform2f(p.draw->uniform("u_lod"), float(kWeaveFineFootprint), float(kWeaveCoarseFootprint));
-  o.pass->bind_result(*p.draw, 3);
+  if (p.pass) o.pass->bind_result(*p.draw, 3);
   GLint depth_func = GL_LESS;
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
   const GLboolean blend = glIsEnabled(GL_BLEND);

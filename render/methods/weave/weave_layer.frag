@@ -1,4 +1,6 @@
-// The weave layer, step 3: the factor weave_ratio_filtered() gives over the pixel's footprint,
+// The weave layer's factor per pixel: the fabric-level terms (weave_terms) at the pixel, or with
+// WEAVE_VERTEX_TERMS interpolated from the vertices as a per-vertex method's shading is, then
+// weave_ratio_filtered() over the pixel's footprint,
 // eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
 // threads, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
 // with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl.
@@ -9,8 +11,10 @@ in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;
 in highp vec2 v_uv;
+#ifdef WEAVE_VERTEX_TERMS
 in vec3 v_fabric;
 in vec4 v_q[Q_GROUPS];
+#endif
 out vec4 o_factor;
 void main() {
   highp vec2 st = v_uv * u_tiles_per_uv;
@@ -25,7 +29,13 @@ void main() {
   vec3 wo = normalize(u_eye - v_position);
   if (dot(n, wo) < 0.0) n = -n;
   vec3 u = normalize(v_warp - dot(v_warp, n) * n);
+  vec3 fabric;
   vec4 q[Q_GROUPS];
+#ifdef WEAVE_VERTEX_TERMS
+  fabric = v_fabric;
   for (int g = 0; g < Q_GROUPS; ++g) q[g] = v_q[g];
-  o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, v_fabric, q), vec3(1.0), coarse), 1.0);
+#else
+  weave_terms(n, u, wo, fabric, q);
+#endif
+  o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, fabric, q), vec3(1.0), coarse), 1.0);
 }

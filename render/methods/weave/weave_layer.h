@@ -1,10 +1,12 @@
 #pragma once
 // The weave layer's GPU side (methods/weave/weave_ratio.h): after a fabric-level method has drawn
 // a cloth object, multiplies the colour where the object lies by the layer's factor (blending
-// dst·src), so close-ups show each thread and distant cloth keeps the method's shading. Three
-// steps per draw: the vertex pass (fabric-level response and Q per vertex), the mesh with UVs,
-// and the factor per pixel. Skipped outright where no point of the object can come closer than
-// the coarse footprint (the object's nearest point against its smallest repeat).
+// dst·src), so close-ups show each thread and distant cloth keeps the method's shading. One draw
+// of the mesh with its UVs, the factor per pixel; its fabric-level terms per pixel too, or (under a
+// method that shades per vertex) per vertex from a vertex pass, interpolated as the method's
+// shading is, so that the ratio takes the method's interpolation error out with it. Skipped
+// outright where no point of the object can come closer than the coarse footprint (the object's
+// nearest point against its smallest repeat).
 #include <map>
 #include <memory>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "methods/fabric_uniforms.h"
 #include "methods/iwasaki/vertex_pass.h"
 #include "methods/iwasaki/visible_vertices.h"
+#include "methods/weave/weave_ratio.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
@@ -25,6 +28,8 @@ namespace weft::gpu {
 void upload_weave_layout(const GlProgram& program, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv);
 // The #defines the weave GLSL needs for `q_groups` groups of four SGs.
 std::string weave_defines(int q_groups);
+// u_weave_tilt_spreads (weave_ratio.glsl) from the bsdf's samples (the program is in use).
+void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf);
 
 class WeaveLayer {
 public:
@@ -35,18 +40,22 @@ public:
   void set_fabric(size_t handle, const Fabric& fabric);
   // Whether object `handle` can show its weave from `camera` on an image `height` pixels high.
   bool resolves(size_t handle, const Camera& camera, int height) const;
-  // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
-  // depth or alpha writes); restores blending and depth state after.
-  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs);
+  // Terms per vertex (true: under a method that interpolates per-vertex shading) or per pixel
+  // (false, the default).
+  void set_vertex_terms(bool on) { vertex_terms_ = on; }
+  bool vertex_terms() const { return vertex_terms_; }
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
   // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
+  // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
+  // depth or alpha writes); restores blending and depth state after.
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs);
 
 private:
   struct Object {
     std::unique_ptr<GpuMesh> mesh;
-    std::unique_ptr<VertexPass> pass;
-    size_t marks = 0;  // its mesh in visible_, where there is one
+    std::unique_ptr<VertexPass> pass;  // the per-vertex terms
+    size_t marks = 0;                  // its mesh in visible_, where there is one
     std::unique_ptr<ClothBsdf> bsdf;
     std::unique_ptr<WeaveLayout> layout;
     glm::dvec2 tiles_per_uv{1.0};
@@ -54,16 +63,15 @@ private:
     double smallest_repeat = 0.0;  // metres
   };
   struct Programs {
-    std::unique_ptr<GlProgram> pass, draw;
+    std::unique_ptr<GlProgram> pass, draw;  // pass: with vertex terms only
   };
-  Programs& programs(int q_groups);
+  const Programs& programs(int q_groups, bool vertex_terms);
   std::vector<std::unique_ptr<Object>> objects_;
-  std::map<int, Programs> programs_;  // by Q_GROUPS
-  std::unique_ptr<VisibleVertices> visible_;  // where supported
-  bool visible_only_ = true;
-  // The vertex pass averages each float continuously enough for the sharpest Table II lobe (satin's
-  // γ_s = 2.5°): its fabric-level term must be the repeat's average of what the pixels show.
-  int tangent_samples_ = kMaxTangentSamples;
+  std::map<std::pair<int, bool>, Programs> programs_;  // by Q_GROUPS and vertex terms
+  std::unique_ptr<VisibleVertices> visible_;           // where supported
+  bool visible_only_ = true, vertex_terms_ = false;
+  // Each sample's lobes widened by its arc's tilts: a few stand for the float, satin's included.
+  int tangent_samples_ = kWeavePixelSamples;
 };
 
 }  // namespace weft::gpu

@@ -44,3 +44,78 @@ float curve_tilt(int j, float arc) {
   }
   return u_curve_tilts[base + last + 1];
 }
+
+// --- core/weave_coverage.h: the layout box-filtered over a pixel's footprint st ± ½dx ± ½dy (each
+// axis's weight a box of |dx|'s component convolved with one of |dy|'s), per thread its share of
+// the pixel and the arc of its largest piece there.
+#define WEAVE_COVERAGE_REACH 2
+struct WeaveCoverage {
+  float share[2];
+  float arc[2];
+  float arc_spread[2];  // RMS arc over the footprint along each thread's float
+};
+
+// ∫_{-∞}^{y} of the CDF of a box of width a centred at 0.
+float box_cdf_integral(float y, float a) {
+  if (a < 1e-12) return max(y, 0.0);
+  float z = y / a + 0.5;
+  if (z <= 0.0) return 0.0;
+  return a * (z < 1.0 ? 0.5 * z * z : z - 0.5);
+}
+float box_pair_cdf(float x, float a, float b) {
+  float wide = max(a, b), narrow = min(a, b);
+  if (narrow < 1e-12) return wide < 1e-12 ? (x >= 0.0 ? 1.0 : 0.0) : clamp(x / wide + 0.5, 0.0, 1.0);
+  return (box_cdf_integral(x + 0.5 * narrow, wide) - box_cdf_integral(x - 0.5 * narrow, wide)) / narrow;
+}
+float box_pair_mass(float lo, float hi, float a, float b) {
+  return hi <= lo ? 0.0 : max(box_pair_cdf(hi, a, b) - box_pair_cdf(lo, a, b), 0.0);
+}
+
+WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
+  WeaveCoverage out_ = WeaveCoverage(float[2](0.0, 0.0), float[2](0.0, 0.0), float[2](0.0, 0.0));
+  float w = u_weave_width, f = u_weave_warp_share, rows = float(u_weave_rows);
+  if (w <= 0.0) return out_;
+  highp vec2 c = fract(st);
+  vec2 a = abs(dx), b = abs(dy), half_ = 0.5 * (a + b);
+  out_.arc_spread[0] = f > 0.0 ? sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
+  out_.arc_spread[1] = sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
+  float best[2] = float[2](0.0, 0.0);
+  int kc = int(floor(c.y * rows));
+  int k0 = max(int(floor((c.y - half_.y) * rows)), kc - WEAVE_COVERAGE_REACH);
+  int k1 = min(int(floor((c.y + half_.y) * rows)), kc + WEAVE_COVERAGE_REACH);
+  for (int k = k0; k <= k1; ++k) {
+    int row = k - u_weave_rows * int(floor(float(k) / rows));  // k mod rows; GLSL's % is undefined below 0
+    float o = float(row * u_weave_shift) / rows;
+    float t0 = float(k) / rows, t1 = float(k + 1) / rows;
+    float ty = box_pair_mass(t0 - c.y, t1 - c.y, a.y, b.y);
+    float wy = box_pair_mass(t0 + (0.5 - 0.5 * w) / rows - c.y, t0 + (0.5 + 0.5 * w) / rows - c.y, a.y, b.y);
+    int mc = int(floor(c.x - o));
+    int m0 = max(int(floor(c.x - half_.x - o)) - 1, mc - WEAVE_COVERAGE_REACH);
+    int m1 = min(int(floor(c.x + half_.x - o)), mc + WEAVE_COVERAGE_REACH);
+    for (int m = m0; m <= m1; ++m) {
+      float s = o + float(m);
+      // The warp floats over [s, s + f) in the middle w of the row.
+      float share = box_pair_mass(s - c.x, s + f - c.x, a.x, b.x) * wy;
+      if (share > 0.0) {
+        out_.share[0] += share;
+        if (share > best[0]) {
+          best[0] = share;
+          float sm = 0.5 * (max(s, c.x - half_.x) + min(s + f, c.x + half_.x));
+          out_.arc[0] = f > 0.0 ? clamp((sm - s) / f, 0.0, 1.0) : 0.0;
+        }
+      }
+      // The weft crosses the whole row in the middle w of the rest.
+      float g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
+      share = box_pair_mass(g0 - c.x, g1 - c.x, a.x, b.x) * ty;
+      if (share > 0.0) {
+        out_.share[1] += share;
+        if (share > best[1]) {
+          best[1] = share;
+          float tm = 0.5 * (max(t0, c.y - half_.y) + min(t1, c.y + half_.y));
+          out_.arc[1] = clamp((tm - t0) * rows, 0.0, 1.0);
+        }
+      }
+    }
+  }
+  return out_;
+}

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "core/microcylinder.h"
+#include "core/weave_coverage.h"
 #include "methods/sg_lights.h"
 
 namespace weft {
@@ -18,34 +21,69 @@ Fabric widened_fabric(Fabric fabric, double widen2) {
 }
 
 namespace {
-// The bsdf with its lobes widened for SG g (same tangent samples).
-ClothBsdf widened_for(const ClothBsdf& bsdf, const SphericalGaussian& g) {
-  return ClothBsdf(widened_fabric(bsdf.fabric(), weave_lobe_widening(g.sharpness)),
-                   std::array<int, 2>{bsdf.sample_count(0), bsdf.sample_count(1)});
+// ψ, θ, φ of ω_i and ω_o for thread j's sample at tilt α, and f_s·M·P·cos θ_i with both lobes
+// widened by widen2 + (c·tilt_spread)², c = ½(cos φ_i + cos φ_o) (iwasaki.cpp's sample_lobe_width).
+struct SampleTerms {
+  double p = 0.0;   // P
+  dvec3 value{0.0}; // f_s·M·P·cos θ_i
+};
+SampleTerms sample_terms(const ThreadParams& thread, const SurfaceFrame& frame, int j, double alpha, double tilt_spread,
+                         double widen2, const dvec3& wi, const dvec3& wo) {
+  SampleTerms out;
+  const ThreadFrame f = thread_frame(frame, j, alpha);
+  const FiberAngles in = fiber_angles(f, wi), o = fiber_angles(f, wo);
+  out.p = projection(in, o);
+  if (out.p <= 0.0) return out;
+  const double w = masking(in, o) * out.p;
+  if (w <= 0.0) return out;
+  const double c = 0.5 * (std::cos(in.phi) + std::cos(o.phi));
+  ThreadParams wide = thread;
+  const double add = widen2 + c * c * tilt_spread * tilt_spread;
+  wide.gamma_s = std::sqrt(thread.gamma_s * thread.gamma_s + add);
+  wide.gamma_v = std::sqrt(thread.gamma_v * thread.gamma_v + add);
+  out.value = scattering(wide, in, o) * (w * std::cos(in.theta));
+  return out;
 }
 }  // namespace
 
-WeaveVertexTerms weave_vertex_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
-                                    std::span<const SphericalGaussian> sgs) {
-  WeaveVertexTerms t;
-  auto point = bsdf.at(frame);
+WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs) {
+  WeaveTerms t;
+  const Fabric& fabric = bsdf.fabric();
   for (const auto& g : sgs) {
-    const ClothBsdf wide = widened_for(bsdf, g);
-    t.fabric += sg_power(g) * wide.at(frame).integrand(g.axis, wo);
-    t.q.push_back(point.q(g.axis, wo));
+    double q = (1.0 - fabric.threads[0].coverage - fabric.threads[1].coverage) * std::max(glm::dot(frame.n, wo), 0.0);
+    dvec3 sum(0.0);
+    const bool lit = glm::dot(frame.n, g.axis) > 0.0 && glm::dot(frame.n, wo) > 0.0;
+    for (int j = 0; j < 2; ++j) {
+      double p_sum = 0.0;
+      dvec3 thread_sum(0.0);
+      for (int k = 0; k < bsdf.sample_count(j); ++k) {
+        const SampleTerms s = sample_terms(fabric.threads[j], frame, j, bsdf.tilt(j, k), bsdf.tilt_spread(j, k),
+                                           weave_lobe_widening(g.sharpness), g.axis, wo);
+        p_sum += s.p;
+        thread_sum += s.value;
+      }
+      q += fabric.threads[j].coverage * p_sum / bsdf.sample_count(j);
+      sum += fabric.threads[j].coverage * thread_sum / double(bsdf.sample_count(j));
+    }
+    t.q.push_back(q);
+    if (lit && q > kQFloor) t.fabric += sg_power(g) * sum / q;
   }
   return t;
 }
 
 namespace {
-// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at `arc` along its float.
+// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at `arc` along its float, its lobes widened
+// by `tilt_spread` (RMS, radians) besides each SG's own spread.
 dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, int thread, double arc,
-                        const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs) {
+                        double tilt_spread, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
   const double alpha = weave_tilt(bsdf.fabric(), WeaveSample{thread, arc});
   dvec3 resolved(0.0);
+  if (glm::dot(frame.n, wo) <= 0.0) return resolved;
   for (size_t k = 0; k < sgs.size(); ++k)
-    if (terms.q.at(k) > kQFloor)
-      resolved += sg_power(sgs[k]) * widened_for(bsdf, sgs[k]).at(frame).resolved_scattering(thread, alpha, sgs[k].axis, wo) /
+    if (terms.q.at(k) > kQFloor && glm::dot(frame.n, sgs[k].axis) > 0.0)
+      resolved += sg_power(sgs[k]) *
+                  sample_terms(bsdf.fabric().threads[thread], frame, thread, alpha, tilt_spread,
+                               weave_lobe_widening(sgs[k].sharpness), sgs[k].axis, wo).value /
                   terms.q[k];
   return resolved;
 }
@@ -57,42 +95,39 @@ dvec3 ratio_to(const dvec3& resolved, const dvec3& fabric) {
 }
 }  // namespace
 
+double weave_tilt_spread(const Fabric& fabric, int thread, double arc, double arc_spread) {
+  if (arc_spread <= 0.0) return 0.0;
+  const double h = std::sqrt(3.0) * arc_spread;  // the half-width of a uniform spread with that RMS
+  auto tilt = [&](double a) { return weave_tilt(fabric, WeaveSample{thread, a}); };
+  const double here = tilt(arc);
+  double slope = std::numeric_limits<double>::infinity();
+  if (arc < 1.0) {
+    const double b = std::min(arc + h, 1.0);
+    slope = std::abs(tilt(b) - here) / (b - arc);
+  }
+  if (arc > 0.0) {
+    const double a = std::max(arc - h, 0.0);
+    slope = std::min(slope, std::abs(here - tilt(a)) / (arc - a));
+  }
+  return std::isfinite(slope) ? slope * arc_spread : 0.0;
+}
+
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                  glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs) {
+                  glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
   const WeaveSample w = layout.at(st.x, st.y);
   if (w.thread < 0) return dvec3(0.0);
-  return ratio_to(resolved_response(bsdf, frame, wo, w.thread, w.arc, terms, sgs), terms.fabric);
+  return ratio_to(resolved_response(bsdf, frame, wo, w.thread, w.arc, 0.0, terms, sgs), terms.fabric);
 }
 
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                           glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
+                           glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
                            std::span<const SphericalGaussian> sgs) {
-  WeaveSample samples[4];
-  struct Share {
-    int count = 0;
-    double sum = 0.0, lo = 1.0, hi = 0.0;
-  } share[2];
-  for (int i = 0; i < 4; ++i) {
-    const glm::dvec2 p = st + kWeaveFootprintGrid[i].x * dx + kWeaveFootprintGrid[i].y * dy;
-    samples[i] = layout.at(p.x, p.y);
-    if (samples[i].thread < 0) continue;
-    Share& s = share[samples[i].thread];
-    ++s.count;
-    s.sum += samples[i].arc;
-    s.lo = std::min(s.lo, samples[i].arc);
-    s.hi = std::max(s.hi, samples[i].arc);
-  }
+  const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
   dvec3 resolved(0.0);
-  for (int j = 0; j < 2; ++j) {
-    const Share& s = share[j];
-    if (s.count == 0) continue;
-    if (s.hi - s.lo <= kWeaveArcSpread) {
-      resolved += 0.25 * s.count * resolved_response(bsdf, frame, wo, j, s.sum / s.count, terms, sgs);
-      continue;
-    }
-    for (const WeaveSample& w : samples)
-      if (w.thread == j) resolved += 0.25 * resolved_response(bsdf, frame, wo, j, w.arc, terms, sgs);
-  }
+  for (int j = 0; j < 2; ++j)
+    if (c.share[j] > 0.0)
+      resolved += c.share[j] * resolved_response(bsdf, frame, wo, j, c.arc[j],
+                                                 weave_tilt_spread(bsdf.fabric(), j, c.arc[j], c.arc_spread[j]), terms, sgs);
   return ratio_to(resolved, terms.fabric);
 }
 
@@ -105,7 +140,7 @@ dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfa
                    glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs) {
   const double detail = weave_detail(weave_thread_footprint(layout, std::max(glm::length(dx), glm::length(dy))));
   if (detail <= 0.0) return dvec3(1.0);
-  const dvec3 r = weave_ratio_filtered(bsdf, layout, frame, wo, st, dx, dy, weave_vertex_terms(bsdf, frame, wo, sgs), sgs);
+  const dvec3 r = weave_ratio_filtered(bsdf, layout, frame, wo, st, dx, dy, weave_terms(bsdf, frame, wo, sgs), sgs);
   return glm::mix(dvec3(1.0), r, detail);
 }
 

@@ -1,11 +1,14 @@
 // The weave layer's factor (methods/weave/weave_ratio.h): the resolved sample's response to the SGs
-// taken as point lights (each lobe widened by the SG's own spread), over the fabric-level response to the same lights, so that the factor
-// averages to 1 over the repeat and modulates what the fabric-level method drew. Needs
-// microcylinder.glsl and weave_layout.glsl before it, and MAX_SGS.
+// taken as point lights (each lobe widened by the SG's own spread), over the fabric-level response
+// to the same lights at the same pixel, so that the factor averages to 1 over the repeat and
+// modulates what the fabric-level method drew. Needs microcylinder.glsl and weave_layout.glsl
+// before it, and MAX_SGS.
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
 uniform vec3 u_sg_power[MAX_SGS];
 uniform float u_sg_widen2[MAX_SGS];  // weave_lobe_widening(λ_k)
+// ClothBsdf::tilt_spread of each tangent sample, laid out as u_tilts (microcylinder.glsl).
+uniform vec4 u_weave_tilt_spreads[MAX_TANGENT_SAMPLES / 2];
 
 // What thread j's sample at tilt α needs of ω_o alone, taken once for all the SGs: its frame
 // (t, n', axis) and ω_o's fiber angles in it; `lit` false where ω_o is below the surface.
@@ -21,19 +24,55 @@ ResolvedView resolved_view(vec3 n, vec3 u, int j, float alpha, vec3 wo) {
   return ResolvedView(f.t, f.np, axis, fiber_angles_in(f.t, f.np, axis, wo), dot(n, wo) > 0.0);
 }
 
-// f_s · M · P · cos θ_i of thread j's sample seen as `view`: ClothBsdf::Point::resolved_scattering.
-vec3 resolved_scattering(ResolvedView view, vec3 n, int j, vec3 wi, float widen2) {
+// f_s · M · P · cos θ_i of thread j's sample seen as `view`, both lobes widened by widen2 and by
+// the sample's tilt spread as seen from ω_i and ω_o (weave_ratio.cpp's sample_terms).
+vec3 resolved_scattering(ResolvedView view, vec3 n, int j, vec3 wi, float widen2, float tilt_spread) {
   if (dot(n, wi) <= 0.0 || !view.lit) return vec3(0.0);
   FiberAngles fi = fiber_angles_in(view.t, view.np, view.axis, wi);
   float p = projection_term(fi, view.fo);
   if (p <= 0.0) return vec3(0.0);
   float w = masking_term(fi, view.fo) * p;
   if (w <= 0.0) return vec3(0.0);
-  return scattering(widened(u_threads[j], widen2), fi, view.fo) * (w * cos(fi.theta));
+  float c = 0.5 * (cos(fi.phi) + cos(view.fo.phi)) * tilt_spread;
+  return scattering(widened(u_threads[j], widen2 + c * c), fi, view.fo) * (w * cos(fi.theta));
 }
 
-// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at arc position `arc` of its float.
-vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, vec4 q[Q_GROUPS]) {
+// The pixel's fabric-level terms (weave_terms in weave_ratio.h): Σ_k P_k·integrand(ξ_k, ω_o) over
+// the program's tangent samples, each widened by the SG's spread and its own tilt spread, and
+// each SG's Q, four to a vec4.
+void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS]) {
+  // One sweep over the samples, each sample's view taken once for all the SGs.
+  vec3 sums[MAX_SGS];
+  float qs[MAX_SGS];
+  float gap_q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
+  for (int k = 0; k < u_sg_count; ++k) {
+    sums[k] = vec3(0.0);
+    qs[k] = gap_q;
+  }
+  for (int j = 0; j < 2; ++j) {
+    float weight = u_threads[j].coverage / float(u_threads[j].samples);
+    for (int s = 0; s < u_threads[j].samples; ++s) {
+      int i = j * MAX_TANGENT_SAMPLES + s;
+      ResolvedView view = resolved_view(n, u, j, thread_tilt(i), wo);
+      float spread = u_weave_tilt_spreads[i >> 2][i & 3];
+      for (int k = 0; k < u_sg_count; ++k) {
+        vec3 wi = u_sg_axis[k];
+        qs[k] += weight * projection_term(fiber_angles_in(view.t, view.np, view.axis, wi), view.fo);
+        sums[k] += weight * resolved_scattering(view, n, j, wi, u_sg_widen2[k], spread);
+      }
+    }
+  }
+  fabric = vec3(0.0);
+  for (int g = 0; g < Q_GROUPS; ++g) q[g] = vec4(0.0);
+  for (int k = 0; k < u_sg_count; ++k) {
+    q[k >> 2][k & 3] = qs[k];
+    if (qs[k] > Q_FLOOR) fabric += u_sg_power[k] * sums[k] / qs[k];
+  }
+}
+
+// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at arc position `arc` of its float, its lobes
+// widened by `tilt_spread` (RMS, radians) besides each SG's own spread.
+vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 q[Q_GROUPS]) {
   ResolvedView view = resolved_view(n, u, j, curve_tilt(j, arc), wo);
   vec3 resolved = vec3(0.0);
   if (!view.lit) return resolved;
@@ -42,7 +81,7 @@ vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, vec4 q[Q_GROUP
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
       if (q[g][c] <= Q_FLOOR) continue;
-      resolved += u_sg_power[k] * resolved_scattering(view, n, j, u_sg_axis[k], u_sg_widen2[k]) / q[g][c];
+      resolved += u_sg_power[k] * resolved_scattering(view, n, j, u_sg_axis[k], u_sg_widen2[k], tilt_spread) / q[g][c];
     }
   return resolved;
 }
@@ -58,43 +97,37 @@ vec3 ratio_to(vec3 resolved, vec3 fabric) {
 vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 q[Q_GROUPS]) {
   WeaveSample w = weave_at(st);
   if (w.thread < 0) return vec3(0.0);
-  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, q), fabric);
+  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, 0.0, q), fabric);
 }
 
-// The factor averaged over the pixel's footprint (tile-space derivatives dx, dy): the layout at
-// four rotated-grid points, gap samples adding nothing. A thread whose samples lie close along
-// its float (a close-up) is shaded once at their mean position, weighted by its share of them;
-// one whose samples spread further (near the level-of-detail ease) is shaded at each. So a yarn's
-// edge covers the pixel in part, as in a supersampled reference, for one or two shading
-// evaluations a pixel up close. Twin: weave_ratio_filtered in methods/weave/weave_ratio.h.
-#define WEAVE_ARC_SPREAD 0.125
+// The RMS tilt of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
+// curve's slope there times the spread, the slope the gentler of the two sides' within √3 spreads
+// (a jump of the curve on one side is two tilts, not a spread): weave_tilt_spread.
+float weave_tilt_spread(int j, float arc, float arc_spread) {
+  if (arc_spread <= 0.0) return 0.0;
+  float h = sqrt(3.0) * arc_spread, here = curve_tilt(j, arc);
+  float slope = 1e30;
+  if (arc < 1.0) {
+    float b = min(arc + h, 1.0);
+    slope = abs(curve_tilt(j, b) - here) / (b - arc);
+  }
+  if (arc > 0.0) {
+    float a = max(arc - h, 0.0);
+    slope = min(slope, abs(here - curve_tilt(j, a)) / (arc - a));
+  }
+  return slope < 1e30 ? slope * arc_spread : 0.0;
+}
+
+// The factor over the pixel's footprint (tile-space derivatives dx, dy): the layout box-filtered
+// over it (weave_coverage), each thread present shaded once where its largest piece lies, weighted
+// by its share of the pixel, its lobes widened by the tilts the footprint spans along its float.
+// Twin: weave_ratio_filtered in methods/weave/weave_ratio.h.
 vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx, highp vec2 dy, vec3 fabric,
                           vec4 q[Q_GROUPS]) {
-  const vec2 grid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
-  int thread[4];
-  float arc[4];
-  float count[2] = float[2](0.0, 0.0), sum[2] = float[2](0.0, 0.0);
-  float lo[2] = float[2](1.0, 1.0), hi[2] = float[2](0.0, 0.0);
-  for (int i = 0; i < 4; ++i) {
-    WeaveSample w = weave_at(st + grid[i].x * dx + grid[i].y * dy);
-    thread[i] = w.thread;
-    arc[i] = w.arc;
-    if (w.thread < 0) continue;
-    int j = w.thread;
-    count[j] += 1.0;
-    sum[j] += w.arc;
-    lo[j] = min(lo[j], w.arc);
-    hi[j] = max(hi[j], w.arc);
-  }
+  WeaveCoverage c = weave_coverage(st, dx, dy);
   vec3 resolved = vec3(0.0);
-  for (int j = 0; j < 2; ++j) {
-    if (count[j] == 0.0) continue;
-    if (hi[j] - lo[j] <= WEAVE_ARC_SPREAD) {
-      resolved += 0.25 * count[j] * resolved_response(n, u, wo, j, sum[j] / count[j], q);
-      continue;
-    }
-    for (int i = 0; i < 4; ++i)
-      if (thread[i] == j) resolved += 0.25 * resolved_response(n, u, wo, j, arc[i], q);
-  }
+  for (int j = 0; j < 2; ++j)
+    if (c.share[j] > 0.0)
+      resolved += c.share[j] * resolved_response(n, u, wo, j, c.arc[j], weave_tilt_spread(j, c.arc[j], c.arc_spread[j]), q);
   return ratio_to(resolved, fabric);
 }

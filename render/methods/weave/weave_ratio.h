@@ -1,9 +1,9 @@
 #pragma once
 // The weave layer (docs/design.md §2, "Resolved weave") on the CPU: the C++ twin of
-// weave_ratio.glsl and weave_vertex_pass.frag. A close-up shows each thread where it lies; the
+// weave_ratio.glsl. A close-up shows each thread where it lies; the
 // layer gets there by modulating what a fabric-level method drew with
 //   R(x) = Σ_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k)
-//        / Σ_k P_k · integrand(ξ_k, ω_o)     (the fabric-level response to the same lights),
+//        / Σ_k P_k · integrand(ξ_k, ω_o)     (the fabric-level response to the same lights at x),
 // whose average over the repeat is 1: the layer adds the weave's detail and keeps every
 // method's fabric-level accuracy and shadows. Eased to 1 by the pixel's footprint (weave_detail).
 #include <span>
@@ -32,28 +32,38 @@ double weave_lobe_widening(double sharpness);
 // The fabric with both lobes of both threads widened by `widen2` (radians²).
 Fabric widened_fabric(Fabric fabric, double widen2);
 
-// Per vertex (the vertex pass): the fabric-level response and each SG's Q.
-struct WeaveVertexTerms {
+// The tangent samples per thread of a pixel's fabric-level terms: each sample's lobes are widened
+// by the tilts of the arc it stands for (as seed 000's samples are, iwasaki.cpp's
+// sample_lobe_width), so a few stand for the whole float, satin's 2.5° lobe included.
+inline constexpr int kWeavePixelSamples = 16;
+
+// A pixel's fabric-level terms: its response to the SGs as point lights, Σ_k P_k·integrand(ξ_k, ω_o)
+// with each lobe widened by the SG's spread and each sample's by its arc's tilts, and each SG's Q.
+// Per pixel, not per vertex: up close a triangle spans tens of degrees of view, and the sharp lobes
+// of an interpolated response miss the pixel's own (the factor's mean over a repeat was off by
+// tens of per cent on a 16×16 swatch).
+struct WeaveTerms {
   dvec3 fabric{0.0};
   std::vector<double> q;
 };
-WeaveVertexTerms weave_vertex_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo,
-                                    std::span<const SphericalGaussian> sgs);
+// `bsdf` with the samples the caller wants (the layer: kWeavePixelSamples per thread).
+WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs);
 
-// R at tile point st from (interpolated) vertex terms; 0 in a gap.
+// R at tile point st; 0 in a gap.
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                  glm::dvec2 st, const WeaveVertexTerms& terms, std::span<const SphericalGaussian> sgs);
+                  glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs);
 
-// R averaged over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the
-// layout at four rotated-grid points; a thread whose samples lie within kWeaveArcSpread of each
-// other along its float is shaded once at their mean, weighted by its share of them, one whose
-// samples spread further at each of them.
-inline constexpr double kWeaveArcSpread = 0.125;  // WEAVE_ARC_SPREAD in weave_ratio.glsl
-// The four rotated-grid points, in units of dx and dy (the `grid` of weave_ratio.glsl).
-inline constexpr glm::dvec2 kWeaveFootprintGrid[4] = {{-0.125, -0.375}, {0.375, -0.125}, {0.125, 0.375}, {-0.375, 0.125}};
+// R over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the layout
+// box-filtered over the footprint (core/weave_coverage.h), each thread present shaded once where
+// its largest piece lies, weighted by its share of the pixel, its lobes widened by the tilts the
+// footprint spans along its float.
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                           glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveVertexTerms& terms,
+                           glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
                            std::span<const SphericalGaussian> sgs);
+// The RMS tilt (radians) of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
+// curve's slope there times the spread, the slope the gentler of the two sides' within √3 spreads,
+// so that a jump of the curve (velvet's weft) does not count as a spread of tilts.
+double weave_tilt_spread(const Fabric& fabric, int thread, double arc, double arc_spread);
 
 // How much of R a pixel shows, 1 − smoothstep(fine, coarse, footprint in threads): the rest is 1.
 double weave_detail(double thread_footprint);

@@ -1,0 +1,77 @@
+#include "core/weave_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace weft {
+
+namespace {
+constexpr double kNarrow = 1e-12;  // a box narrower than this is a step
+
+// ∫_{-∞}^{y} of the CDF of a box of width a centred at 0.
+double box_cdf_integral(double y, double a) {
+  if (a < kNarrow) return std::max(y, 0.0);
+  const double z = y / a + 0.5;
+  if (z <= 0.0) return 0.0;
+  return a * (z < 1.0 ? 0.5 * z * z : z - 0.5);
+}
+
+// The CDF at x of a box of width a convolved with one of width b.
+double box_pair_cdf(double x, double a, double b) {
+  if (a < b) std::swap(a, b);
+  if (b < kNarrow) return a < kNarrow ? (x >= 0.0 ? 1.0 : 0.0) : std::clamp(x / a + 0.5, 0.0, 1.0);
+  return (box_cdf_integral(x + 0.5 * b, a) - box_cdf_integral(x - 0.5 * b, a)) / b;
+}
+}  // namespace
+
+double box_pair_mass(double lo, double hi, double a, double b) {
+  return hi <= lo ? 0.0 : std::max(box_pair_cdf(hi, a, b) - box_pair_cdf(lo, a, b), 0.0);
+}
+
+WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy) {
+  WeaveCoverage out;
+  const double w = layout.yarn_width(), f = layout.warp_share();
+  if (w <= 0.0) return out;
+  const double rows = layout.rows();
+  const glm::dvec2 c = st - glm::floor(st);  // the tile's own coordinates keep precision
+  const glm::dvec2 a = glm::abs(dx), b = glm::abs(dy);
+  const glm::dvec2 half = 0.5 * (a + b);
+  double best[2] = {0.0, 0.0};
+  // A box of width a convolved with one of width b has variance (a² + b²)/12.
+  out.arc_spread[0] = f > 0.0 ? std::sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
+  out.arc_spread[1] = std::sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
+  // One rectangle [s0, s1] × [t0, t1] of thread j, `arc` of its float from the s or t of the
+  // overlap's middle.
+  auto piece = [&](int j, double s0, double s1, double t0, double t1, auto arc_at) {
+    const double share = box_pair_mass(s0 - c.x, s1 - c.x, a.x, b.x) * box_pair_mass(t0 - c.y, t1 - c.y, a.y, b.y);
+    if (share <= 0.0) return;
+    out.share[j] += share;
+    if (share > best[j]) {
+      best[j] = share;
+      const double sm = 0.5 * (std::max(s0, c.x - half.x) + std::min(s1, c.x + half.x));
+      const double tm = 0.5 * (std::max(t0, c.y - half.y) + std::min(t1, c.y + half.y));
+      out.arc[j] = std::clamp(arc_at(sm, tm), 0.0, 1.0);
+    }
+  };
+  const int k0 = int(std::floor((c.y - half.y) * rows)), k1 = int(std::floor((c.y + half.y) * rows));
+  for (int k = std::max(k0, int(std::floor(c.y * rows)) - kWeaveCoverageReach);
+       k <= std::min(k1, int(std::floor(c.y * rows)) + kWeaveCoverageReach); ++k) {
+    const int row = ((k % layout.rows()) + layout.rows()) % layout.rows();
+    const double o = double(row * layout.shift()) / rows;
+    const double t0 = k / rows, t1 = (k + 1) / rows;
+    const int m0 = int(std::floor(c.x - half.x - o)) - 1, m1 = int(std::floor(c.x + half.x - o));
+    const int mc = int(std::floor(c.x - o));
+    for (int m = std::max(m0, mc - kWeaveCoverageReach); m <= std::min(m1, mc + kWeaveCoverageReach); ++m) {
+      const double s = o + m;
+      // The warp floats over [s, s + f) in the middle w of the row.
+      piece(0, s, s + f, t0 + (0.5 - 0.5 * w) / rows, t0 + (0.5 + 0.5 * w) / rows,
+            [&](double sm, double) { return f > 0.0 ? (sm - s) / f : 0.0; });
+      // The weft crosses the whole row in the middle w of the rest.
+      const double g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
+      piece(1, g0, g1, t0, t1, [&](double, double tm) { return (tm - t0) * rows; });
+    }
+  }
+  return out;
+}
+
+}  // namespace weft

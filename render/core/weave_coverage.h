@@ -1,0 +1,34 @@
+#pragma once
+// The weave layout (core/weave_layout.h) box-filtered over one pixel: how much of the pixel each
+// thread covers, and where along its float, so that a yarn's edge covers a pixel in part as it
+// does in a supersampled image, for one shading evaluation per thread present. The pixel's
+// footprint is the parallelogram st ± ½dx ± ½dy (tile-space derivatives across one pixel); its
+// weight along s and along t is each a box of |dx|'s component convolved with a box of |dy|'s
+// (exact for the parallelogram's marginals), and a rectangle of the layout gets the product of
+// its two marginal masses. C++ twin of weave_coverage() in methods/weave/weave_layout.glsl.
+#include <glm/glm.hpp>
+
+#include "core/weave_layout.h"
+
+namespace weft {
+
+struct WeaveCoverage {
+  double share[2] = {0.0, 0.0};  // of the pixel, per thread (warp, weft); the rest is gap
+  double arc[2] = {0.0, 0.0};    // along the float where the thread's largest piece in the pixel lies
+  // RMS spread of arc over the footprint along each thread's float (its marginal along s for the
+  // warp, along t for the weft, in fractions of the float): the tilts a pixel mixes.
+  double arc_spread[2] = {0.0, 0.0};
+};
+
+// Rows and floats farther than this from the footprint's centre are not visited: the layer fades
+// the weave out by one thread a pixel (methods/weave/weave_ratio.h), so a footprint spans at most
+// two rows and two floats where it is drawn at all.
+inline constexpr int kWeaveCoverageReach = 2;
+
+WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy);
+
+// The mass in [lo, hi] of a box of width a convolved with a box of width b, both centred at 0
+// (the footprint's marginal along one axis); widths may be 0 (a step).
+double box_pair_mass(double lo, double hi, double a, double b);
+
+}  // namespace weft

@@ -1,0 +1,96 @@
+// The layout box-filtered over a pixel (core/weave_coverage.h) against the pixel supersampled
+// finely (WeaveLayout::at on a 96×96 grid over the footprint's parallelogram): each thread's share,
+// for every preset's layout, footprints from a fortieth of a repeat to a thread across, aligned
+// with the weave (where the product of the marginals is the exact box filter) and turned.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "core/fabric.h"
+#include "core/weave_coverage.h"
+
+using namespace weft;
+using glm::dvec2;
+
+static const std::filesystem::path kFabrics = std::filesystem::path(WEFT_SOURCE_ASSETS) / "fabrics";
+
+namespace {
+// Each thread's share of the parallelogram st ± ½dx ± ½dy, supersampled.
+std::array<double, 2> supersampled_shares(const WeaveLayout& layout, dvec2 st, dvec2 dx, dvec2 dy) {
+  constexpr int kN = 96;
+  std::array<double, 2> share{};
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i) {
+      const dvec2 p = st + ((i + 0.5) / kN - 0.5) * dx + ((j + 0.5) / kN - 0.5) * dy;
+      const WeaveSample w = layout.at(p.x, p.y);
+      if (w.thread >= 0) share[w.thread] += 1.0 / (kN * kN);
+    }
+  return share;
+}
+}  // namespace
+
+TEST(WeaveCoverage, AlignedFootprintsGetTheSupersampledShares) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const std::string& name : list_fabric_presets(kFabrics)) {
+    const WeaveLayout layout(load_fabric_preset(name, kFabrics));
+    const double thread = 1.0 / layout.rows();
+    for (int i = 0; i < 200; ++i) {
+      const dvec2 st(u(rng) * 3.0 - 1.0, u(rng) * 3.0 - 1.0);
+      const dvec2 dx(thread * (0.025 + 0.975 * u(rng)), 0.0), dy(0.0, thread * (0.025 + 0.975 * u(rng)));
+      const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
+      const auto expect = supersampled_shares(layout, st, dx, dy);
+      for (int j = 0; j < 2; ++j) EXPECT_NEAR(c.share[j], expect[j], 0.025) << name << " at " << st.x << ", " << st.y;
+    }
+  }
+}
+
+TEST(WeaveCoverage, TurnedFootprintsStayCloseToTheSupersampledShares) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const WeaveLayout layout(load_fabric_preset("linen_plain", kFabrics));
+  const double thread = 1.0 / layout.rows();
+  double err2 = 0.0;
+  constexpr int kCases = 300;
+  for (int i = 0; i < kCases; ++i) {
+    const double turn = u(rng) * 3.14159265, size = thread * (0.05 + 0.2 * u(rng));
+    const dvec2 st(u(rng), u(rng));
+    const dvec2 dx = size * dvec2(std::cos(turn), std::sin(turn)), dy = size * dvec2(-std::sin(turn), std::cos(turn));
+    const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
+    const auto expect = supersampled_shares(layout, st, dx, dy);
+    for (int j = 0; j < 2; ++j) err2 += (c.share[j] - expect[j]) * (c.share[j] - expect[j]) / (2.0 * kCases);
+  }
+  EXPECT_LT(std::sqrt(err2), 0.05);
+  RecordProperty("rms_share_error", std::to_string(std::sqrt(err2)));
+  std::cout << "turned footprints: RMS share error " << std::sqrt(err2) << "\n";
+}
+
+TEST(WeaveCoverage, KeepsEachThreadsShareOfTheRepeat) {
+  for (const std::string& name : list_fabric_presets(kFabrics)) {
+    const Fabric f = load_fabric_preset(name, kFabrics);
+    const WeaveLayout layout(f);
+    constexpr int kN = 64;
+    std::array<double, 2> mean{};
+    for (int j = 0; j < kN; ++j)
+      for (int i = 0; i < kN; ++i) {
+        const WeaveCoverage c = weave_coverage(layout, {(i + 0.5) / kN, (j + 0.5) / kN}, {0.13, 0.02}, {-0.03, 0.11});
+        for (int t = 0; t < 2; ++t) mean[t] += c.share[t] / (kN * kN);
+      }
+    for (int t = 0; t < 2; ++t) EXPECT_NEAR(mean[t], f.threads[t].coverage, 0.01) << name << " thread " << t;
+  }
+}
+
+TEST(WeaveCoverage, ATinyFootprintIsThePointUnderIt) {
+  const WeaveLayout layout(load_fabric_preset("polyester_satin_charmeuse", kFabrics));
+  for (double x = 0.013; x < 1.0; x += 0.07)
+    for (double y = 0.021; y < 1.0; y += 0.09) {
+      const WeaveSample w = layout.at(x, y);
+      const WeaveCoverage c = weave_coverage(layout, {x, y}, {1e-7, 0.0}, {0.0, 1e-7});
+      for (int j = 0; j < 2; ++j) EXPECT_NEAR(c.share[j], w.thread == j ? 1.0 : 0.0, 1e-3) << x << ", " << y;
+      if (w.thread >= 0) {
+        EXPECT_NEAR(c.arc[w.thread], w.arc, 1e-5);
+      }
+    }
+}
