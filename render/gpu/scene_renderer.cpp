@@ -172,7 +172,7 @@ void SceneRenderer::set_weave(bool on) {
   if (on && !weave_) {
     auto layer = std::make_unique<WeaveLayer>();
     layer->set_visible_vertices_only(visible_only_);
-    layer->set_vertex_terms(cloth_->shades_per_vertex());
+    layer->set_vertex_terms(!cloth_->weave_terms_per_pixel());
     for (auto& o : objects_)
       if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
     weave_ = std::move(layer);

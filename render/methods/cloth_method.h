@@ -75,9 +75,12 @@ public:
   // every draw): temporal reuse then costs a fraction of what holding values does, and a caller
   // may reuse by default.
   virtual bool reuse_follows_camera() const { return false; }
-  // Whether draw() interpolates shading computed at the vertices (Gouraud): the weave layer then
-  // takes its fabric-level terms per vertex too, so that its ratio cancels that interpolation.
-  virtual bool shades_per_vertex() const { return false; }
+  // Whether the weave layer over this method takes its fabric-level terms per pixel: worth 16
+  // tangent samples × SGs a pixel only under a method that shades the canonical model per pixel
+  // (iwasaki). Otherwise (false) they are per vertex, interpolated as a per-vertex method's
+  // shading is, so that the layer's ratio divides that interpolation out, and cheap under a cheap
+  // per-pixel approximation whose own error is larger than what per-pixel terms would fix.
+  virtual bool weave_terms_per_pixel() const { return false; }
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }

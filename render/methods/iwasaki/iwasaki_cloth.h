@@ -98,7 +98,7 @@ public:
   void refresh_all() override;
   void set_clock(double seconds) override { clock_ = seconds; }
   bool reuse_follows_camera() const override { return evaluation_ == Evaluation::per_vertex && shaders_.facet_per_sg; }
-  bool shades_per_vertex() const override { return evaluation_ == Evaluation::per_vertex; }
+  bool weave_terms_per_pixel() const override { return evaluation_ == Evaluation::per_pixel; }
   // Per vertex: the passes compute only the vertices the frame shows (visible_vertices.h), where
   // the GL can mark them; on by default.
   void set_visible_vertices_only(bool on) override { visible_only_ = on; }

@@ -2,9 +2,10 @@
 // The weave layer's GPU side (methods/weave/weave_ratio.h): after a fabric-level method has drawn
 // a cloth object, multiplies the colour where the object lies by the layer's factor (blending
 // dst·src), so close-ups show each thread and distant cloth keeps the method's shading. One draw
-// of the mesh with its UVs, the factor per pixel; its fabric-level terms per pixel too, or (under a
-// method that shades per vertex) per vertex from a vertex pass, interpolated as the method's
-// shading is, so that the ratio takes the method's interpolation error out with it. Skipped
+// of the mesh with its UVs, the factor per pixel; its fabric-level terms per pixel too (under a
+// method that shades the canonical model per pixel, ClothMethod::weave_terms_per_pixel), or per
+// vertex from a vertex pass, interpolated as a per-vertex method's shading is, so that the ratio
+// takes the method's interpolation error out with it. Skipped
 // outright where no point of the object can come closer than the coarse footprint (the object's
 // nearest point against its smallest repeat).
 #include <map>
@@ -40,8 +41,8 @@ public:
   void set_fabric(size_t handle, const Fabric& fabric);
   // Whether object `handle` can show its weave from `camera` on an image `height` pixels high.
   bool resolves(size_t handle, const Camera& camera, int height) const;
-  // Terms per vertex (true: under a method that interpolates per-vertex shading) or per pixel
-  // (false, the default).
+  // Terms per vertex (true) or per pixel (false, the default; the scene renderer sets it from its
+  // method, ClothMethod::weave_terms_per_pixel).
   void set_vertex_terms(bool on) { vertex_terms_ = on; }
   bool vertex_terms() const { return vertex_terms_; }
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
