@@ -12,17 +12,23 @@ namespace weft {
 
 double weave_lobe_widening(double sharpness) { return 1.0 / (4.0 * std::max(sharpness, 1e-6)); }
 
+namespace {
+// Both lobes of `thread` widened by the variance `widen2`: γ² → γ² + widen2.
+ThreadParams widened_thread(ThreadParams thread, double widen2) {
+  thread.gamma_s = std::sqrt(thread.gamma_s * thread.gamma_s + widen2);
+  thread.gamma_v = std::sqrt(thread.gamma_v * thread.gamma_v + widen2);
+  return thread;
+}
+}  // namespace
+
 Fabric widened_fabric(Fabric fabric, double widen2) {
-  for (auto& t : fabric.threads) {
-    t.gamma_s = std::sqrt(t.gamma_s * t.gamma_s + widen2);
-    t.gamma_v = std::sqrt(t.gamma_v * t.gamma_v + widen2);
-  }
+  for (auto& t : fabric.threads) t = widened_thread(t, widen2);
   return fabric;
 }
 
 namespace {
-// ψ, θ, φ of ω_i and ω_o for thread j's sample at tilt α, and f_s·M·P·cos θ_i with both lobes
-// widened by widen2 + (c·tilt_spread)², c = ½(cos φ_i + cos φ_o) (iwasaki.cpp's sample_lobe_width).
+// Thread j's sample at tilt α: its P, and f_s·M·P·cos θ_i with both lobes widened by
+// widen2 + (c·tilt_spread)², c = ½(cos φ_i + cos φ_o) (iwasaki.cpp's sample_lobe_width).
 struct SampleTerms {
   double p = 0.0;   // P
   dvec3 value{0.0}; // f_s·M·P·cos θ_i
@@ -37,11 +43,7 @@ SampleTerms sample_terms(const ThreadParams& thread, const SurfaceFrame& frame, 
   const double w = masking(in, o) * out.p;
   if (w <= 0.0) return out;
   const double c = 0.5 * (std::cos(in.phi) + std::cos(o.phi));
-  ThreadParams wide = thread;
-  const double add = widen2 + c * c * tilt_spread * tilt_spread;
-  wide.gamma_s = std::sqrt(thread.gamma_s * thread.gamma_s + add);
-  wide.gamma_v = std::sqrt(thread.gamma_v * thread.gamma_v + add);
-  out.value = scattering(wide, in, o) * (w * std::cos(in.theta));
+  out.value = scattering(widened_thread(thread, widen2 + c * c * tilt_spread * tilt_spread), in, o) * (w * std::cos(in.theta));
   return out;
 }
 }  // namespace
