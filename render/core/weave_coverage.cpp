@@ -36,7 +36,6 @@ WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec
   const glm::dvec2 c = st - glm::floor(st);  // the tile's own coordinates keep precision
   const glm::dvec2 a = glm::abs(dx), b = glm::abs(dy);
   const glm::dvec2 half = 0.5 * (a + b);
-  double best[2] = {0.0, 0.0};
   // A box of width a convolved with one of width b has variance (a² + b²)/12.
   out.arc_spread[0] = f > 0.0 ? std::sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
   out.arc_spread[1] = std::sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
@@ -46,12 +45,14 @@ WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec
     const double share = box_pair_mass(s0 - c.x, s1 - c.x, a.x, b.x) * box_pair_mass(t0 - c.y, t1 - c.y, a.y, b.y);
     if (share <= 0.0) return;
     out.share[j] += share;
-    if (share > best[j]) {
-      best[j] = share;
-      const double sm = 0.5 * (std::max(s0, c.x - half.x) + std::min(s1, c.x + half.x));
-      const double tm = 0.5 * (std::max(t0, c.y - half.y) + std::min(t1, c.y + half.y));
-      out.arc[j] = std::clamp(arc_at(sm, tm), 0.0, 1.0);
-    }
+    // Insertion into the kept pieces, largest first; the smallest falls off the end.
+    int i = kWeaveCoveragePieces;
+    while (i > 0 && share > out.piece[i - 1].share) --i;
+    if (i == kWeaveCoveragePieces) return;
+    for (int k = kWeaveCoveragePieces - 1; k > i; --k) out.piece[k] = out.piece[k - 1];
+    const double sm = 0.5 * (std::max(s0, c.x - half.x) + std::min(s1, c.x + half.x));
+    const double tm = 0.5 * (std::max(t0, c.y - half.y) + std::min(t1, c.y + half.y));
+    out.piece[i] = WeavePiece{j, share, std::clamp(arc_at(sm, tm), 0.0, 1.0)};
   };
   const int k0 = int(std::floor((c.y - half.y) * rows)), k1 = int(std::floor((c.y + half.y) * rows));
   for (int k = std::max(k0, int(std::floor(c.y * rows)) - kWeaveCoverageReach);
@@ -72,6 +73,15 @@ WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec
     }
   }
   return out;
+}
+
+double piece_weight(const WeaveCoverage& c, int i) {
+  const WeavePiece& p = c.piece[i];
+  if (p.thread < 0) return 0.0;
+  double kept = 0.0;
+  for (const auto& q : c.piece)
+    if (q.thread == p.thread) kept += q.share;
+  return c.share[p.thread] * p.share / kept;
 }
 
 }  // namespace weft

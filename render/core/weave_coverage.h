@@ -4,17 +4,33 @@
 // does in a supersampled image, for one shading evaluation per thread present. The pixel's
 // footprint is the parallelogram st ± ½dx ± ½dy (tile-space derivatives across one pixel); its
 // weight along s and along t is each a box of |dx|'s component convolved with a box of |dy|'s
-// (exact for the parallelogram's marginals), and a rectangle of the layout gets the product of
-// its two marginal masses. C++ twin of weave_coverage() in methods/weave/weave_layout.glsl.
+// (exact for the parallelogram's marginals), and a rectangle of the layout (one float) gets the
+// product of its two marginal masses. A pixel on a row's edge holds floats of the same thread at
+// different places along them (a satin's neighbouring warp floats are half a float apart), so the
+// few largest floats are kept apart, each with its own arc. C++ twin of weave_coverage() in
+// methods/weave/weave_layout.glsl.
 #include <glm/glm.hpp>
 
 #include "core/weave_layout.h"
 
 namespace weft {
 
+// The floats a pixel's shading visits: a footprint of at most a thread (where the layer draws at
+// all) holds one or two of each thread, four where it straddles a float's corner.
+inline constexpr int kWeaveCoveragePieces = 4;
+
+// One float's part of the pixel.
+struct WeavePiece {
+  int thread = -1;     // 0 warp, 1 weft; −1 an unused slot
+  double share = 0.0;  // of the pixel
+  double arc = 0.0;    // along the float, at the middle of its overlap with the footprint's box
+};
+
 struct WeaveCoverage {
   double share[2] = {0.0, 0.0};  // of the pixel, per thread (warp, weft); the rest is gap
-  double arc[2] = {0.0, 0.0};    // along the float where the thread's largest piece in the pixel lies
+  // The largest floats in the pixel, largest first; a thread's share beyond its kept floats is
+  // spread over them in proportion (piece_weight), so that each thread keeps its whole share.
+  WeavePiece piece[kWeaveCoveragePieces];
   // RMS spread of arc over the footprint along each thread's float (its marginal along s for the
   // warp, along t for the weft, in fractions of the float): the tilts a pixel mixes.
   double arc_spread[2] = {0.0, 0.0};
@@ -26,6 +42,10 @@ struct WeaveCoverage {
 inline constexpr int kWeaveCoverageReach = 2;
 
 WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy);
+
+// The weight of piece i in the pixel's shading: its thread's share × its part of that thread's
+// kept pieces; 0 for an unused slot. The weights sum to share[0] + share[1].
+double piece_weight(const WeaveCoverage& c, int i);
 
 // The mass in [lo, hi] of a box of width a convolved with a box of width b, both centred at 0
 // (the footprint's marginal along one axis); widths may be 0 (a step).

@@ -1,6 +1,6 @@
 // The layout box-filtered over a pixel (core/weave_coverage.h) against the pixel supersampled
 // finely (WeaveLayout::at on a 96×96 grid over the footprint's parallelogram): each thread's share,
-// for every preset's layout, footprints from a fortieth of a repeat to a thread across, aligned
+// and where along its floats it lies, for every preset's layout, footprints from a fortieth of a repeat to a thread across, aligned
 // with the weave (where the product of the marginals is the exact box filter) and turned.
 #include <gtest/gtest.h>
 
@@ -90,7 +90,53 @@ TEST(WeaveCoverage, ATinyFootprintIsThePointUnderIt) {
       const WeaveCoverage c = weave_coverage(layout, {x, y}, {1e-7, 0.0}, {0.0, 1e-7});
       for (int j = 0; j < 2; ++j) EXPECT_NEAR(c.share[j], w.thread == j ? 1.0 : 0.0, 1e-3) << x << ", " << y;
       if (w.thread >= 0) {
-        EXPECT_NEAR(c.arc[w.thread], w.arc, 1e-5);
+        EXPECT_EQ(c.piece[0].thread, w.thread);
+        EXPECT_NEAR(c.piece[0].arc, w.arc, 1e-5);
+        EXPECT_NEAR(piece_weight(c, 0), 1.0, 1e-3);
       }
     }
+}
+
+// A footprint across a row's edge holds two floats of one thread at different places along them
+// (a satin's neighbouring warp floats are half a float apart): the pieces' weighted arcs give the
+// supersampled pixel's mean of a function of the arc, which one arc per thread cannot.
+TEST(WeaveCoverage, PiecesKeepEachFloatsPlaceAlongIt) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  // A smooth function of the arc that tells the two ends of a float apart.
+  auto g = [](double arc) { return std::cos(2.0 * arc) + arc * arc; };
+  for (const std::string& name : list_fabric_presets(kFabrics)) {
+    const WeaveLayout layout(load_fabric_preset(name, kFabrics));
+    const double thread = 1.0 / layout.rows();
+    double err2 = 0.0, one2 = 0.0;
+    int cases = 0;
+    for (int i = 0; i < 300; ++i) {
+      const dvec2 st(u(rng) * 2.0, u(rng) * 2.0);
+      const dvec2 dx(thread * (0.1 + 0.4 * u(rng)), 0.0), dy(0.0, thread * (0.1 + 0.9 * u(rng)));
+      const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
+      constexpr int kN = 96;
+      double expect = 0.0;
+      for (int b = 0; b < kN; ++b)
+        for (int a = 0; a < kN; ++a) {
+          const dvec2 p = st + ((a + 0.5) / kN - 0.5) * dx + ((b + 0.5) / kN - 0.5) * dy;
+          const WeaveSample w = layout.at(p.x, p.y);
+          if (w.thread >= 0) expect += g(w.arc) / (kN * kN);
+        }
+      double got = 0.0, largest_only = 0.0;
+      for (int k = 0; k < kWeaveCoveragePieces; ++k) got += piece_weight(c, k) * g(c.piece[k].arc);
+      // One arc per thread, its largest float's: what the pieces replace.
+      for (int j = 0; j < 2; ++j)
+        for (const auto& p : c.piece)
+          if (p.thread == j) {
+            largest_only += c.share[j] * g(p.arc);
+            break;
+          }
+      err2 += (got - expect) * (got - expect);
+      one2 += (largest_only - expect) * (largest_only - expect);
+      ++cases;
+    }
+    const double rms = std::sqrt(err2 / cases), rms_one = std::sqrt(one2 / cases);
+    std::cout << name << ": RMS error of the arc mean " << rms << " (one arc per thread: " << rms_one << ")\n";
+    EXPECT_LT(rms, 0.015) << name;
+  }
 }

@@ -47,11 +47,14 @@ float curve_tilt(int j, float arc) {
 
 // --- core/weave_coverage.h: the layout box-filtered over a pixel's footprint st ± ½dx ± ½dy (each
 // axis's weight a box of |dx|'s component convolved with one of |dy|'s), per thread its share of
-// the pixel and the arc of its largest piece there.
+// the pixel, and the largest floats in it, each with its share and arc.
 #define WEAVE_COVERAGE_REACH 2
+#define WEAVE_COVERAGE_PIECES 4
 struct WeaveCoverage {
   float share[2];
-  float arc[2];
+  int piece_thread[WEAVE_COVERAGE_PIECES];  // −1: an unused slot
+  float piece_share[WEAVE_COVERAGE_PIECES];
+  float piece_arc[WEAVE_COVERAGE_PIECES];
   float arc_spread[2];  // RMS arc over the footprint along each thread's float
 };
 
@@ -71,15 +74,47 @@ float box_pair_mass(float lo, float hi, float a, float b) {
   return hi <= lo ? 0.0 : max(box_pair_cdf(hi, a, b) - box_pair_cdf(lo, a, b), 0.0);
 }
 
+// Adds thread j's float of share `share` at `arc` (weave_coverage.cpp's piece).
+void add_piece(inout WeaveCoverage c, int j, float share, float arc) {
+  c.share[j] += share;
+  int i = WEAVE_COVERAGE_PIECES;
+  while (i > 0 && share > c.piece_share[i - 1]) --i;
+  if (i == WEAVE_COVERAGE_PIECES) return;
+  for (int k = WEAVE_COVERAGE_PIECES - 1; k > i; --k) {
+    c.piece_thread[k] = c.piece_thread[k - 1];
+    c.piece_share[k] = c.piece_share[k - 1];
+    c.piece_arc[k] = c.piece_arc[k - 1];
+  }
+  c.piece_thread[i] = j;
+  c.piece_share[i] = share;
+  c.piece_arc[i] = clamp(arc, 0.0, 1.0);
+}
+
+// piece_weight: piece i's thread's share × its part of that thread's kept pieces.
+float piece_weight(WeaveCoverage c, int i) {
+  int j = c.piece_thread[i];
+  if (j < 0) return 0.0;
+  float kept = 0.0;
+  for (int k = 0; k < WEAVE_COVERAGE_PIECES; ++k)
+    if (c.piece_thread[k] == j) kept += c.piece_share[k];
+  return c.share[j] * c.piece_share[i] / kept;
+}
+
 WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
-  WeaveCoverage out_ = WeaveCoverage(float[2](0.0, 0.0), float[2](0.0, 0.0), float[2](0.0, 0.0));
+  WeaveCoverage out_;
+  out_.share = float[2](0.0, 0.0);
+  out_.arc_spread = float[2](0.0, 0.0);
+  for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
+    out_.piece_thread[i] = -1;
+    out_.piece_share[i] = 0.0;
+    out_.piece_arc[i] = 0.0;
+  }
   float w = u_weave_width, f = u_weave_warp_share, rows = float(u_weave_rows);
   if (w <= 0.0) return out_;
   highp vec2 c = fract(st);
   vec2 a = abs(dx), b = abs(dy), half_ = 0.5 * (a + b);
   out_.arc_spread[0] = f > 0.0 ? sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
   out_.arc_spread[1] = sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
-  float best[2] = float[2](0.0, 0.0);
   int kc = int(floor(c.y * rows));
   int k0 = max(int(floor((c.y - half_.y) * rows)), kc - WEAVE_COVERAGE_REACH);
   int k1 = min(int(floor((c.y + half_.y) * rows)), kc + WEAVE_COVERAGE_REACH);
@@ -97,23 +132,15 @@ WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
       // The warp floats over [s, s + f) in the middle w of the row.
       float share = box_pair_mass(s - c.x, s + f - c.x, a.x, b.x) * wy;
       if (share > 0.0) {
-        out_.share[0] += share;
-        if (share > best[0]) {
-          best[0] = share;
-          float sm = 0.5 * (max(s, c.x - half_.x) + min(s + f, c.x + half_.x));
-          out_.arc[0] = f > 0.0 ? clamp((sm - s) / f, 0.0, 1.0) : 0.0;
-        }
+        float sm = 0.5 * (max(s, c.x - half_.x) + min(s + f, c.x + half_.x));
+        add_piece(out_, 0, share, f > 0.0 ? (sm - s) / f : 0.0);
       }
       // The weft crosses the whole row in the middle w of the rest.
       float g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
       share = box_pair_mass(g0 - c.x, g1 - c.x, a.x, b.x) * ty;
       if (share > 0.0) {
-        out_.share[1] += share;
-        if (share > best[1]) {
-          best[1] = share;
-          float tm = 0.5 * (max(t0, c.y - half_.y) + min(t1, c.y + half_.y));
-          out_.arc[1] = clamp((tm - t0) * rows, 0.0, 1.0);
-        }
+        float tm = 0.5 * (max(t0, c.y - half_.y) + min(t1, c.y + half_.y));
+        add_piece(out_, 1, share, (tm - t0) * rows);
       }
     }
   }

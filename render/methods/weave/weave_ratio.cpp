@@ -126,10 +126,13 @@ dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, con
                            std::span<const SphericalGaussian> sgs) {
   const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
   dvec3 resolved(0.0);
-  for (int j = 0; j < 2; ++j)
-    if (c.share[j] > 0.0)
-      resolved += c.share[j] * resolved_response(bsdf, frame, wo, j, c.arc[j],
-                                                 weave_tilt_spread(bsdf.fabric(), j, c.arc[j], c.arc_spread[j]), terms, sgs);
+  for (int i = 0; i < kWeaveCoveragePieces; ++i) {
+    const WeavePiece& p = c.piece[i];
+    if (p.thread < 0) break;
+    resolved += piece_weight(c, i) * resolved_response(bsdf, frame, wo, p.thread, p.arc,
+                                                       weave_tilt_spread(bsdf.fabric(), p.thread, p.arc, c.arc_spread[p.thread]),
+                                                       terms, sgs);
+  }
   return ratio_to(resolved, terms.fabric);
 }
 

@@ -119,15 +119,18 @@ float weave_tilt_spread(int j, float arc, float arc_spread) {
 }
 
 // The factor over the pixel's footprint (tile-space derivatives dx, dy): the layout box-filtered
-// over it (weave_coverage), each thread present shaded once where its largest piece lies, weighted
-// by its share of the pixel, its lobes widened by the tilts the footprint spans along its float.
+// over it (weave_coverage), each of its largest floats shaded once where it lies, weighted by its
+// share of the pixel, its lobes widened by the tilts the footprint spans along its float.
 // Twin: weave_ratio_filtered in methods/weave/weave_ratio.h.
 vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx, highp vec2 dy, vec3 fabric,
                           vec4 q[Q_GROUPS]) {
   WeaveCoverage c = weave_coverage(st, dx, dy);
   vec3 resolved = vec3(0.0);
-  for (int j = 0; j < 2; ++j)
-    if (c.share[j] > 0.0)
-      resolved += c.share[j] * resolved_response(n, u, wo, j, c.arc[j], weave_tilt_spread(j, c.arc[j], c.arc_spread[j]), q);
+  for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
+    int j = c.piece_thread[i];
+    if (j < 0) break;
+    float arc = c.piece_arc[i];
+    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), q);
+  }
   return ratio_to(resolved, fabric);
 }

@@ -54,8 +54,8 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
                   glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs);
 
 // R over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the layout
-// box-filtered over the footprint (core/weave_coverage.h), each thread present shaded once where
-// its largest piece lies, weighted by its share of the pixel, its lobes widened by the tilts the
+// box-filtered over the footprint (core/weave_coverage.h), each of its largest floats shaded once
+// where it lies, weighted by its share of the pixel (piece_weight), its lobes widened by the tilts the
 // footprint spans along its float.
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
