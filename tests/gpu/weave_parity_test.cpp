@@ -77,7 +77,7 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   const WeaveLayout layout(fabric);
   const SgLighting sgs = four_sgs();
   GlProgram program(fullscreen_triangle_vs(),
-                    program_source({"microcylinder.glsl", "weave_layout.glsl", "weave_ratio.glsl"}, weave_defines(1)) + kFs);
+                    program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl"}, weave_defines(1)) + kFs);
   program.use();
   upload_fabric(program, bsdf);
   upload_weave_tilt_spreads(program, bsdf);

@@ -4,7 +4,9 @@
 // detail, not light).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "core/fabric.h"
 #include "methods/weave/weave_ratio.h"
@@ -82,14 +84,64 @@ TEST(WeaveDetail, FadesByThreadsAPixelNotRepeats) {
   ASSERT_EQ(satin.layout.rows(), 5);
   ASSERT_EQ(plain.layout.rows(), 2);
   EXPECT_DOUBLE_EQ(weave_thread_footprint(satin.layout, 0.2), 1.0);
-  const glm::dvec2 st{0.31, 0.47}, dx{0.2, 0.0}, dy{0.0, 0.2};
-  const dvec3 gone = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx, dy, satin.sgs);
+  // A footprint of kWeaveCoarseFootprint threads: the fabric level, exactly.
+  const glm::dvec2 st{0.31, 0.47};
+  const double coarse = kWeaveCoarseFootprint / satin.layout.rows();
+  const dvec3 gone = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, {coarse, 0.0}, {0.0, coarse}, satin.sgs);
   for (int c = 0; c < 3; ++c) EXPECT_EQ(gone[c], 1.0);
-  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(plain.layout, 0.2)), 1.0 - 0.2 * 0.2 * (3.0 - 2.0 * 0.2));
-  // A quarter of a thread a pixel or finer: the whole filtered factor.
-  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(satin.layout, 0.05)), 1.0);
-  const dvec3 whole = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx / 4.0, dy / 4.0, satin.sgs);
-  const dvec3 filtered = weave_ratio_filtered(satin.bsdf, satin.layout, satin.frame, satin.wo, st, dx / 4.0, dy / 4.0,
+  // Halfway between the two footprints in threads the plain weave is half faded (smoothstep); the
+  // same footprint in repeats holds 2.5 times the threads of the five-end satin, which is gone.
+  const double mid = 0.5 * (kWeaveFineFootprint + kWeaveCoarseFootprint) / plain.layout.rows();
+  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(plain.layout, mid)), 0.5);
+  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(satin.layout, mid)), 0.0);
+  // kWeaveFineFootprint threads a pixel or finer: the whole filtered factor.
+  const double fine = kWeaveFineFootprint / satin.layout.rows();
+  EXPECT_DOUBLE_EQ(weave_detail(weave_thread_footprint(satin.layout, fine)), 1.0);
+  const dvec3 whole = weave_factor(satin.bsdf, satin.layout, satin.frame, satin.wo, st, {fine, 0.0}, {0.0, fine}, satin.sgs);
+  const dvec3 filtered = weave_ratio_filtered(satin.bsdf, satin.layout, satin.frame, satin.wo, st, {fine, 0.0}, {0.0, fine},
                                               satin.terms, satin.sgs);
   for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(whole[c], filtered[c]);
+}
+
+// An SG across the surface's horizon as the layer's point light (horizon_light): the share of its
+// power above the horizon and that part's mean elevation, against the SG integrated on a fine
+// polar grid about its axis.
+TEST(HorizonLight, IsTheSgsPartAboveTheHorizonAtItsMeanElevation) {
+  const dvec3 n(0, 0, 1);
+  for (double lambda : {30.0, 300.0, 1000.0}) {
+    const double sigma = 1.0 / std::sqrt(lambda);
+    for (double e0_sigmas : {-1.5, -0.5, 0.0, 0.5, 1.0, 2.0}) {
+      const double e0 = e0_sigmas * sigma;
+      const SphericalGaussian g{dvec3(std::cos(e0), 0.0, std::sin(e0)), lambda, dvec3(1.0)};
+      // ∫ G over the sphere and over ω·n > 0, and ∫ G·elevation above, on a polar grid about ξ.
+      const dvec3 e1 = glm::normalize(glm::cross(g.axis, dvec3(0, 1, 0))), e2 = glm::cross(g.axis, e1);
+      constexpr int kR = 600, kA = 720;
+      const double rho_max = 8.0 * sigma;
+      double all = 0.0, above = 0.0, elevation = 0.0;
+      for (int i = 0; i < kR; ++i) {
+        const double rho = (i + 0.5) / kR * rho_max;
+        const double w = std::exp(lambda * (std::cos(rho) - 1.0)) * std::sin(rho);
+        for (int a = 0; a < kA; ++a) {
+          const double psi = (a + 0.5) / kA * 2.0 * std::numbers::pi;
+          const dvec3 d = std::cos(rho) * g.axis + std::sin(rho) * (std::cos(psi) * e1 + std::sin(psi) * e2);
+          all += w;
+          if (glm::dot(d, n) > 0.0) {
+            above += w;
+            elevation += w * std::asin(glm::dot(d, n));
+          }
+        }
+      }
+      const HorizonLight light = horizon_light(g, n);
+      EXPECT_NEAR(light.share, above / all, 0.01) << "λ " << lambda << ", axis " << e0_sigmas << "σ above the horizon";
+      EXPECT_NEAR(std::asin(light.axis.z), elevation / above, 0.05 * sigma) << "λ " << lambda << ", axis " << e0_sigmas << "σ";
+      EXPECT_NEAR(light.axis.y, 0.0, 1e-12);  // it rises in the plane of ξ and n
+    }
+  }
+  // Far above the horizon: the SG's own axis with all its power.
+  const SphericalGaussian high{glm::normalize(dvec3(0.3, -0.2, 0.9)), 300.0, dvec3(1.0)};
+  const HorizonLight light = horizon_light(high, n);
+  EXPECT_DOUBLE_EQ(light.share, 1.0);
+  EXPECT_NEAR(glm::length(light.axis - high.axis), 0.0, 1e-12);
+  // Far below: nothing.
+  EXPECT_LT(horizon_light(SphericalGaussian{dvec3(0, 0, -1), 300.0, dvec3(1.0)}, n).share, 1e-12);
 }

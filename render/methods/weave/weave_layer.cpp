@@ -111,13 +111,13 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
                      " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
     p.pass = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
-        program_source({"microcylinder.glsl", "vertex_pass.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"},
+        program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"},
                        defines));
     defines += "#define WEAVE_VERTEX_TERMS\n";
   }
   p.draw = std::make_unique<GlProgram>(
       program_source({"weave_layer.vert"}, defines),
-      program_source({"microcylinder.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
+      program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
   return programs_.emplace(std::make_pair(q_groups, vertex_terms), std::move(p)).first->second;
 }
 

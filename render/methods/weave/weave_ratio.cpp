@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/microcylinder.h"
 #include "core/weave_coverage.h"
@@ -11,6 +12,25 @@
 namespace weft {
 
 double weave_lobe_widening(double sharpness) { return 1.0 / (4.0 * std::max(sharpness, 1e-6)); }
+
+HorizonLight horizon_light(const SphericalGaussian& g, const dvec3& n) {
+  const double sigma = 1.0 / std::sqrt(std::max(g.sharpness, 1e-6));
+  const double e0 = std::asin(std::clamp(glm::dot(g.axis, n), -1.0, 1.0));
+  const double z = e0 / sigma;
+  HorizonLight out;
+  out.share = 0.5 * std::erfc(-z / std::sqrt(2.0));
+  if (out.share <= 0.0) return out;
+  const double lift = sigma * std::exp(-0.5 * z * z) / (std::sqrt(2.0 * std::numbers::pi) * out.share);
+  const dvec3 level = g.axis - glm::dot(g.axis, n) * n;  // the axis's direction along the horizon
+  const double level_length = glm::length(level);
+  if (lift < 1e-9 || level_length < 1e-9) {
+    out.axis = g.axis;
+    return out;
+  }
+  const double e = std::min(e0 + lift, 0.5 * std::numbers::pi);
+  out.axis = std::cos(e) * (level / level_length) + std::sin(e) * n;
+  return out;
+}
 
 namespace {
 // Both lobes of `thread` widened by the variance `widen2`: γ² → γ² + widen2.
@@ -54,13 +74,14 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
   for (const auto& g : sgs) {
     double q = (1.0 - fabric.threads[0].coverage - fabric.threads[1].coverage) * std::max(glm::dot(frame.n, wo), 0.0);
     dvec3 sum(0.0);
-    const bool lit = glm::dot(frame.n, g.axis) > 0.0 && glm::dot(frame.n, wo) > 0.0;
+    const HorizonLight light = horizon_light(g, frame.n);
+    const bool lit = light.share > 0.0 && glm::dot(frame.n, light.axis) > 0.0 && glm::dot(frame.n, wo) > 0.0;
     for (int j = 0; j < 2; ++j) {
       double p_sum = 0.0;
       dvec3 thread_sum(0.0);
       for (int k = 0; k < bsdf.sample_count(j); ++k) {
         const SampleTerms s = sample_terms(fabric.threads[j], frame, j, bsdf.tilt(j, k), bsdf.tilt_spread(j, k),
-                                           weave_lobe_widening(g.sharpness), g.axis, wo);
+                                           weave_lobe_widening(g.sharpness), light.axis, wo);
         p_sum += s.p;
         thread_sum += s.value;
       }
@@ -68,7 +89,7 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
       sum += fabric.threads[j].coverage * thread_sum / double(bsdf.sample_count(j));
     }
     t.q.push_back(q);
-    if (lit && q > kQFloor) t.fabric += sg_power(g) * sum / q;
+    if (lit && q > kQFloor) t.fabric += light.share * sg_power(g) * sum / q;
   }
   return t;
 }
@@ -81,12 +102,14 @@ dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const 
   const double alpha = weave_tilt(bsdf.fabric(), WeaveSample{thread, arc});
   dvec3 resolved(0.0);
   if (glm::dot(frame.n, wo) <= 0.0) return resolved;
-  for (size_t k = 0; k < sgs.size(); ++k)
-    if (terms.q.at(k) > kQFloor && glm::dot(frame.n, sgs[k].axis) > 0.0)
-      resolved += sg_power(sgs[k]) *
+  for (size_t k = 0; k < sgs.size(); ++k) {
+    const HorizonLight light = horizon_light(sgs[k], frame.n);
+    if (terms.q.at(k) > kQFloor && light.share > 0.0 && glm::dot(frame.n, light.axis) > 0.0)
+      resolved += light.share * sg_power(sgs[k]) *
                   sample_terms(bsdf.fabric().threads[thread], frame, thread, alpha, tilt_spread,
-                               weave_lobe_widening(sgs[k].sharpness), sgs[k].axis, wo).value /
+                               weave_lobe_widening(sgs[k].sharpness), light.axis, wo).value /
                   terms.q[k];
+  }
   return resolved;
 }
 

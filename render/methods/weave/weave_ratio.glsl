@@ -1,14 +1,35 @@
 // The weave layer's factor (methods/weave/weave_ratio.h): the resolved sample's response to the SGs
 // taken as point lights (each lobe widened by the SG's own spread), over the fabric-level response
 // to the same lights at the same pixel, so that the factor averages to 1 over the repeat and
-// modulates what the fabric-level method drew. Needs microcylinder.glsl and weave_layout.glsl
-// before it, and MAX_SGS.
+// modulates what the fabric-level method drew. Needs microcylinder.glsl, erf.glsl and
+// weave_layout.glsl before it, and MAX_SGS.
 uniform int u_sg_count;
 uniform vec3 u_sg_axis[MAX_SGS];
 uniform vec3 u_sg_power[MAX_SGS];
 uniform float u_sg_widen2[MAX_SGS];  // weave_lobe_widening(λ_k)
 // ClothBsdf::tilt_spread of each tangent sample, laid out as u_tilts (microcylinder.glsl).
 uniform vec4 u_weave_tilt_spreads[MAX_TANGENT_SAMPLES / 2];
+
+// SG k as a point light seen from a surface of normal n: its part above the horizon (share F of its
+// power) at that part's mean elevation (weave_ratio.h's horizon_light); σ = 1/√λ = 2·√widen2.
+struct HorizonLight {
+  vec3 axis;
+  float share;
+};
+HorizonLight horizon_light(int k, vec3 n) {
+  vec3 xi = u_sg_axis[k];
+  float sigma = 2.0 * sqrt(u_sg_widen2[k]);
+  float c = clamp(dot(xi, n), -1.0, 1.0);
+  float e0 = asin(c), z = e0 / sigma;
+  float share = 0.5 * erfc_nr(-z / sqrt(2.0));
+  if (share <= 0.0) return HorizonLight(xi, 0.0);
+  float lift = sigma * exp(-0.5 * z * z) / (sqrt(2.0 * PI) * share);
+  vec3 level = xi - c * n;
+  float level_length = length(level);
+  if (lift < 1e-9 || level_length < 1e-9) return HorizonLight(xi, share);
+  float e = min(e0 + lift, 0.5 * PI);
+  return HorizonLight(cos(e) * (level / level_length) + sin(e) * n, share);
+}
 
 // What thread j's sample at tilt α needs of ω_o alone, taken once for all the SGs: its frame
 // (t, n', axis) and ω_o's fiber angles in it; `lit` false where ω_o is below the surface.
@@ -44,10 +65,12 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
   // One sweep over the samples, each sample's view taken once for all the SGs.
   vec3 sums[MAX_SGS];
   float qs[MAX_SGS];
+  HorizonLight lights[MAX_SGS];
   float gap_q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
   for (int k = 0; k < u_sg_count; ++k) {
     sums[k] = vec3(0.0);
     qs[k] = gap_q;
+    lights[k] = horizon_light(k, n);
   }
   for (int j = 0; j < 2; ++j) {
     float weight = u_threads[j].coverage / float(u_threads[j].samples);
@@ -56,7 +79,7 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
       ResolvedView view = resolved_view(n, u, j, thread_tilt(i), wo);
       float spread = u_weave_tilt_spreads[i >> 2][i & 3];
       for (int k = 0; k < u_sg_count; ++k) {
-        vec3 wi = u_sg_axis[k];
+        vec3 wi = lights[k].axis;
         qs[k] += weight * projection_term(fiber_angles_in(view.t, view.np, view.axis, wi), view.fo);
         sums[k] += weight * resolved_scattering(view, n, j, wi, u_sg_widen2[k], spread);
       }
@@ -66,7 +89,7 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
   for (int g = 0; g < Q_GROUPS; ++g) q[g] = vec4(0.0);
   for (int k = 0; k < u_sg_count; ++k) {
     q[k >> 2][k & 3] = qs[k];
-    if (qs[k] > Q_FLOOR) fabric += u_sg_power[k] * sums[k] / qs[k];
+    if (qs[k] > Q_FLOOR && lights[k].share > 0.0) fabric += lights[k].share * u_sg_power[k] * sums[k] / qs[k];
   }
 }
 
@@ -81,7 +104,9 @@ vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spr
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
       if (q[g][c] <= Q_FLOOR) continue;
-      resolved += u_sg_power[k] * resolved_scattering(view, n, j, u_sg_axis[k], u_sg_widen2[k], tilt_spread) / q[g][c];
+      HorizonLight light = horizon_light(k, n);
+      if (light.share <= 0.0) continue;
+      resolved += light.share * u_sg_power[k] * resolved_scattering(view, n, j, light.axis, u_sg_widen2[k], tilt_spread) / q[g][c];
     }
   return resolved;
 }

@@ -2,8 +2,9 @@
 // The weave layer (docs/design.md §2, "Resolved weave") on the CPU: the C++ twin of
 // weave_ratio.glsl. A close-up shows each thread where it lies; the
 // layer gets there by modulating what a fabric-level method drew with
-//   R(x) = Σ_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k)
-//        / Σ_k P_k · integrand(ξ_k, ω_o)     (the fabric-level response to the same lights at x),
+//   R(x) = Σ_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k:
+//        / Σ_k P_k · integrand(ξ_k, ω_o)      its part above the horizon, horizon_light)
+//                                             (the fabric-level response to the same lights at x),
 // whose average over the repeat is 1: the layer adds the weave's detail and keeps every
 // method's fabric-level accuracy and shadows. Eased to 1 by the pixel's footprint (weave_detail).
 #include <span>
@@ -17,10 +18,12 @@ namespace weft {
 
 // Footprints in threads per pixel (repeats per pixel × the layout's rows: a repeat holds `rows`
 // yarns across each row band, so its finest detail is a thread, whatever the weave) where the layer
-// is whole (≤ first) and where it is gone (≥ second): a thread over 4 pixels shows its yarn, one
-// under a pixel is the fabric-level average. Measured in repeats instead, a five-end satin's
-// floats would still be drawn at 2–3 threads a pixel, 4 samples a pixel, as moiré.
-inline constexpr double kWeaveFineFootprint = 1.0 / 4.0, kWeaveCoarseFootprint = 1.0;
+// is whole (≤ first) and where it is gone (≥ second). The box-filtered layout holds a pixel of up to
+// two threads (weave_coverage's floats), and a pixel of a thread or two is still far from the
+// repeat's average: fading out from half a thread a pixel, a grazing satin close-up's far part was
+// 22 % off the resolved reference, against 7.5 % from here. Measured in repeats instead, a five-end
+// satin's floats would still be drawn at 5–10 threads a pixel.
+inline constexpr double kWeaveFineFootprint = 1.0 / 2.0, kWeaveCoarseFootprint = 2.0;
 // The footprint in threads of a pixel covering `repeats` repeats of `layout`.
 inline double weave_thread_footprint(const WeaveLayout& layout, double repeats) { return repeats * layout.rows(); }
 // Below this fabric-level response the factor is 1; above the cap it is clamped.
@@ -32,13 +35,25 @@ double weave_lobe_widening(double sharpness);
 // The fabric with both lobes of both threads widened by `widen2` (radians²).
 Fabric widened_fabric(Fabric fabric, double widen2);
 
+// An SG as a point light seen from a surface of normal n: the part of it above the surface's horizon,
+// at that part's mean elevation. Across the horizon the SG is a Gaussian in elevation e of σ = 1/√λ
+// about its axis's e_0; the part above has the share F = Φ(e_0/σ) of its power and the mean
+// ē = e_0 + σ·φ(e_0/σ)/F. A sharp light just above the horizon taken whole at its axis would light
+// every thread at grazing incidence with all its power; half of it lies below the surface.
+struct HorizonLight {
+  dvec3 axis{0.0, 0.0, 1.0};  // unit, at elevation ē (the SG's own axis where the horizon is far)
+  double share = 0.0;         // F
+};
+HorizonLight horizon_light(const SphericalGaussian& g, const dvec3& n);
+
 // The tangent samples per thread of a pixel's fabric-level terms: each sample's lobes are widened
 // by the tilts of the arc it stands for (as seed 000's samples are, iwasaki.cpp's
 // sample_lobe_width), so a few stand for the whole float, satin's 2.5° lobe included.
 inline constexpr int kWeavePixelSamples = 16;
 
-// A pixel's fabric-level terms: its response to the SGs as point lights, Σ_k P_k·integrand(ξ_k, ω_o)
-// with each lobe widened by the SG's spread and each sample's by its arc's tilts, and each SG's Q.
+// A pixel's fabric-level terms: its response to the SGs as point lights (horizon_light: F_k·P_k
+// along ξ'_k), Σ_k F_k P_k·integrand(ξ'_k, ω_o) with each lobe widened by the SG's spread and each
+// sample's by its arc's tilts, and each light's Q.
 // Per pixel, not per vertex: up close a triangle spans tens of degrees of view, and the sharp lobes
 // of an interpolated response miss the pixel's own (the factor's mean over a repeat was off by
 // tens of per cent on a 16×16 swatch).
