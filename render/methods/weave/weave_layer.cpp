@@ -56,13 +56,11 @@ size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, gl
   if (!(tiles_per_uv.x > 0.0 && tiles_per_uv.y > 0.0 && std::isfinite(tiles_per_uv.x) && std::isfinite(tiles_per_uv.y)))
     throw GpuError("weave layer: the weave's repeats per UV unit must be positive and finite");
   auto o = std::make_unique<Object>();
+  o->source = &mesh;
   o->mesh = std::make_unique<GpuMesh>(mesh);
   std::vector<glm::vec3> uv(mesh.uvs.size());
   for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(mesh.uvs[i], 0.0);
   o->mesh->add_attribute(kUvAttribute, uv);
-  o->pass = std::make_unique<VertexPass>(mesh);
-  if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
-  if (visible_) o->marks = visible_->add_mesh(mesh, *o->mesh, o->pass->texels());
   o->tiles_per_uv = tiles_per_uv;
   o->box_min = o->box_max = mesh.positions.at(0);
   for (const auto& p : mesh.positions) {
@@ -128,6 +126,15 @@ void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf) 
   glUniform4fv(program.uniform("u_weave_tilt_spreads"), 2 * kMaxTangentSamples / 4, spreads.data());
 }
 
+VertexPass& WeaveLayer::vertex_pass(Object& o) {
+  if (!o.pass) {
+    o.pass = std::make_unique<VertexPass>(*o.source);
+    if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
+    if (visible_) o.marks = visible_->add_mesh(*o.source, *o.mesh, o.pass->texels());
+  }
+  return *o.pass;
+}
+
 void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
   Object& o = *objects_.at(handle);
   if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
@@ -154,12 +161,13 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     }
   };
   if (p.pass) {
+    VertexPass& pass = vertex_pass(o);
     set_up(*p.pass);
     if (visible_ && visible_only_)
-      visible_->mark_for(*o.pass, o.marks, vp);
+      visible_->mark_for(pass, o.marks, vp);
     else
-      o.pass->clear_marks();  // culling switched off after frames with it on: every vertex again
-    o.pass->run(*p.pass, 0, groups + 1);
+      pass.clear_marks();  // culling switched off after frames with it on: every vertex again
+    pass.run(*p.pass, 0, groups + 1);
   }
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

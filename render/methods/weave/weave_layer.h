@@ -34,7 +34,7 @@ void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf);
 
 class WeaveLayer {
 public:
-  // One cloth object: its mesh (kept by the caller), fabric and repeats per UV unit
+  // One cloth object: its mesh (kept by the caller, which must outlive the layer), fabric and repeats per UV unit
   // (scene/weave_scale.h). Returns its handle. Needs a current GLES 3 context.
   size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv);
   // A knob edit: the factor follows the new colours and gloss.
@@ -54,9 +54,12 @@ public:
 
 private:
   struct Object {
+    const TriangleMesh* source = nullptr;
     std::unique_ptr<GpuMesh> mesh;
-    std::unique_ptr<VertexPass> pass;  // the per-vertex terms
-    size_t marks = 0;                  // its mesh in visible_, where there is one
+    // The per-vertex terms and the mesh's marks in visible_: made on the first draw that takes its
+    // terms per vertex, so that a layer over `iwasaki` holds no vertex-pass target.
+    std::unique_ptr<VertexPass> pass;
+    size_t marks = 0;
     std::unique_ptr<ClothBsdf> bsdf;
     std::unique_ptr<WeaveLayout> layout;
     glm::dvec2 tiles_per_uv{1.0};
@@ -67,6 +70,7 @@ private:
     std::unique_ptr<GlProgram> pass, draw;  // pass: with vertex terms only
   };
   const Programs& programs(int q_groups, bool vertex_terms);
+  VertexPass& vertex_pass(Object& o);
   std::vector<std::unique_ptr<Object>> objects_;
   std::map<std::pair<int, bool>, Programs> programs_;  // by Q_GROUPS and vertex terms
   std::unique_ptr<VisibleVertices> visible_;           // where supported
