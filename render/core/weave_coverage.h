@@ -37,8 +37,9 @@ struct WeaveCoverage {
 };
 
 // Rows and floats farther than this from the footprint's centre are not visited: the layer fades
-// the weave out by one thread a pixel (methods/weave/weave_ratio.h), so a footprint spans at most
-// two rows and two floats where it is drawn at all.
+// the weave out by two threads a pixel (methods/weave/weave_ratio.h), so where it is drawn at all
+// a footprint reaches at most a thread, a row, either side of its centre; a float starts at most
+// one float before the one under the centre.
 inline constexpr int kWeaveCoverageReach = 2;
 
 WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy);
