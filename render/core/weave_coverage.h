@@ -1,7 +1,7 @@
 #pragma once
 // The weave layout (core/weave_layout.h) box-filtered over one pixel: how much of the pixel each
 // thread covers, and where along its float, so that a yarn's edge covers a pixel in part as it
-// does in a supersampled image, for one shading evaluation per thread present. The pixel's
+// does in a supersampled image, for one shading evaluation per float present. The pixel's
 // footprint is the parallelogram st ± ½dx ± ½dy (tile-space derivatives across one pixel); its
 // weight along s and along t is each a box of |dx|'s component convolved with a box of |dy|'s
 // (exact for the parallelogram's marginals), and a rectangle of the layout (one float) gets the
@@ -15,8 +15,9 @@
 
 namespace weft {
 
-// The floats a pixel's shading visits: a footprint of at most a thread (where the layer draws at
-// all) holds one or two of each thread, four where it straddles a float's corner.
+// The floats a pixel's shading visits, largest first: a footprint of a thread or less holds one or
+// two of each thread, four where it straddles a float's corner; up to two threads a pixel (where
+// the layer still draws at all) the smaller floats' share goes to the kept ones (piece_weight).
 inline constexpr int kWeaveCoveragePieces = 4;
 
 // One float's part of the pixel.

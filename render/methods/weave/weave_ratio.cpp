@@ -96,14 +96,16 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
 
 namespace {
 // Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at `arc` along its float, its lobes widened
-// by `tilt_spread` (RMS, radians) besides each SG's own spread.
+// by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point light lights[k]
+// (its horizon_light at frame.n).
 dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, int thread, double arc,
-                        double tilt_spread, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
+                        double tilt_spread, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs,
+                        std::span<const HorizonLight> lights) {
   const double alpha = weave_tilt(bsdf.fabric(), WeaveSample{thread, arc});
   dvec3 resolved(0.0);
   if (glm::dot(frame.n, wo) <= 0.0) return resolved;
   for (size_t k = 0; k < sgs.size(); ++k) {
-    const HorizonLight light = horizon_light(sgs[k], frame.n);
+    const HorizonLight& light = lights[k];
     if (terms.q.at(k) > kQFloor && light.share > 0.0 && glm::dot(frame.n, light.axis) > 0.0)
       resolved += light.share * sg_power(sgs[k]) *
                   sample_terms(bsdf.fabric().threads[thread], frame, thread, alpha, tilt_spread,
@@ -111,6 +113,14 @@ dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const 
                   terms.q[k];
   }
   return resolved;
+}
+
+// Each SG's horizon_light at normal n: what every float's shading in a pixel takes.
+std::vector<HorizonLight> horizon_lights(std::span<const SphericalGaussian> sgs, const dvec3& n) {
+  std::vector<HorizonLight> lights;
+  lights.reserve(sgs.size());
+  for (const auto& g : sgs) lights.push_back(horizon_light(g, n));
+  return lights;
 }
 
 dvec3 ratio_to(const dvec3& resolved, const dvec3& fabric) {
@@ -141,20 +151,22 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
                   glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
   const WeaveSample w = layout.at(st.x, st.y);
   if (w.thread < 0) return dvec3(0.0);
-  return ratio_to(resolved_response(bsdf, frame, wo, w.thread, w.arc, 0.0, terms, sgs), terms.fabric);
+  return ratio_to(resolved_response(bsdf, frame, wo, w.thread, w.arc, 0.0, terms, sgs, horizon_lights(sgs, frame.n)),
+                  terms.fabric);
 }
 
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
                            std::span<const SphericalGaussian> sgs) {
   const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
+  const std::vector<HorizonLight> lights = horizon_lights(sgs, frame.n);
   dvec3 resolved(0.0);
   for (int i = 0; i < kWeaveCoveragePieces; ++i) {
     const WeavePiece& p = c.piece[i];
     if (p.thread < 0) break;
     resolved += piece_weight(c, i) * resolved_response(bsdf, frame, wo, p.thread, p.arc,
                                                        weave_tilt_spread(bsdf.fabric(), p.thread, p.arc, c.arc_spread[p.thread]),
-                                                       terms, sgs);
+                                                       terms, sgs, lights);
   }
   return ratio_to(resolved, terms.fabric);
 }

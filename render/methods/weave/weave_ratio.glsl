@@ -31,6 +31,11 @@ HorizonLight horizon_light(int k, vec3 n) {
   return HorizonLight(cos(e) * (level / level_length) + sin(e) * n, share);
 }
 
+// Each SG's horizon_light at n, into lights[0 … u_sg_count − 1]: taken once a pixel for all its floats.
+void horizon_lights(vec3 n, out HorizonLight lights[MAX_SGS]) {
+  for (int k = 0; k < u_sg_count; ++k) lights[k] = horizon_light(k, n);
+}
+
 // What thread j's sample at tilt α needs of ω_o alone, taken once for all the SGs: its frame
 // (t, n', axis) and ω_o's fiber angles in it; `lit` false where ω_o is below the surface.
 struct ResolvedView {
@@ -66,11 +71,11 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
   vec3 sums[MAX_SGS];
   float qs[MAX_SGS];
   HorizonLight lights[MAX_SGS];
+  horizon_lights(n, lights);
   float gap_q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
   for (int k = 0; k < u_sg_count; ++k) {
     sums[k] = vec3(0.0);
     qs[k] = gap_q;
-    lights[k] = horizon_light(k, n);
   }
   for (int j = 0; j < 2; ++j) {
     float weight = u_threads[j].coverage / float(u_threads[j].samples);
@@ -94,8 +99,10 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
 }
 
 // Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at arc position `arc` of its float, its lobes
-// widened by `tilt_spread` (RMS, radians) besides each SG's own spread.
-vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 q[Q_GROUPS]) {
+// widened by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point light
+// lights[k] (horizon_lights at n).
+vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 q[Q_GROUPS],
+                       HorizonLight lights[MAX_SGS]) {
   ResolvedView view = resolved_view(n, u, j, curve_tilt(j, arc), wo);
   vec3 resolved = vec3(0.0);
   if (!view.lit) return resolved;
@@ -104,9 +111,8 @@ vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spr
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
       if (q[g][c] <= Q_FLOOR) continue;
-      HorizonLight light = horizon_light(k, n);
-      if (light.share <= 0.0) continue;
-      resolved += light.share * u_sg_power[k] * resolved_scattering(view, n, j, light.axis, u_sg_widen2[k], tilt_spread) / q[g][c];
+      if (lights[k].share <= 0.0) continue;
+      resolved += lights[k].share * u_sg_power[k] * resolved_scattering(view, n, j, lights[k].axis, u_sg_widen2[k], tilt_spread) / q[g][c];
     }
   return resolved;
 }
@@ -122,7 +128,9 @@ vec3 ratio_to(vec3 resolved, vec3 fabric) {
 vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 q[Q_GROUPS]) {
   WeaveSample w = weave_at(st);
   if (w.thread < 0) return vec3(0.0);
-  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, 0.0, q), fabric);
+  HorizonLight lights[MAX_SGS];
+  horizon_lights(n, lights);
+  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, 0.0, q, lights), fabric);
 }
 
 // The RMS tilt of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
@@ -150,12 +158,14 @@ float weave_tilt_spread(int j, float arc, float arc_spread) {
 vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx, highp vec2 dy, vec3 fabric,
                           vec4 q[Q_GROUPS]) {
   WeaveCoverage c = weave_coverage(st, dx, dy);
+  HorizonLight lights[MAX_SGS];
+  horizon_lights(n, lights);
   vec3 resolved = vec3(0.0);
   for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
     int j = c.piece_thread[i];
     if (j < 0) break;
     float arc = c.piece_arc[i];
-    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), q);
+    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), q, lights);
   }
   return ratio_to(resolved, fabric);
 }
