@@ -14,8 +14,14 @@
 //    per pixel (the texture moving across the screen counts), and at fixed surface points (each
 //    pixel's surface point, found by a ray, looked up where the frame before showed it: what is
 //    left is shimmer, and the view's own small change).
+// A scene's named close-up (the showroom's, framed for the kiosk's 480 lines) is moved on toward
+// its target until a repeat spans 24 pixels of the accuracy image too.
 // WEFT_WEAVE_CASES picks cases, WEFT_WEAVE_SUPERSAMPLE the reference's rays per pixel along each axis ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table;
-// WEFT_WEAVE_FLICKER_ONLY skips the references, accuracy and speed (minutes instead of an hour).
+// WEFT_WEAVE_FLICKER_ONLY skips the references, accuracy and speed (minutes instead of an hour);
+// WEFT_WEAVE_IMAGES=DIR writes each case's reference and each rung's frame with the layer (EXR and
+// PNG); WEFT_WEAVE_CHART=FILE.png draws the close-up's speed against accuracy (each rung alone and
+// with the layer, error over the whole close-up), and WEFT_WEAVE_CHART_FROM=TABLE.md[,…] draws it
+// from tables this bench wrote, rendering nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +31,8 @@
 #include <sstream>
 
 #include "bake/scene/scene_bake.h"
+#include "bench/chart.h"
+#include "image/image.h"
 #include "measure/image_metrics.h"
 #include "frame/frame_inputs.h"
 #include "frame/frame_render.h"
@@ -141,9 +149,61 @@ std::vector<bool> resolved_pixels(const RayScene& rays, const Scene& scene, cons
     }
   return out;
 }
+
+// The close-up the accuracy image is measured at: the scene's close-up (named, or its camera
+// moved in), then moved on toward its target until a repeat spans 24 pixels of `height` lines.
+Camera accuracy_closeup(const Scene& scene, const std::map<std::string, Fabric>& fabrics, int height) {
+  Scene moved = scene;
+  if (moved.closeup) moved.camera = *moved.closeup;
+  moved.closeup.reset();
+  return closeup_camera(moved, fabrics, height);
+}
+
+// The chart's two points of one table row: the rung alone and with the layer, ms at 640×480
+// against the error over the whole close-up.
+void add_chart_points(std::vector<bench::ChartPoint>& points, const std::string& rung, double ms_alone, double alone,
+                      double ms_woven, double woven) {
+  if (std::isfinite(ms_alone) && std::isfinite(alone)) points.push_back({rung, ms_alone, alone});
+  if (std::isfinite(ms_woven) && std::isfinite(woven)) points.push_back({rung + " + weave", ms_woven, woven});
+}
+
+// The chart's points from a table this bench wrote (its header and rule lines skipped).
+std::vector<bench::ChartPoint> chart_points_from_table(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::vector<bench::ChartPoint> points;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cell;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, '|');) cell.push_back(c);
+    // "| scene | fabric | repeat px | rung | vs fabric level | alone | + weave | ≥ 16 px | ms alone | ms + weave | …"
+    if (cell.size() < 11 || cell[1].find("scene") != std::string::npos || cell[1].find("---") != std::string::npos) continue;
+    auto number = [](const std::string& c) { return std::strtod(c.c_str(), nullptr); };
+    std::string rung = cell[4];
+    rung.erase(0, rung.find_first_not_of(' '));
+    rung.erase(rung.find_last_not_of(' ') + 1);
+    add_chart_points(points, rung, number(cell[9]), number(cell[6]), number(cell[10]), number(cell[7]));
+  }
+  return points;
+}
+
+const char* kChartTitle = "weave up close: ms/frame at 640x480 vs relative RMSE against the resolved reference";
 }  // namespace
 
 TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
+  const char* chart_file = std::getenv("WEFT_WEAVE_CHART");
+  std::vector<bench::ChartPoint> chart;
+  if (const char* tables = std::getenv("WEFT_WEAVE_CHART_FROM")) {
+    ASSERT_NE(chart_file, nullptr) << "WEFT_WEAVE_CHART_FROM needs WEFT_WEAVE_CHART";
+    std::stringstream list(tables);
+    for (std::string t; std::getline(list, t, ',');)
+      for (const auto& p : chart_points_from_table(t)) chart.push_back(p);
+    ASSERT_FALSE(chart.empty()) << "no rows in " << tables;
+    bench::write_chart_png(chart_file, chart, kChartTitle);
+    return;
+  }
+  const char* images = std::getenv("WEFT_WEAVE_IMAGES");
+  if (images) std::filesystem::create_directories(images);
   constexpr int kW = 160, kH = 120;
   std::ostringstream table;
   table << "| scene | fabric | repeat px | rung | rung vs fabric-level reference | error alone | error + weave | error + weave, repeat ≥ 16 px | ms alone | ms + weave | ratio | "
@@ -153,7 +213,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     FrameInputs in = load_frame_inputs({kAssets, c.scene, c.fabric, "", ""});
     const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
     const Camera far = in.scene.camera;
-    const Camera close = closeup_camera(in.scene, in.fabrics, kH);
+    const Camera close = accuracy_closeup(in.scene, in.fabrics, kH);
     in.scene.camera = close;
     // The repeat's size in pixels at the close-up's target, on the accuracy image.
     double repeat_px = 0.0;
@@ -175,6 +235,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     ro.supersample = std::getenv("WEFT_WEAVE_SUPERSAMPLE") ? std::atoi(std::getenv("WEFT_WEAVE_SUPERSAMPLE")) : 8;
     const auto t0 = std::chrono::steady_clock::now();
     ReferenceRenderResult ref, fabric_ref;
+    double exposure = 1.0;  // the reference's, metered on its cloth: the same for every image of the case
     if (!flicker_only) {
       ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
       std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
@@ -182,6 +243,14 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       ro.resolved_weave = false;
       ro.supersample = 1;
       fabric_ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+      if (images) {
+        std::vector<bool> cloth(ref.kinds.size());
+        for (size_t i = 0; i < cloth.size(); ++i) cloth[i] = ref.kinds[i] == PixelKind::cloth;
+        exposure = auto_exposure(ref.image, cloth);
+        const std::filesystem::path stem = std::filesystem::path(images) / (c.scene + "_" + c.fabric + "_reference");
+        write_exr(ref.image, stem.string() + ".exr");
+        write_png(ref.image, stem.string() + ".png", exposure);
+      }
     }
     const RayScene rays(in.scene);
     std::vector<bool> resolved = resolved_pixels(rays, in.scene, in.fabrics, close, kW, kH, 16.0);
@@ -208,6 +277,11 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       const double fabric_level = flicker_only ? nan : bench::cloth_error(alone_image, fabric_ref.image, fabric_ref.kinds).relative_rmse;
       const Image woven_image = frame(close, kW, kH, 0, true).image;
       const double woven = flicker_only ? nan : bench::cloth_error(woven_image, ref.image, ref.kinds).relative_rmse;
+      if (images && !flicker_only) {
+        const std::filesystem::path stem = std::filesystem::path(images) / (c.scene + "_" + c.fabric + "_" + method + "_weave");
+        write_exr(woven_image, stem.string() + ".exr");
+        write_png(woven_image, stem.string() + ".png", exposure);
+      }
       const bench::MaskedError woven_resolved = flicker_only ? bench::MaskedError{} : bench::masked_error(woven_image, ref.image, resolved);
       const int speed_frames = method == "iwasaki" ? 1 : 5;
       const bool timed = !quick && !flicker_only;
@@ -239,9 +313,11 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
                     woven, woven_resolved.relative_rmse, woven_resolved.pixels, ms_alone, ms_woven, ms_woven / ms_alone, far_change, flicker[0], flicker[1], at_points[0], at_points[1]);
       table << row;
       std::cout << row << std::flush;
+      add_chart_points(chart, method, ms_alone, alone, ms_woven, woven);
       EXPECT_EQ(far_change, 0.0) << c.scene << " " << method << ": the layer changed the distant view";
     }
   }
   std::cout << "\n" << table.str();
   if (const char* out = std::getenv("WEFT_WEAVE_OUT")) std::ofstream(out) << table.str();
+  if (chart_file && !chart.empty()) bench::write_chart_png(chart_file, chart, kChartTitle);
 }
