@@ -16,7 +16,8 @@
 //    left is shimmer, and the view's own small change).
 // A scene's named close-up (the showroom's, framed for the kiosk's 480 lines) is moved on toward
 // its target until a repeat spans 24 pixels of the accuracy image too.
-// WEFT_WEAVE_CASES picks cases, WEFT_WEAVE_SUPERSAMPLE the reference's rays per pixel along each axis ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table;
+// WEFT_WEAVE_CASES picks cases (SCENE:FABRIC, FABRIC empty for the scene's own, and
+// @EX,EY,EZ:TX,TY,TZ[:FOV] after it for a close-up of one's own), WEFT_WEAVE_SUPERSAMPLE the reference's rays per pixel along each axis ("swatch:linen_plain,showroom:"); WEFT_WEAVE_OUT writes the table;
 // WEFT_WEAVE_FLICKER_ONLY skips the references, accuracy and speed (minutes instead of an hour);
 // WEFT_WEAVE_IMAGES=DIR writes each case's reference and each rung's frame with the layer (EXR and
 // PNG); WEFT_WEAVE_CHART=FILE.png draws the close-up's speed against accuracy (each rung alone and
@@ -24,7 +25,10 @@
 // from tables this bench wrote, rendering nothing.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -48,6 +52,7 @@ const std::filesystem::path kAssets = WEFT_SOURCE_ASSETS;
 
 struct Case {
   std::string scene, fabric;  // fabric empty: the scene's own
+  std::optional<Camera> closeup;  // "@EX,EY,EZ:TX,TY,TZ[:FOV]": in place of the scene's close-up
 };
 
 std::vector<Case> cases() {
@@ -58,9 +63,28 @@ std::vector<Case> cases() {
   std::vector<Case> out;
   std::stringstream ss(list);
   std::string item;
-  while (std::getline(ss, item, ',')) {
-    const auto colon = item.find(':');
-    out.push_back({item.substr(0, colon), colon == std::string::npos ? "" : item.substr(colon + 1)});
+  // Cases are split at commas; a camera's commas are inside its "@…" part, so a case runs on to the
+  // next item that names a scene (holds no '@' part of its own and starts with a letter).
+  std::vector<std::string> items;
+  while (std::getline(ss, item, ','))
+    if (!items.empty() && items.back().find('@') != std::string::npos && !std::isalpha(static_cast<unsigned char>(item[0])))
+      items.back() += "," + item;
+    else
+      items.push_back(item);
+  for (const std::string& it : items) {
+    const auto at = it.find('@');
+    const std::string name = it.substr(0, at);
+    const auto colon = name.find(':');
+    Case c{name.substr(0, colon), colon == std::string::npos ? "" : name.substr(colon + 1), std::nullopt};
+    if (at != std::string::npos) {
+      Camera cam;
+      cam.fov_deg = std::nan("");  // none given: the scene camera's
+      if (std::sscanf(it.c_str() + at + 1, "%lf,%lf,%lf:%lf,%lf,%lf:%lf", &cam.position.x, &cam.position.y, &cam.position.z, &cam.target.x,
+                      &cam.target.y, &cam.target.z, &cam.fov_deg) < 6)
+        throw std::runtime_error("WEFT_WEAVE_CASES: '" + it + "': the camera is @EX,EY,EZ:TX,TY,TZ[:FOV]");
+      c.closeup = cam;
+    }
+    out.push_back(c);
   }
   return out;
 }
@@ -211,6 +235,12 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases()) {
     FrameInputs in = load_frame_inputs({kAssets, c.scene, c.fabric, "", ""});
+    if (c.closeup) {
+      Camera cam = *c.closeup;
+      cam.up = in.scene.camera.up;
+      if (!std::isfinite(cam.fov_deg)) cam.fov_deg = in.scene.camera.fov_deg;
+      in.scene.closeup = cam;
+    }
     const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
     const Camera far = in.scene.camera;
     const Camera close = accuracy_closeup(in.scene, in.fabrics, kH);
