@@ -27,13 +27,12 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <optional>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "app/cli_parse.h"
 #include "bake/scene/scene_bake.h"
 #include "bench/chart.h"
 #include "image/image.h"
@@ -52,7 +51,7 @@ const std::filesystem::path kAssets = WEFT_SOURCE_ASSETS;
 
 struct Case {
   std::string scene, fabric;  // fabric empty: the scene's own
-  std::optional<Camera> closeup;  // "@EX,EY,EZ:TX,TY,TZ[:FOV]": in place of the scene's close-up
+  std::string closeup;  // "EX,EY,EZ:TX,TY,TZ[:FOV]" after '@' (app/cli_parse.h parse_camera): in place of the scene's close-up
 };
 
 std::vector<Case> cases() {
@@ -75,16 +74,8 @@ std::vector<Case> cases() {
     const auto at = it.find('@');
     const std::string name = it.substr(0, at);
     const auto colon = name.find(':');
-    Case c{name.substr(0, colon), colon == std::string::npos ? "" : name.substr(colon + 1), std::nullopt};
-    if (at != std::string::npos) {
-      Camera cam;
-      cam.fov_deg = std::nan("");  // none given: the scene camera's
-      if (std::sscanf(it.c_str() + at + 1, "%lf,%lf,%lf:%lf,%lf,%lf:%lf", &cam.position.x, &cam.position.y, &cam.position.z, &cam.target.x,
-                      &cam.target.y, &cam.target.z, &cam.fov_deg) < 6)
-        throw std::runtime_error("WEFT_WEAVE_CASES: '" + it + "': the camera is @EX,EY,EZ:TX,TY,TZ[:FOV]");
-      c.closeup = cam;
-    }
-    out.push_back(c);
+    out.push_back({name.substr(0, colon), colon == std::string::npos ? "" : name.substr(colon + 1),
+                   at == std::string::npos ? "" : it.substr(at + 1)});
   }
   return out;
 }
@@ -228,6 +219,12 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
   }
   const char* images = std::getenv("WEFT_WEAVE_IMAGES");
   if (images) std::filesystem::create_directories(images);
+  // DIR/NAME.exr and DIR/NAME.png (at `exposure`) under WEFT_WEAVE_IMAGES.
+  auto write_image = [&](const Image& image, const std::string& name, double exposure) {
+    const std::filesystem::path stem = std::filesystem::path(images) / name;
+    write_exr(image, stem.string() + ".exr");
+    write_png(image, stem.string() + ".png", exposure);
+  };
   constexpr int kW = 160, kH = 120;
   std::ostringstream table;
   table << "| scene | fabric | repeat px | rung | rung vs fabric-level reference | error alone | error + weave | error + weave, repeat ≥ 16 px | ms alone | ms + weave | ratio | "
@@ -235,12 +232,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases()) {
     FrameInputs in = load_frame_inputs({kAssets, c.scene, c.fabric, "", ""});
-    if (c.closeup) {
-      Camera cam = *c.closeup;
-      cam.up = in.scene.camera.up;
-      if (!std::isfinite(cam.fov_deg)) cam.fov_deg = in.scene.camera.fov_deg;
-      in.scene.closeup = cam;
-    }
+    if (!c.closeup.empty()) in.scene.closeup = parse_camera(c.closeup, in.scene.camera, "WEFT_WEAVE_CASES");
     const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
     const Camera far = in.scene.camera;
     const Camera close = accuracy_closeup(in.scene, in.fabrics, kH);
@@ -277,9 +269,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
         std::vector<bool> cloth(ref.kinds.size());
         for (size_t i = 0; i < cloth.size(); ++i) cloth[i] = ref.kinds[i] == PixelKind::cloth;
         exposure = auto_exposure(ref.image, cloth);
-        const std::filesystem::path stem = std::filesystem::path(images) / (c.scene + "_" + c.fabric + "_reference");
-        write_exr(ref.image, stem.string() + ".exr");
-        write_png(ref.image, stem.string() + ".png", exposure);
+        write_image(ref.image, c.scene + "_" + c.fabric + "_reference", exposure);
       }
     }
     const RayScene rays(in.scene);
@@ -307,11 +297,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       const double fabric_level = flicker_only ? nan : bench::cloth_error(alone_image, fabric_ref.image, fabric_ref.kinds).relative_rmse;
       const Image woven_image = frame(close, kW, kH, 0, true).image;
       const double woven = flicker_only ? nan : bench::cloth_error(woven_image, ref.image, ref.kinds).relative_rmse;
-      if (images && !flicker_only) {
-        const std::filesystem::path stem = std::filesystem::path(images) / (c.scene + "_" + c.fabric + "_" + method + "_weave");
-        write_exr(woven_image, stem.string() + ".exr");
-        write_png(woven_image, stem.string() + ".png", exposure);
-      }
+      if (images && !flicker_only) write_image(woven_image, c.scene + "_" + c.fabric + "_" + method + "_weave", exposure);
       const bench::MaskedError woven_resolved = flicker_only ? bench::MaskedError{} : bench::masked_error(woven_image, ref.image, resolved);
       const int speed_frames = method == "iwasaki" ? 1 : 5;
       const bool timed = !quick && !flicker_only;
