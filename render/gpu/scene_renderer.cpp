@@ -39,6 +39,9 @@ struct SceneRenderer::Object {
   Fabric fabric;      // the cloth's, as drawn (knob edits included)
   size_t weave_handle = 0;
   const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
+  // The cloth's baked visibility, for the weave layer's lights (null: none baked).
+  const ObjectVisibility* sdf = nullptr;
+  const VisibilityMask* mask = nullptr;
 };
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method,
@@ -59,6 +62,11 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->fabric = object_fabric(o, fabrics[cloth]);
       obj->handle = cloth_->add_object(i, o.mesh, obj->fabric);
+      if (bundle_) {
+        obj->sdf = checked_visibility(*bundle_, i, o.mesh);
+        const auto m = bundle_->masks.find(i);
+        if (m != bundle_->masks.end() && m->second.vertex_count() == o.mesh.positions.size()) obj->mask = &m->second;
+      }
       if (o.textured() || o.normal_map) {
         const ThreadMaps maps = thread_maps_of(
             o,
@@ -110,11 +118,13 @@ SceneRenderer::PreparedLighting SceneRenderer::prepare_lighting(const SgLighting
   out.sgs = sgs;
   out.irradiance.resize(objects_.size());
   out.cloth.resize(objects_.size());
+  out.weave.resize(objects_.size());
   const SigmoidGainTable* kappa = bundle_ && bundle_->kappa ? &*bundle_->kappa : nullptr;
   for (size_t k = 0; k < objects_.size(); ++k) {
     const Object& o = *objects_[k];
     if (o.cloth) {
       out.cloth[k] = cloth_->prepare_lighting(o.handle, sgs);
+      if (weave_on_) out.weave[k] = weave_lighting_of(o, sgs);
       continue;
     }
     const auto& m = o.source->mesh;
@@ -138,11 +148,18 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
   if (backdrop_cube_) backdrop_cube_->fill(backdrop_sgs_);
   for (size_t k = 0; k < objects_.size(); ++k) {
     Object& o = *objects_[k];
-    if (!o.cloth)
+    if (!o.cloth) {
       o.mesh->set_vertex_colours(lighting.irradiance[k]);
-    else if (lighting.cloth[k])
-      cloth_->set_lighting(o.handle, sgs_, *lighting.cloth[k]);
+      continue;
+    }
+    if (lighting.cloth[k]) cloth_->set_lighting(o.handle, sgs_, *lighting.cloth[k]);
+    if (weave_on_) weave_->set_lighting(o.weave_handle, lighting.weave.size() > k && lighting.weave[k] ? *lighting.weave[k]
+                                                                                                       : weave_lighting_of(o, sgs_));
   }
+}
+
+WeaveLighting SceneRenderer::weave_lighting_of(const Object& o, const SgLighting& sgs) const {
+  return weave_lighting(sgs, kMaxSgs, o.mask, o.sdf, o.source->mesh);
 }
 
 void SceneRenderer::set_lighting(const SgLighting& sgs) { set_lighting(prepare_lighting(sgs)); }
@@ -177,6 +194,10 @@ void SceneRenderer::set_weave(bool on) {
       if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
     weave_ = std::move(layer);
   }
+  // The lights as they are now: set_lighting leaves the layer's alone while it is off.
+  if (on && !weave_on_)
+    for (auto& o : objects_)
+      if (o->cloth) weave_->set_lighting(o->weave_handle, weave_lighting_of(*o, sgs_));
   weave_on_ = on;
 }
 
@@ -262,7 +283,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
       for (auto& o : objects_)
         if (o->cloth && weave_->resolves(o->weave_handle, camera, height)) {
           const StageScope stage(Stage::weave);
-          weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), sgs_);
+          weave_->draw(o->weave_handle, vp, glm::vec3(camera.position));
         }
     if (pass == 0) draw_backdrop();
   }

@@ -16,6 +16,7 @@
 #include "methods/bundle_visibility.h"
 #include "methods/cloth_method.h"
 #include "methods/runtime_method.h"
+#include "methods/weave/weave_lights.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
@@ -56,10 +57,13 @@ public:
   // per-(vertex, SG) visibility. prepare_lighting reads only what the constructor fixed, so it may
   // run on another thread while this renderer draws (the kiosk does: a moving probe or the
   // rotation knob must not stall frames); set_lighting(PreparedLighting) uploads it (GL thread).
+  // With the weave on, also each cloth object's lights for the weave layer and their visibility
+  // (methods/weave/weave_lights.h).
   struct PreparedLighting {
     SgLighting sgs;
     std::vector<std::vector<glm::vec3>> irradiance;     // per object; empty for cloth
     std::vector<std::optional<SgVisibility>> cloth;      // per object; set for occluded cloth on the tables
+    std::vector<std::optional<WeaveLighting>> weave;     // per object; set for cloth while the weave is on
   };
   PreparedLighting prepare_lighting(const SgLighting& sgs) const;  // throws GpuError for > 40 SGs
   void set_lighting(const PreparedLighting& lighting);
@@ -98,6 +102,8 @@ public:
 
 private:
   struct Object;
+  // Cloth object o's lights for the weave layer under `sgs`, from its baked visibility.
+  WeaveLighting weave_lighting_of(const Object& o, const SgLighting& sgs) const;
   std::vector<std::unique_ptr<Object>> objects_;
   std::unique_ptr<GlProgram> lambert_program_, background_program_;
   const methods::RuntimeMethod* method_;

@@ -22,7 +22,11 @@
 // WEFT_WEAVE_IMAGES=DIR writes each case's reference and each rung's frame with the layer (EXR and
 // PNG); WEFT_WEAVE_CHART=FILE.png draws the close-up's speed against accuracy (each rung alone and
 // with the layer, error over the whole close-up), and WEFT_WEAVE_CHART_FROM=TABLE.md[,…] draws it
-// from tables this bench wrote, rendering nothing.
+// from tables this bench wrote, rendering nothing. WEFT_WEAVE_REFERENCE_FROM=DIR takes each
+// case's resolved reference from DIR (a WEFT_WEAVE_IMAGES directory of an earlier run of the same
+// case) instead of rendering it: the rungs measured again in minutes, not the reference's quarter
+// hour. The bake is weft bake's default (tables, visibility, masks): the weave layer's lights take
+// their visibility from the masks, as in a kiosk.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -36,6 +40,8 @@
 #include "bake/scene/scene_bake.h"
 #include "bench/chart.h"
 #include "image/image.h"
+#include "lighting/env_map.h"
+#include "runtime/visibility_mask.h"
 #include "measure/image_metrics.h"
 #include "frame/frame_inputs.h"
 #include "frame/frame_render.h"
@@ -258,13 +264,27 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     const auto t0 = std::chrono::steady_clock::now();
     ReferenceRenderResult ref, fabric_ref;
     double exposure = 1.0;  // the reference's, metered on its cloth: the same for every image of the case
+    const char* reference_from = std::getenv("WEFT_WEAVE_REFERENCE_FROM");
     if (!flicker_only) {
-      ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
-      std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
-                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+      if (!reference_from) {
+        ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+        std::cerr << c.scene << "/" << c.fabric << ": resolved reference " << kW << "x" << kH << " in "
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+      }
       ro.resolved_weave = false;
       ro.supersample = 1;
       fabric_ref = ReferenceRenderer(in.scene, in.fabrics, lighting, ro).render();
+      if (reference_from) {
+        // The pixels from the file (an EXR reads as an environment map does, row 0 at the top),
+        // which pixels are cloth from the fabric-level reference: the same rays.
+        const std::filesystem::path file = std::filesystem::path(reference_from) / (c.scene + "_" + c.fabric + "_reference.exr");
+        const EnvMap read = load_env_map(file);
+        ASSERT_EQ(read.width, kW) << file;
+        ASSERT_EQ(read.height, kH) << file;
+        ref.image = Image(kW, kH);
+        for (size_t i = 0; i < ref.image.pixels.size(); ++i) ref.image.pixels[i] = glm::dvec3(read.texels[i]);
+        ref.kinds = fabric_ref.kinds;
+      }
       if (images) {
         std::vector<bool> cloth(ref.kinds.size());
         for (size_t i = 0; i < cloth.size(); ++i) cloth[i] = ref.kinds[i] == PixelKind::cloth;
@@ -277,6 +297,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     if (!flicker_only)
       for (size_t i = 0; i < resolved.size(); ++i) resolved[i] = resolved[i] && ref.kinds[i] == PixelKind::cloth;
     IwasakiBakeOptions bo;
+    bo.mask_resolution = kMaskResolution;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, bo));
     const bool quick = std::getenv("WEFT_WEAVE_QUICK") != nullptr;  // accuracy of iwasaki_vertex only
     std::vector<std::string> methods = {"iwasaki_vertex", "iwasaki"};

@@ -1,7 +1,8 @@
 // Benchmark (label bench): the cost of V_k per (vertex, SG) from the visibility masks at a
 // lighting change (SgVisibility::from_mask), pillow (mask baked at 64²) under the bench's 10 SGs
 // fitted to sky:elev=5 and sky:elev=20. Prints CPU time (all threads of the process) and wall
-// time, median of 3, and how far the V_k lie from the exact cell sum over all 64² cells.
+// time, median of 3, and how far the V_k lie from the exact cell sum over all 64² cells; and the
+// weave layer's lights with their V (methods/weave/weave_lights.h) at the same change.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,8 @@
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
+#include "methods/sg_lighting_uniforms.h"
+#include "methods/weave/weave_lights.h"
 #include "runtime/visibility_mask.h"
 #include "scene/scene.h"
 #include "support/lighting_change_bench.h"
@@ -64,6 +67,11 @@ TEST(MaskOpenShareBench, PillowUnderSkies) {
     std::printf("pillow %s: %zu vertices x %zu SGs: V_k in %.1f ms CPU (all threads), %.1f ms wall; "
                 "against the exact cell sum (%d pairs): worst %.4f, mean %.5f\n",
                 env, mesh.positions.size(), sgs.size(), t.cpu_ms, t.wall_ms, n, worst, sum / n);
+    // The weave layer's lights at the same change: the broad lobes split, V per light.
+    WeaveLighting w;
+    const test::MedianTimes tw = test::median_of_three([&] { w = weave_lighting(sgs, gpu::kMaxSgs, &mask, nullptr, mesh); });
+    std::printf("pillow %s: the weave layer's %zu lights and their V in %.1f ms CPU, %.1f ms wall\n", env, w.lights.size(),
+                tw.cpu_ms, tw.wall_ms);
   }
 }
 

@@ -19,6 +19,8 @@ namespace weft::gpu {
 namespace {
 constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
 constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
+constexpr int kVisibilityUnit = 6;   // above the vertex pass's inputs (0–2) and its result (3)
+constexpr int kVisibilityWidth = 1024;
 
 }  // namespace
 
@@ -99,22 +101,26 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
   if (it != programs_.end()) return it->second;
   std::string defines = weave_defines(q_groups);
   Programs p;
+  // Position, normal, warp and UV, each a whole vec4 in case the GL packs no tighter; then a vec4
+  // per group of four lights (their weights or their visibility) and, with vertex terms, the
+  // fabric-level response.
+  GLint out = 0, in = 0;
+  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
+  const int needed = 4 * q_groups + (vertex_terms ? 20 : 16), limit = std::min(out, in);
+  if (needed > limit)
+    throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " lights need " + std::to_string(needed) +
+                   " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
   if (vertex_terms) {
-    GLint out = 0, in = 0;
-    glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
-    glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
-    const int needed = 4 * q_groups + 20, limit = std::min(out, in);
-    if (needed > limit)
-      throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " SGs need " + std::to_string(needed) +
-                     " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
     p.pass = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
-        program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_vertex_pass.frag"},
+        program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
+                        "weave_visibility.glsl", "weave_vertex_pass.frag"},
                        defines));
     defines += "#define WEAVE_VERTEX_TERMS\n";
   }
   p.draw = std::make_unique<GlProgram>(
-      program_source({"weave_layer.vert"}, defines),
+      program_source({"weave_visibility.glsl", "weave_layer.vert"}, defines),
       program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
   return programs_.emplace(std::make_pair(q_groups, vertex_terms), std::move(p)).first->second;
 }
@@ -135,9 +141,45 @@ VertexPass& WeaveLayer::vertex_pass(Object& o) {
   return *o.pass;
 }
 
-void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, const SgLighting& sgs) {
+void WeaveLayer::set_lighting(size_t handle, const WeaveLighting& lighting) {
   Object& o = *objects_.at(handle);
-  if (sgs.size() > size_t(kMaxSgs)) throw GpuError("at most " + std::to_string(kMaxSgs) + " SGs, got " + std::to_string(sgs.size()));
+  const SgLighting& lights = lighting.lights;
+  if (lights.size() > size_t(kMaxSgs))
+    throw GpuError("weave layer: at most " + std::to_string(kMaxSgs) + " lights, got " + std::to_string(lights.size()));
+  const size_t vertices = o.source->positions.size();
+  if (!lighting.visibility.empty() && lighting.visibility.size() != vertices * lights.size())
+    throw GpuError("weave layer: visibility of " + std::to_string(lighting.visibility.size()) + " values for " +
+                   std::to_string(vertices) + " vertices × " + std::to_string(lights.size()) + " lights");
+  o.lights = lights;
+  o.lit = true;
+  o.occluded = !lighting.visibility.empty();
+  if (!o.occluded) return;
+  // Group g of vertex v at (v mod W, v div W + g·rows), four lights a texel.
+  const int groups = std::max(1, int((lights.size() + 3) / 4));
+  o.visibility_width = int(std::min<size_t>(vertices, kVisibilityWidth));
+  o.visibility_rows = int((vertices + o.visibility_width - 1) / o.visibility_width);
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (o.visibility_rows * groups > max_size)
+    throw GpuError("weave layer: " + std::to_string(vertices) + " vertices × " + std::to_string(lights.size()) +
+                   " lights do not fit a " + std::to_string(max_size) + "² texture");
+  std::vector<float> texels(size_t(o.visibility_width) * o.visibility_rows * groups * 4, 1.0f);
+  for (size_t v = 0; v < vertices; ++v)
+    for (size_t k = 0; k < lights.size(); ++k) {
+      const size_t x = v % o.visibility_width, y = v / o.visibility_width + (k / 4) * o.visibility_rows;
+      texels[(y * o.visibility_width + x) * 4 + k % 4] = lighting.visibility[v * lights.size() + k];
+    }
+  glBindTexture(GL_TEXTURE_2D, o.visibility.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, o.visibility_width, o.visibility_rows * groups, 0, GL_RGBA, GL_FLOAT, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  check_gl("uploading the weave layer's visibility");
+}
+
+void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) {
+  Object& o = *objects_.at(handle);
+  if (!o.lit) throw GpuError("weave layer: drawn before its lighting was set");
+  const SgLighting& sgs = o.lights;
   const int groups = std::max(1, int((sgs.size() + 3) / 4));
   const Programs& p = programs(groups, vertex_terms_);
   std::vector<float> axes, powers, widen2;
@@ -159,6 +201,12 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
       glUniform3fv(program.uniform("u_sg_power"), GLsizei(sgs.size()), powers.data());
       glUniform1fv(program.uniform("u_sg_widen2"), GLsizei(sgs.size()), widen2.data());
     }
+    glUniform1i(program.uniform("u_weave_visibility"), o.occluded ? 1 : 0);
+    glActiveTexture(GL_TEXTURE0 + kVisibilityUnit);
+    glBindTexture(GL_TEXTURE_2D, o.visibility.id());
+    glUniform1i(program.uniform("u_weave_visibility_texels"), kVisibilityUnit);
+    glUniform1i(program.uniform("u_weave_visibility_width"), o.visibility_width);
+    glUniform1i(program.uniform("u_weave_visibility_rows"), o.visibility_rows);
   };
   if (p.pass) {
     VertexPass& pass = vertex_pass(o);

@@ -13,7 +13,9 @@ in vec3 v_warp;
 in highp vec2 v_uv;
 #ifdef WEAVE_VERTEX_TERMS
 in vec3 v_fabric;
-in vec4 v_q[Q_GROUPS];
+in vec4 v_weight[Q_GROUPS];
+#else
+in vec4 v_visibility[Q_GROUPS];
 #endif
 out vec4 o_factor;
 void main() {
@@ -30,12 +32,12 @@ void main() {
   if (dot(n, wo) < 0.0) n = -n;
   vec3 u = normalize(v_warp - dot(v_warp, n) * n);
   vec3 fabric;
-  vec4 q[Q_GROUPS];
+  vec4 weight[Q_GROUPS];
 #ifdef WEAVE_VERTEX_TERMS
   fabric = v_fabric;
-  for (int g = 0; g < Q_GROUPS; ++g) q[g] = v_q[g];
+  for (int g = 0; g < Q_GROUPS; ++g) weight[g] = v_weight[g];
 #else
-  weave_terms(n, u, wo, fabric, q);
+  weave_terms(n, u, wo, v_visibility, fabric, weight);
 #endif
-  o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, fabric, q), vec3(1.0), coarse), 1.0);
+  o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, fabric, weight), vec3(1.0), coarse), 1.0);
 }

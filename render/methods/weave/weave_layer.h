@@ -16,10 +16,12 @@
 #include "core/spherical_gaussian.h"
 #include "core/weave_layout.h"
 #include "gl/gl_program.h"
+#include "gl/gl_texture.h"
 #include "gl/gpu_mesh.h"
 #include "methods/fabric_uniforms.h"
 #include "methods/iwasaki/vertex_pass.h"
 #include "methods/iwasaki/visible_vertices.h"
+#include "methods/weave/weave_lights.h"
 #include "methods/weave/weave_ratio.h"
 #include "scene/scene.h"
 
@@ -48,9 +50,14 @@ public:
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
   // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
+  // The lights the factor takes and each vertex's visibility of them (weave_lighting, with at
+  // most kMaxSgs lights; its visibility of this object's mesh or empty). Throws GpuError for
+  // lighting of another mesh or more lights than the shaders hold.
+  void set_lighting(size_t handle, const WeaveLighting& lighting);
   // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
-  // depth or alpha writes); restores blending and depth state after.
-  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye, const SgLighting& sgs);
+  // depth or alpha writes); restores blending and depth state after. Throws GpuError before the
+  // object's first set_lighting.
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye);
 
 private:
   struct Object {
@@ -65,6 +72,11 @@ private:
     glm::dvec2 tiles_per_uv{1.0};
     glm::dvec3 box_min{0.0}, box_max{0.0};
     double smallest_repeat = 0.0;  // metres
+    bool lit = false;              // set_lighting called
+    SgLighting lights;
+    GlTexture visibility;          // weave_visibility.glsl's texels; unused while `occluded` is false
+    bool occluded = false;
+    int visibility_width = 1, visibility_rows = 1;
   };
   struct Programs {
     std::unique_ptr<GlProgram> pass, draw;  // pass: with vertex terms only

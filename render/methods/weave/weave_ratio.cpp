@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "core/microcylinder.h"
 #include "core/weave_coverage.h"
@@ -68,10 +70,15 @@ SampleTerms sample_terms(const ThreadParams& thread, const SurfaceFrame& frame, 
 }
 }  // namespace
 
-WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs) {
+WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                       std::span<const double> visibility) {
+  if (!visibility.empty() && visibility.size() != sgs.size())
+    throw std::invalid_argument("weave_terms: " + std::to_string(visibility.size()) + " visibilities for " +
+                                std::to_string(sgs.size()) + " SGs");
   WeaveTerms t;
   const Fabric& fabric = bsdf.fabric();
-  for (const auto& g : sgs) {
+  for (size_t i = 0; i < sgs.size(); ++i) {
+    const SphericalGaussian& g = sgs[i];
     double q = (1.0 - fabric.threads[0].coverage - fabric.threads[1].coverage) * std::max(glm::dot(frame.n, wo), 0.0);
     dvec3 sum(0.0);
     const HorizonLight light = horizon_light(g, frame.n);
@@ -88,14 +95,15 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
       q += fabric.threads[j].coverage * p_sum / bsdf.sample_count(j);
       sum += fabric.threads[j].coverage * thread_sum / double(bsdf.sample_count(j));
     }
-    t.q.push_back(q);
-    if (lit && q > kQFloor) t.fabric += light.share * sg_power(g) * sum / q;
+    const double weight = lit && q > kQFloor ? (visibility.empty() ? 1.0 : visibility[i]) / q : 0.0;
+    t.weight.push_back(weight);
+    t.fabric += weight * light.share * sg_power(g) * sum;
   }
   return t;
 }
 
 namespace {
-// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at `arc` along its float, its lobes widened
+// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of thread j's sample at `arc` along its float, its lobes widened
 // by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point light lights[k]
 // (its horizon_light at frame.n).
 dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, int thread, double arc,
@@ -106,11 +114,10 @@ dvec3 resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const 
   if (glm::dot(frame.n, wo) <= 0.0) return resolved;
   for (size_t k = 0; k < sgs.size(); ++k) {
     const HorizonLight& light = lights[k];
-    if (terms.q.at(k) > kQFloor && light.share > 0.0 && glm::dot(frame.n, light.axis) > 0.0)
-      resolved += light.share * sg_power(sgs[k]) *
+    if (terms.weight.at(k) > 0.0 && light.share > 0.0 && glm::dot(frame.n, light.axis) > 0.0)
+      resolved += light.share * sg_power(sgs[k]) * terms.weight[k] *
                   sample_terms(bsdf.fabric().threads[thread], frame, thread, alpha, tilt_spread,
-                               weave_lobe_widening(sgs[k].sharpness), light.axis, wo).value /
-                  terms.q[k];
+                               weave_lobe_widening(sgs[k].sharpness), light.axis, wo).value;
   }
   return resolved;
 }
@@ -177,10 +184,11 @@ double weave_detail(double thread_footprint) {
 }
 
 dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                   glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs) {
+                   glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs,
+                   std::span<const double> visibility) {
   const double detail = weave_detail(weave_thread_footprint(layout, std::max(glm::length(dx), glm::length(dy))));
   if (detail <= 0.0) return dvec3(1.0);
-  const dvec3 r = weave_ratio_filtered(bsdf, layout, frame, wo, st, dx, dy, weave_terms(bsdf, frame, wo, sgs), sgs);
+  const dvec3 r = weave_ratio_filtered(bsdf, layout, frame, wo, st, dx, dy, weave_terms(bsdf, frame, wo, sgs, visibility), sgs);
   return glm::mix(dvec3(1.0), r, detail);
 }
 

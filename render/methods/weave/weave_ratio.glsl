@@ -1,6 +1,6 @@
 // The weave layer's factor (methods/weave/weave_ratio.h): the resolved sample's response to the SGs
-// taken as point lights (each lobe widened by the SG's own spread), over the fabric-level response
-// to the same lights at the same pixel, so that the factor averages to 1 over the repeat and
+// taken as point lights (each lobe widened by the SG's own spread; each weighted by the share V_k the
+// object's geometry leaves open), over the fabric-level response to the same lights at the same pixel, so that the factor averages to 1 over the repeat and
 // modulates what the fabric-level method drew. Needs microcylinder.glsl, erf.glsl and
 // weave_layout.glsl before it, and MAX_SGS.
 uniform int u_sg_count;
@@ -63,10 +63,11 @@ vec3 resolved_scattering(ResolvedView view, vec3 n, int j, vec3 wi, float widen2
   return scattering(widened(u_threads[j], widen2 + c * c), fi, view.fo) * (w * cos(fi.theta));
 }
 
-// The pixel's fabric-level terms (weave_terms in weave_ratio.h): Σ_k P_k·integrand(ξ_k, ω_o) over
-// the program's tangent samples, each widened by the SG's spread and its own tilt spread, and
-// each SG's Q, four to a vec4.
-void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS]) {
+// The pixel's fabric-level terms (weave_terms in weave_ratio.h): Σ_k V_k P_k·integrand(ξ_k, ω_o)
+// over the program's tangent samples, each widened by the SG's spread and its own tilt spread, and
+// each SG's weight V_k/Q_k (0 where Q_k ≤ Q_FLOOR or the light is below the horizon), four to a
+// vec4; `vis`: V_k, four to a vec4.
+void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, out vec4 weight[Q_GROUPS]) {
   // One sweep over the samples, each sample's view taken once for all the SGs.
   vec3 sums[MAX_SGS];
   float qs[MAX_SGS];
@@ -78,30 +79,33 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, out vec3 fabric, out vec4 q[Q_GROUPS])
     qs[k] = gap_q;
   }
   for (int j = 0; j < 2; ++j) {
-    float weight = u_threads[j].coverage / float(u_threads[j].samples);
+    float share = u_threads[j].coverage / float(u_threads[j].samples);
     for (int s = 0; s < u_threads[j].samples; ++s) {
       int i = j * MAX_TANGENT_SAMPLES + s;
       ResolvedView view = resolved_view(n, u, j, thread_tilt(i), wo);
       float spread = u_weave_tilt_spreads[i >> 2][i & 3];
       for (int k = 0; k < u_sg_count; ++k) {
         vec3 wi = lights[k].axis;
-        qs[k] += weight * projection_term(fiber_angles_in(view.t, view.np, view.axis, wi), view.fo);
-        sums[k] += weight * resolved_scattering(view, n, j, wi, u_sg_widen2[k], spread);
+        qs[k] += share * projection_term(fiber_angles_in(view.t, view.np, view.axis, wi), view.fo);
+        sums[k] += share * resolved_scattering(view, n, j, wi, u_sg_widen2[k], spread);
       }
     }
   }
   fabric = vec3(0.0);
-  for (int g = 0; g < Q_GROUPS; ++g) q[g] = vec4(0.0);
+  bool lit = dot(n, wo) > 0.0;
+  for (int g = 0; g < Q_GROUPS; ++g) weight[g] = vec4(0.0);
   for (int k = 0; k < u_sg_count; ++k) {
-    q[k >> 2][k & 3] = qs[k];
-    if (qs[k] > Q_FLOOR && lights[k].share > 0.0) fabric += lights[k].share * u_sg_power[k] * sums[k] / qs[k];
+    bool above = lit && lights[k].share > 0.0 && dot(n, lights[k].axis) > 0.0;
+    float w = above && qs[k] > Q_FLOOR ? vis[k >> 2][k & 3] / qs[k] : 0.0;
+    weight[k >> 2][k & 3] = w;
+    fabric += w * lights[k].share * u_sg_power[k] * sums[k];
   }
 }
 
-// Σ_k P_k f_s M P cos θ_i / Q_k of thread j's sample at arc position `arc` of its float, its lobes
-// widened by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point light
-// lights[k] (horizon_lights at n).
-vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 q[Q_GROUPS],
+// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of thread j's sample at arc position `arc` of its float, its
+// lobes widened by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point
+// light lights[k] (horizon_lights at n); `weight`: weave_terms' V_k/Q_k.
+vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 weight[Q_GROUPS],
                        HorizonLight lights[MAX_SGS]) {
   ResolvedView view = resolved_view(n, u, j, curve_tilt(j, arc), wo);
   vec3 resolved = vec3(0.0);
@@ -110,9 +114,9 @@ vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spr
     for (int c = 0; c < 4; ++c) {
       int k = 4 * g + c;
       if (k >= u_sg_count) break;
-      if (q[g][c] <= Q_FLOOR) continue;
+      if (weight[g][c] <= 0.0) continue;
       if (lights[k].share <= 0.0) continue;
-      resolved += lights[k].share * u_sg_power[k] * resolved_scattering(view, n, j, lights[k].axis, u_sg_widen2[k], tilt_spread) / q[g][c];
+      resolved += lights[k].share * u_sg_power[k] * weight[g][c] * resolved_scattering(view, n, j, lights[k].axis, u_sg_widen2[k], tilt_spread);
     }
   return resolved;
 }
@@ -123,14 +127,14 @@ vec3 ratio_to(vec3 resolved, vec3 fabric) {
   return ratio;
 }
 
-// The factor at tile point st, given the fabric-level response `fabric` (Σ_k P_k·integrand) and
-// each SG's Q (`q`, packed four to a vec4) interpolated from the vertices.
-vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 q[Q_GROUPS]) {
+// The factor at tile point st, given weave_terms' fabric-level response `fabric` and weights
+// (packed four to a vec4), the pixel's own or interpolated from the vertices.
+vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 weight[Q_GROUPS]) {
   WeaveSample w = weave_at(st);
   if (w.thread < 0) return vec3(0.0);
   HorizonLight lights[MAX_SGS];
   horizon_lights(n, lights);
-  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, 0.0, q, lights), fabric);
+  return ratio_to(resolved_response(n, u, wo, w.thread, w.arc, 0.0, weight, lights), fabric);
 }
 
 // The RMS tilt of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
@@ -156,7 +160,7 @@ float weave_tilt_spread(int j, float arc, float arc_spread) {
 // share of the pixel, its lobes widened by the tilts the footprint spans along its float.
 // Twin: weave_ratio_filtered in methods/weave/weave_ratio.h.
 vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx, highp vec2 dy, vec3 fabric,
-                          vec4 q[Q_GROUPS]) {
+                          vec4 weight[Q_GROUPS]) {
   WeaveCoverage c = weave_coverage(st, dx, dy);
   HorizonLight lights[MAX_SGS];
   horizon_lights(n, lights);
@@ -165,7 +169,7 @@ vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx,
     int j = c.piece_thread[i];
     if (j < 0) break;
     float arc = c.piece_arc[i];
-    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), q, lights);
+    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), weight, lights);
   }
   return ratio_to(resolved, fabric);
 }

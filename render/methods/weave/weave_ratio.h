@@ -2,11 +2,14 @@
 // The weave layer (docs/design.md §2, "Resolved weave") on the CPU: the C++ twin of
 // weave_ratio.glsl. A close-up shows each thread where it lies; the
 // layer gets there by modulating what a fabric-level method drew with
-//   R(x) = Σ_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k:
-//        / Σ_k P_k · integrand(ξ_k, ω_o)      its part above the horizon, horizon_light)
-//                                             (the fabric-level response to the same lights at x),
+//   R(x) = Σ_k V_k P_k · f_s M P cos θ_i / Q_k  (x's one sample, SG k as a point light of power P_k:
+//        / Σ_k V_k P_k · integrand(ξ_k, ω_o)      its part above the horizon, horizon_light; V_k the
+//                                                 share of it the object's geometry leaves open)
+//                                                 (the fabric-level response to the same lights at x),
 // whose average over the repeat is 1: the layer adds the weave's detail and keeps every
-// method's fabric-level accuracy and shadows. Eased to 1 by the pixel's footprint (weave_detail).
+// method's fabric-level accuracy and shadows. The layer's lights are the lighting's SGs with the
+// broad lobes split (methods/weave/weave_lights.h): a shadowed light shades no thread, and a
+// broad lobe lights each thread from many directions. Eased to 1 by the pixel's footprint (weave_detail).
 #include <span>
 #include <vector>
 
@@ -52,17 +55,20 @@ HorizonLight horizon_light(const SphericalGaussian& g, const dvec3& n);
 inline constexpr int kWeavePixelSamples = 16;
 
 // A pixel's fabric-level terms: its response to the SGs as point lights (horizon_light: F_k·P_k
-// along ξ'_k), Σ_k F_k P_k·integrand(ξ'_k, ω_o) with each lobe widened by the SG's spread and each
-// sample's by its arc's tilts, and each light's Q.
+// along ξ'_k), Σ_k V_k F_k P_k·integrand(ξ'_k, ω_o) with each lobe widened by the SG's spread and
+// each sample's by its arc's tilts, and each light's weight V_k/Q_k (0 where Q_k is below kQFloor
+// or the light below the horizon): what the resolved response multiplies each light by.
 // Per pixel, not per vertex: up close a triangle spans tens of degrees of view, and the sharp lobes
 // of an interpolated response miss the pixel's own (the factor's mean over a repeat was off by
 // tens of per cent on a 16×16 swatch).
 struct WeaveTerms {
   dvec3 fabric{0.0};
-  std::vector<double> q;
+  std::vector<double> weight;
 };
-// `bsdf` with the samples the caller wants (the layer: kWeavePixelSamples per thread).
-WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs);
+// `bsdf` with the samples the caller wants (the layer: kWeavePixelSamples per thread);
+// `visibility`: V_k per SG (empty: all 1).
+WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, std::span<const SphericalGaussian> sgs,
+                       std::span<const double> visibility = {});
 
 // R at tile point st; 0 in a gap.
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
@@ -84,8 +90,10 @@ double weave_tilt_spread(const Fabric& fabric, int thread, double arc, double ar
 double weave_detail(double thread_footprint);
 
 // The layer's factor as a pixel applies it: mix(filtered R, 1, 1 − weave_detail(footprint)), the
-// footprint the longer of dx and dy in threads (weave_thread_footprint).
+// footprint the longer of dx and dy in threads (weave_thread_footprint). `sgs`: the layer's lights
+// (weave_lights); `visibility`: V_k per light at the point (empty: all 1).
 dvec3 weave_factor(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
-                   glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs);
+                   glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, std::span<const SphericalGaussian> sgs,
+                   std::span<const double> visibility = {});
 
 }  // namespace weft
