@@ -25,6 +25,10 @@ struct WeavePiece {
   int thread = -1;     // 0 warp, 1 weft; −1 an unused slot
   double share = 0.0;  // of the pixel
   double arc = 0.0;    // along the float, at the middle of its overlap with the footprint's box
+  // The overlap's ends along the float (arc_lo ≤ arc ≤ arc_hi), and the footprint's centre in
+  // the float's arc (beyond [0, 1] where the centre lies off the float): where along the float
+  // the pixel sees it, weighted by the footprint's marginal (arc_density).
+  double arc_lo = 0.0, arc_hi = 0.0, centre = 0.0;
 };
 
 struct WeaveCoverage {
@@ -35,7 +39,14 @@ struct WeaveCoverage {
   // RMS spread of arc over the footprint along each thread's float (its marginal along s for the
   // warp, along t for the weft, in fractions of the float): the tilts a pixel mixes.
   double arc_spread[2] = {0.0, 0.0};
+  // The footprint's two box widths along each thread's float, in arc: its marginal along the
+  // float is a box of the first convolved with a box of the second.
+  double arc_box[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
 };
+
+// The footprint's density along piece p's float at arc x (per unit arc): the box pair of
+// c.arc_box[p.thread] centred at p.centre.
+double arc_density(const WeaveCoverage& c, const WeavePiece& p, double x);
 
 // Rows and floats farther than this from the footprint's centre are not visited: the layer fades
 // the weave out by two threads a pixel (methods/weave/weave_ratio.h), so where it is drawn at all
@@ -52,5 +63,7 @@ double piece_weight(const WeaveCoverage& c, int i);
 // The mass in [lo, hi] of a box of width a convolved with a box of width b, both centred at 0
 // (the footprint's marginal along one axis); widths may be 0 (a step).
 double box_pair_mass(double lo, double hi, double a, double b);
+// Its density at x (0 where both widths are 0).
+double box_pair_density(double x, double a, double b);
 
 }  // namespace weft

@@ -140,3 +140,56 @@ TEST(WeaveCoverage, PiecesKeepEachFloatsPlaceAlongIt) {
     EXPECT_LT(rms, 0.015) << name;
   }
 }
+
+// Where along a float the pixel sees it: the piece's arc range holds every supersampled point of
+// that float, and the footprint's density over the range (arc_density) has the points' mean arc.
+TEST(WeaveCoverage, EachFloatsArcRangeAndDensityMatchTheSupersampledPoints) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0;
+  for (const std::string& name : list_fabric_presets(kFabrics)) {
+    const WeaveLayout layout(load_fabric_preset(name, kFabrics));
+    const double thread = 1.0 / layout.rows();
+    for (int i = 0; i < 100; ++i) {
+      const dvec2 st(u(rng) * 3.0 - 1.0, u(rng) * 3.0 - 1.0);
+      const dvec2 dx(thread * (0.05 + 0.95 * u(rng)), 0.0), dy(0.0, thread * (0.05 + 0.95 * u(rng)));
+      const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
+      for (int j = 0; j < 2; ++j) {
+        // Only a thread with one float in the pixel: its supersampled points are all of that float.
+        int piece = -1, pieces = 0;
+        for (int k = 0; k < kWeaveCoveragePieces; ++k)
+          if (c.piece[k].thread == j) piece = k, ++pieces;
+        if (pieces != 1 || c.share[j] < 0.05) continue;
+        const WeavePiece& p = c.piece[piece];
+        EXPECT_LE(p.arc_lo, p.arc);
+        EXPECT_LE(p.arc, p.arc_hi);
+        constexpr int kN = 96;
+        double sum = 0.0, n = 0.0, lowest = 1.0, highest = 0.0;
+        for (int y = 0; y < kN; ++y)
+          for (int x = 0; x < kN; ++x) {
+            const dvec2 q = st + ((x + 0.5) / kN - 0.5) * dx + ((y + 0.5) / kN - 0.5) * dy;
+            const WeaveSample w = layout.at(q.x, q.y);
+            if (w.thread != j) continue;
+            sum += w.arc, n += 1.0;
+            lowest = std::min(lowest, w.arc), highest = std::max(highest, w.arc);
+          }
+        // The range within a supersample's step of the points' own.
+        const double step = (j == 0 ? dx.x / layout.warp_share() : dy.y * layout.rows()) / kN;
+        EXPECT_LE(p.arc_lo, lowest + 1e-9) << name;
+        EXPECT_GE(p.arc_hi, highest - 1e-9) << name;
+        EXPECT_NEAR(p.arc_lo, lowest, 1.5 * step) << name;
+        EXPECT_NEAR(p.arc_hi, highest, 1.5 * step) << name;
+        // The density's mean arc over the range, by the midpoint rule.
+        double mass = 0.0, moment = 0.0;
+        for (int m = 0; m < 1000; ++m) {
+          const double a = p.arc_lo + (m + 0.5) / 1000.0 * (p.arc_hi - p.arc_lo), d = arc_density(c, p, a);
+          mass += d, moment += d * a;
+        }
+        ASSERT_GT(mass, 0.0) << name;
+        EXPECT_NEAR(moment / mass, sum / n, 0.01 + step) << name;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 300);
+}

@@ -192,7 +192,9 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     threads += here.thread >= 0;
   }
   EXPECT_GT(compared, kCases * 9 / 10);
-  EXPECT_GT(filtered_compared, kCases * 8 / 10);
+  // The velvet's weft jumps −55° → 55° along its float: wherever one of a float's three arcs lies on
+  // the jump, a nudge moves its tilt across it.
+  EXPECT_GT(filtered_compared, kCases * 3 / 4);
   EXPECT_GT(mixed, filtered_compared / 4);  // footprints that straddle an edge are tested too
   EXPECT_GT(threads, compared / 3);
 }

@@ -40,7 +40,7 @@ dvec3 sphere_integral(const SphericalGaussian& g, F f, int n = 400) {
 
 TEST(WeaveLights, SplitLobesLightEveryPlaneAsTheLobeDoes) {
   const SgLighting sgs = {SphericalGaussian{glm::normalize(dvec3(0.2, -0.3, 0.9)), 1.0, {2.0, 1.8, 1.5}},
-                          SphericalGaussian{glm::normalize(dvec3(-0.7, 0.1, 0.3)), 6.0, {0.5, 0.6, 0.7}},
+                          SphericalGaussian{glm::normalize(dvec3(-0.7, 0.1, 0.3)), 3.0, {0.5, 0.6, 0.7}},
                           SphericalGaussian{glm::normalize(dvec3(0.5, 0.5, 0.5)), 120.0, {4.0, 4.0, 3.0}}};
   const SgLighting lights = weave_lights(sgs, 40);
   ASSERT_EQ(lights.size(), 3u + 2u * (kWeaveSplitParts - 1));  // the two broad lobes split, the sharp one kept
@@ -69,13 +69,13 @@ TEST(WeaveLights, SplitLobesLightEveryPlaneAsTheLobeDoes) {
 
 TEST(WeaveLights, AFullLightingKeepsWithinTheShadersLimit) {
   SgLighting sgs;
-  for (int k = 0; k < 10; ++k) sgs.push_back({glm::normalize(dvec3(std::cos(k), std::sin(k), 0.5)), 1.0 + k, dvec3(1.0)});
+  for (int k = 0; k < 10; ++k) sgs.push_back({glm::normalize(dvec3(std::cos(k), std::sin(k), 0.5)), 0.4 + 0.3 * k, dvec3(1.0)});
   const SgLighting lights = weave_lights(sgs, 24);
   EXPECT_LE(lights.size(), 24u);
-  // The broadest split first: λ = 1, 2, 3 split (10 + 3·4 = 22), λ = 4 would make 26.
+  // Ten broad lobes; the broadest split first: λ = 0.4, 0.7, 1.0 split (10 + 3·4 = 22), a fourth would make 26.
   EXPECT_EQ(lights.size(), 22u);
   int whole_broadest = 0;
-  for (const auto& l : lights) whole_broadest += l.sharpness == 1.0;
+  for (const auto& l : lights) whole_broadest += l.sharpness == 0.4;
   EXPECT_EQ(whole_broadest, 0);
 }
 

@@ -55,7 +55,12 @@ struct WeaveCoverage {
   int piece_thread[WEAVE_COVERAGE_PIECES];  // −1: an unused slot
   float piece_share[WEAVE_COVERAGE_PIECES];
   float piece_arc[WEAVE_COVERAGE_PIECES];
+  // The overlap's ends along the float and the footprint's centre in the float's arc.
+  float piece_arc_lo[WEAVE_COVERAGE_PIECES];
+  float piece_arc_hi[WEAVE_COVERAGE_PIECES];
+  float piece_centre[WEAVE_COVERAGE_PIECES];
   float arc_spread[2];  // RMS arc over the footprint along each thread's float
+  vec2 arc_box[2];      // the footprint's two box widths along each thread's float, in arc
 };
 
 // ∫_{-∞}^{y} of the CDF of a box of width a centred at 0.
@@ -73,9 +78,16 @@ float box_pair_cdf(float x, float a, float b) {
 float box_pair_mass(float lo, float hi, float a, float b) {
   return hi <= lo ? 0.0 : max(box_pair_cdf(hi, a, b) - box_pair_cdf(lo, a, b), 0.0);
 }
+float box_pair_density(float x, float a, float b) {
+  float wide = max(a, b), narrow = min(a, b);
+  if (wide < 1e-12) return 0.0;
+  if (narrow < 1e-12) return abs(x) < 0.5 * wide ? 1.0 / wide : 0.0;
+  return (clamp((x + 0.5 * narrow) / wide + 0.5, 0.0, 1.0) - clamp((x - 0.5 * narrow) / wide + 0.5, 0.0, 1.0)) / narrow;
+}
 
-// Adds thread j's float of share `share` at `arc` (weave_coverage.cpp's piece).
-void add_piece(inout WeaveCoverage c, int j, float share, float arc) {
+// Adds thread j's float of share `share`, its overlap's arcs (lo, middle, hi) and the footprint
+// centre's arc (weave_coverage.cpp's piece).
+void add_piece(inout WeaveCoverage c, int j, float share, vec3 arcs, float centre) {
   c.share[j] += share;
   int i = WEAVE_COVERAGE_PIECES;
   while (i > 0 && share > c.piece_share[i - 1]) --i;
@@ -84,10 +96,23 @@ void add_piece(inout WeaveCoverage c, int j, float share, float arc) {
     c.piece_thread[k] = c.piece_thread[k - 1];
     c.piece_share[k] = c.piece_share[k - 1];
     c.piece_arc[k] = c.piece_arc[k - 1];
+    c.piece_arc_lo[k] = c.piece_arc_lo[k - 1];
+    c.piece_arc_hi[k] = c.piece_arc_hi[k - 1];
+    c.piece_centre[k] = c.piece_centre[k - 1];
   }
   c.piece_thread[i] = j;
   c.piece_share[i] = share;
-  c.piece_arc[i] = clamp(arc, 0.0, 1.0);
+  c.piece_arc_lo[i] = clamp(arcs.x, 0.0, 1.0);
+  c.piece_arc[i] = clamp(arcs.y, 0.0, 1.0);
+  c.piece_arc_hi[i] = clamp(arcs.z, 0.0, 1.0);
+  c.piece_centre[i] = centre;
+}
+
+// arc_density: the footprint's density along piece i's float at arc x.
+float arc_density(WeaveCoverage c, int i, float x) {
+  int j = c.piece_thread[i];
+  if (j < 0) return 0.0;
+  return box_pair_density(x - c.piece_centre[i], c.arc_box[j].x, c.arc_box[j].y);
 }
 
 // piece_weight: piece i's thread's share × its part of that thread's kept pieces.
@@ -108,13 +133,20 @@ WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
     out_.piece_thread[i] = -1;
     out_.piece_share[i] = 0.0;
     out_.piece_arc[i] = 0.0;
+    out_.piece_arc_lo[i] = 0.0;
+    out_.piece_arc_hi[i] = 0.0;
+    out_.piece_centre[i] = 0.0;
   }
+  out_.arc_box[0] = vec2(0.0);
+  out_.arc_box[1] = vec2(0.0);
   float w = u_weave_width, f = u_weave_warp_share, rows = float(u_weave_rows);
   if (w <= 0.0) return out_;
   highp vec2 c = fract(st);
   vec2 a = abs(dx), b = abs(dy), half_ = 0.5 * (a + b);
   out_.arc_spread[0] = f > 0.0 ? sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
   out_.arc_spread[1] = sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
+  if (f > 0.0) out_.arc_box[0] = vec2(a.x, b.x) / f;
+  out_.arc_box[1] = vec2(a.y, b.y) * rows;
   int kc = int(floor(c.y * rows));
   int k0 = max(int(floor((c.y - half_.y) * rows)), kc - WEAVE_COVERAGE_REACH);
   int k1 = min(int(floor((c.y + half_.y) * rows)), kc + WEAVE_COVERAGE_REACH);
@@ -132,15 +164,16 @@ WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
       // The warp floats over [s, s + f) in the middle w of the row.
       float share = box_pair_mass(s - c.x, s + f - c.x, a.x, b.x) * wy;
       if (share > 0.0) {
-        float sm = 0.5 * (max(s, c.x - half_.x) + min(s + f, c.x + half_.x));
-        add_piece(out_, 0, share, f > 0.0 ? (sm - s) / f : 0.0);
+        float lo = max(s, c.x - half_.x), hi = min(s + f, c.x + half_.x);
+        vec3 arcs = f > 0.0 ? (vec3(lo, 0.5 * (lo + hi), hi) - s) / f : vec3(0.0);
+        add_piece(out_, 0, share, arcs, f > 0.0 ? (c.x - s) / f : 0.0);
       }
       // The weft crosses the whole row in the middle w of the rest.
       float g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
       share = box_pair_mass(g0 - c.x, g1 - c.x, a.x, b.x) * ty;
       if (share > 0.0) {
-        float tm = 0.5 * (max(t0, c.y - half_.y) + min(t1, c.y + half_.y));
-        add_piece(out_, 1, share, (tm - t0) * rows);
+        float lo = max(t0, c.y - half_.y), hi = min(t1, c.y + half_.y);
+        add_piece(out_, 1, share, (vec3(lo, 0.5 * (lo + hi), hi) - t0) * rows, (c.y - t0) * rows);
       }
     }
   }

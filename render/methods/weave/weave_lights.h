@@ -17,8 +17,10 @@ namespace weft {
 // An SG of sharpness below this is split; into this many lobes: one at its axis and the rest on a
 // ring around it. Each part has sharpness 2λ and an equal share of the power, the ring at
 // β = 1/√((1 − w₀)λ) (w₀ the centre's share), so that the parts' spread about the axis adds to
-// the SG's own variance 1/λ per direction.
-inline constexpr double kWeaveSplitSharpness = 10.0;
+// the SG's own variance 1/λ per direction. Only the sky-wide lobes: each split adds four lights to
+// the factor's work (splitting below λ = 10 put the studio map's linen close-up at 1.81× the
+// rung's frame, for no change of its error; the interior map's cushion needs only its λ = 1 lobe split).
+inline constexpr double kWeaveSplitSharpness = 4.0;
 inline constexpr int kWeaveSplitParts = 5;
 
 // `sgs` with the broad lobes split (broadest first, as many as keep the result within

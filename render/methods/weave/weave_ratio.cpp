@@ -162,6 +162,31 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
                   terms.fabric);
 }
 
+dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights) {
+  const WeavePiece& p = c.piece[i];
+  const Fabric& fabric = bsdf.fabric();
+  const double mid = 0.5 * (p.arc_lo + p.arc_hi), half = 0.5 * (p.arc_hi - p.arc_lo);
+  if (half > 0.0) {
+    // Three-point Gauss–Legendre over the overlap, each node weighted by the footprint's density
+    // there and its lobes widened by the tilts of the part of the range it stands for (its
+    // weight's share of the range, as a uniform spread).
+    constexpr double kNode = 0.7745966692414834, kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    dvec3 sum(0.0);
+    double total = 0.0;
+    for (int m = 0; m < 3; ++m) {
+      const double a = mid + (m - 1) * kNode * half, w = kWeights[m] * arc_density(c, p, a);
+      if (w <= 0.0) continue;
+      const double part = kWeights[m] * 2.0 * half / std::sqrt(12.0);
+      sum += w * resolved_response(bsdf, frame, wo, p.thread, a, weave_tilt_spread(fabric, p.thread, a, part), terms, sgs, lights);
+      total += w;
+    }
+    if (total > 0.0) return sum / total;
+  }
+  return resolved_response(bsdf, frame, wo, p.thread, p.arc, weave_tilt_spread(fabric, p.thread, p.arc, c.arc_spread[p.thread]),
+                           terms, sgs, lights);
+}
+
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
                            std::span<const SphericalGaussian> sgs) {
@@ -169,11 +194,8 @@ dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, con
   const std::vector<HorizonLight> lights = horizon_lights(sgs, frame.n);
   dvec3 resolved(0.0);
   for (int i = 0; i < kWeaveCoveragePieces; ++i) {
-    const WeavePiece& p = c.piece[i];
-    if (p.thread < 0) break;
-    resolved += piece_weight(c, i) * resolved_response(bsdf, frame, wo, p.thread, p.arc,
-                                                       weave_tilt_spread(bsdf.fabric(), p.thread, p.arc, c.arc_spread[p.thread]),
-                                                       terms, sgs, lights);
+    if (c.piece[i].thread < 0) break;
+    resolved += piece_weight(c, i) * weave_float_response(bsdf, frame, wo, c, i, terms, sgs, lights);
   }
   return ratio_to(resolved, terms.fabric);
 }

@@ -155,9 +155,34 @@ float weave_tilt_spread(int j, float arc, float arc_spread) {
   return slope < 1e30 ? slope * arc_spread : 0.0;
 }
 
+// weave_float_response: piece i of coverage c averaged over its arc range at three Gauss–Legendre
+// arcs, each weighted by the footprint's density there and widened by the tilts of its part of the
+// range (at its middle arc, widened by the footprint's tilts, where the range is a point).
+vec3 weave_float_response(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, vec4 weight[Q_GROUPS],
+                          HorizonLight lights[MAX_SGS]) {
+  int j = c.piece_thread[i];
+  float lo = c.piece_arc_lo[i], hi = c.piece_arc_hi[i];
+  float mid = 0.5 * (lo + hi), half_ = 0.5 * (hi - lo);
+  if (half_ > 0.0) {
+    vec3 sum = vec3(0.0);
+    float total = 0.0;
+    for (int m = 0; m < 3; ++m) {
+      float a = mid + float(m - 1) * 0.7745966692414834 * half_;
+      float w = (m == 1 ? 8.0 / 18.0 : 5.0 / 18.0) * arc_density(c, i, a);
+      if (w <= 0.0) continue;
+      float part = (m == 1 ? 8.0 / 18.0 : 5.0 / 18.0) * 2.0 * half_ / sqrt(12.0);
+      sum += w * resolved_response(n, u, wo, j, a, weave_tilt_spread(j, a, part), weight, lights);
+      total += w;
+    }
+    if (total > 0.0) return sum / total;
+  }
+  float arc = c.piece_arc[i];
+  return resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), weight, lights);
+}
+
 // The factor over the pixel's footprint (tile-space derivatives dx, dy): the layout box-filtered
-// over it (weave_coverage), each of its largest floats shaded once where it lies, weighted by its
-// share of the pixel, its lobes widened by the tilts the footprint spans along its float.
+// over it (weave_coverage), each of its largest floats shaded where it lies
+// (weave_float_response), weighted by its share of the pixel.
 // Twin: weave_ratio_filtered in methods/weave/weave_ratio.h.
 vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx, highp vec2 dy, vec3 fabric,
                           vec4 weight[Q_GROUPS]) {
@@ -166,10 +191,8 @@ vec3 weave_ratio_filtered(vec3 n, vec3 u, vec3 wo, highp vec2 st, highp vec2 dx,
   horizon_lights(n, lights);
   vec3 resolved = vec3(0.0);
   for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
-    int j = c.piece_thread[i];
-    if (j < 0) break;
-    float arc = c.piece_arc[i];
-    resolved += piece_weight(c, i) * resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), weight, lights);
+    if (c.piece_thread[i] < 0) break;
+    resolved += piece_weight(c, i) * weave_float_response(n, u, wo, c, i, weight, lights);
   }
   return ratio_to(resolved, fabric);
 }

@@ -15,6 +15,7 @@
 
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
+#include "core/weave_coverage.h"
 #include "core/weave_layout.h"
 
 namespace weft {
@@ -75,12 +76,20 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
                   glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs);
 
 // R over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the layout
-// box-filtered over the footprint (core/weave_coverage.h), each of its largest floats shaded once
-// where it lies, weighted by its share of the pixel (piece_weight), its lobes widened by the tilts the
-// footprint spans along its float.
+// box-filtered over the footprint (core/weave_coverage.h), each of its largest floats shaded
+// where it lies (weave_float_response), weighted by its share of the pixel (piece_weight).
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
                            std::span<const SphericalGaussian> sgs);
+// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of piece i of coverage c, averaged over the piece's arc range
+// by three-point Gauss–Legendre, each node weighted by the footprint's density there and its lobes
+// widened by the tilts of its part of the range (at the middle arc alone, widened by the
+// footprint's tilts, where the range is a point). One shading at the middle cannot hold a float
+// that turns within the pixel: a satin's back turns 30° there, a velvet's pile jumps from −55° to
+// 55° along its float (its close-up 60 % off the resolved reference with one, 21 % with three;
+// docs/bench/weave/README.md). `lights`: each SG's horizon_light at frame.n.
+dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights);
 // The RMS tilt (radians) of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
 // curve's slope there times the spread, the slope the gentler of the two sides' within √3 spreads,
 // so that a jump of the curve (velvet's weft) does not count as a spread of tilts.
