@@ -159,7 +159,7 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
 }
 
 WeaveLighting SceneRenderer::weave_lighting_of(const Object& o, const SgLighting& sgs) const {
-  return weave_lighting(sgs, kMaxSgs, o.mask, o.sdf, o.source->mesh);
+  return weave_lighting(sgs, weave_max_lights_, o.mask, o.sdf, o.source->mesh);
 }
 
 void SceneRenderer::set_lighting(const SgLighting& sgs) { set_lighting(prepare_lighting(sgs)); }
@@ -190,6 +190,7 @@ void SceneRenderer::set_weave(bool on) {
     auto layer = std::make_unique<WeaveLayer>();
     layer->set_visible_vertices_only(visible_only_);
     layer->set_vertex_terms(!cloth_->weave_terms_per_pixel());
+    weave_max_lights_ = layer->max_lights();
     for (auto& o : objects_)
       if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
     weave_ = std::move(layer);

@@ -113,6 +113,7 @@ private:
   std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
   bool weave_on_ = false;
+  int weave_max_lights_ = 0;           // the layer's max_lights, read on the GL thread
   bool visible_only_ = true;  // set_visible_vertices_only
   bool depth_prepass_ = true;
   std::map<const TextureImage*, std::unique_ptr<ThreadMapTexture>> textures_;  // each image once

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <memory>
 #include <random>
 
 #include "core/cloth_bsdf.h"
@@ -39,10 +40,10 @@ SgLighting four_sgs() {
           SphericalGaussian{glm::normalize(dvec3(0.1, 0.9, 0.2)), 6.0, {0.8, 0.5, 0.3}}};
 }
 
-// Per pixel: ω_o, the frame, the tile point (u_st.xy), the fabric-level term, the four weights
-// V_k/Q_k and the four visibilities V_k; writes the factor (mode 0), the four weights weave_terms
-// gives (mode 1), its fabric-level term (mode 3) or the factor filtered over the footprint whose
-// tile-space derivatives are u_d's xy and zw (mode 2).
+// Per pixel: ω_o, the frame, the tile point (u_st.xy), the fabric-level term, the four Qs and the
+// four visibilities V_k; writes the factor (mode 0), the four Qs weave_terms gives (mode 1), its
+// fabric-level term (mode 3) or the factor filtered over the footprint whose tile-space
+// derivatives are u_d's xy and zw (mode 2).
 const char* kFs = R"(
 uniform highp sampler2D u_wo, u_n, u_u, u_st, u_fabric, u_q, u_d, u_vis;
 uniform int u_mode;
@@ -50,20 +51,21 @@ out vec4 colour;
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec3 wo = texelFetch(u_wo, p, 0).xyz, n = texelFetch(u_n, p, 0).xyz, u = texelFetch(u_u, p, 0).xyz;
-  vec4 q[1];
+  vec4 q[1], vis[1], weight[1];
   q[0] = texelFetch(u_q, p, 0);
+  vis[0] = texelFetch(u_vis, p, 0);
+  weave_weights(vis, q, weight);
   if (u_mode == 0) {
-    colour = vec4(weave_ratio(n, u, wo, texelFetch(u_st, p, 0).xy, texelFetch(u_fabric, p, 0).xyz, q), 1.0);
+    colour = vec4(weave_ratio(n, u, wo, texelFetch(u_st, p, 0).xy, texelFetch(u_fabric, p, 0).xyz, weight), 1.0);
     return;
   }
   if (u_mode == 2) {
     highp vec4 d = texelFetch(u_d, p, 0);
-    colour = vec4(weave_ratio_filtered(n, u, wo, texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, q), 1.0);
+    colour = vec4(weave_ratio_filtered(n, u, wo, texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, weight), 1.0);
     return;
   }
   vec3 fabric;
-  vec4 terms_q[1], vis[1];
-  vis[0] = texelFetch(u_vis, p, 0);
+  vec4 terms_q[1];
   weave_terms(n, u, wo, vis, fabric, terms_q);
   colour = u_mode == 1 ? terms_q[0] : vec4(fabric, 1.0);
 })";
@@ -77,23 +79,33 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   const ClothBsdf bsdf(fabric, kWeavePixelSamples);
   const WeaveLayout layout(fabric);
   const SgLighting sgs = four_sgs();
-  GlProgram program(fullscreen_triangle_vs(),
-                    program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl"}, weave_defines(1)) + kFs);
-  program.use();
-  upload_fabric(program, bsdf);
-  upload_weave_tilt_spreads(program, bsdf);
-  upload_weave_layout(program, layout, fabric, {1.0, 1.0});
-  std::vector<float> axes, powers, widen2;
-  for (const auto& g : sgs) {
-    const dvec3 p = sg_power(g);
-    widen2.push_back(float(weave_lobe_widening(g.sharpness)));
-    axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
-    powers.insert(powers.end(), {float(p.r), float(p.g), float(p.b)});
-  }
-  glUniform1i(program.uniform("u_sg_count"), 4);
-  glUniform3fv(program.uniform("u_sg_axis"), 4, axes.data());
-  glUniform3fv(program.uniform("u_sg_power"), 4, powers.data());
-  glUniform1fv(program.uniform("u_sg_widen2"), 4, widen2.data());
+  // The program with `defines` after the layer's, its uniforms set (left in use).
+  auto make_program = [&](const std::string& defines) {
+    auto program = std::make_unique<GlProgram>(
+        fullscreen_triangle_vs(),
+        program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl"}, weave_defines(1) + defines) + kFs);
+    program->use();
+    upload_fabric(*program, bsdf);
+    upload_weave_tilt_spreads(*program, bsdf);
+    upload_weave_layout(*program, layout, fabric, {1.0, 1.0});
+    std::vector<float> axes, powers, widen2;
+    for (const auto& g : sgs) {
+      const dvec3 p = sg_power(g);
+      widen2.push_back(float(weave_lobe_widening(g.sharpness)));
+      axes.insert(axes.end(), {float(g.axis.x), float(g.axis.y), float(g.axis.z)});
+      powers.insert(powers.end(), {float(p.r), float(p.g), float(p.b)});
+    }
+    glUniform1i(program->uniform("u_sg_count"), 4);
+    glUniform3fv(program->uniform("u_sg_axis"), 4, axes.data());
+    glUniform3fv(program->uniform("u_sg_power"), 4, powers.data());
+    glUniform1fv(program->uniform("u_sg_widen2"), 4, widen2.data());
+    return program;
+  };
+  // The layer's programs over per-pixel terms (each float at three arcs) and per-vertex terms (at
+  // its middle arc).
+  const std::unique_ptr<GlProgram> middle_program = make_program("#define WEAVE_MIDDLE_ARC\n");
+  const std::unique_ptr<GlProgram> along_program = make_program("");
+  const GlProgram& program = *along_program;
 
   constexpr int kW = 32, kH = 16, kCases = kW * kH;
   std::mt19937 rng(11), vis_rng(23);
@@ -129,9 +141,11 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     }
     terms[i] = weave_terms(bsdf, frames[i], wos[i], sgs, visibility[i]);
     for (int c = 0; c < 3; ++c) fab[4 * i + c] = float(terms[i].fabric[c]);
-    for (int k = 0; k < 4; ++k) q[4 * i + k] = float(terms[i].weight[k]);
+    for (int k = 0; k < 4; ++k) q[4 * i + k] = float(terms[i].q[k]);
+    // The twin's terms as the shader reads them (floats): its weights V_k/Q_k from the rounded Qs.
     terms[i].fabric = dvec3(fab[4 * i], fab[4 * i + 1], fab[4 * i + 2]);
-    for (int k = 0; k < 4; ++k) terms[i].weight[k] = q[4 * i + k];
+    for (int k = 0; k < 4; ++k)
+      if (terms[i].weight[k] > 0.0) terms[i].weight[k] = vis[4 * i + k] / double(q[4 * i + k]);
   }
   const std::vector<test::CaseInput> inputs = {{"u_wo", &wo}, {"u_n", &n}, {"u_u", &uu}, {"u_st", &st}, {"u_fabric", &fab}, {"u_q", &q}, {"u_d", &d}, {"u_vis", &vis}};
   glUniform1i(program.uniform("u_mode"), 0);
@@ -145,19 +159,13 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   program.use();
   glUniform1i(program.uniform("u_mode"), 3);
   const std::vector<float> fabrics = test::shade_cases(program, kW, kH, inputs);
+  middle_program->use();
+  glUniform1i(middle_program->uniform("u_mode"), 2);
+  const std::vector<float> filtered_middle = test::shade_cases(*middle_program, kW, kH, inputs);
   int compared = 0, threads = 0, filtered_compared = 0, mixed = 0;
   for (int i = 0; i < kCases; ++i) {
     const WeaveTerms twin = weave_terms(bsdf, frames[i], wos[i], sgs, visibility[i]);
-    // The weights V_k/Q_k: zero alike, else Q_k = V_k/weight alike.
-    for (int k = 0; k < 4; ++k) {
-      const double v = visibility[i][k];
-      if (twin.weight[k] == 0.0 || qs[4 * i + k] == 0.0f) {
-        EXPECT_EQ(qs[4 * i + k], twin.weight[k]) << "case " << i << " SG " << k;
-        continue;
-      }
-      const double q = v / twin.weight[k];
-      EXPECT_NEAR(v / qs[4 * i + k], q, 2e-3 * (1.0 + q)) << "case " << i << " SG " << k;
-    }
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k;
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(fabrics[4 * i + c], twin.fabric[c], 3e-3 * (1.0 + twin.fabric[c])) << "case " << i << " channel " << c;
     // A point within float round-off of a yarn's edge may fall either side: not a parity case.
@@ -180,6 +188,11 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     if (!jump) {
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(filtered[4 * i + c], expect_filtered[c], 3e-3 * (1.0 + expect_filtered[c])) << "filtered case " << i << " channel " << c;
+      const dvec3 expect_middle =
+          weave_ratio_filtered(bsdf, layout, frames[i], wos[i], sts[i], dxs[i], dys[i], terms[i], sgs, WeaveArcs::middle);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(filtered_middle[4 * i + c], expect_middle[c], 3e-3 * (1.0 + expect_middle[c]))
+            << "filtered case " << i << " channel " << c << ", middle arc";
       ++filtered_compared;
       const WeaveCoverage cover = weave_coverage(layout, sts[i], dxs[i], dys[i]);
       mixed += cover.share[0] > 0.0 && cover.share[1] > 0.0;

@@ -18,6 +18,17 @@ namespace weft::gpu {
 
 namespace {
 constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
+
+// Position, normal, warp and UV, each a whole vec4 in case the GL packs no tighter; then a vec4
+// per group of four lights for their visibility and, with vertex terms, another for their Q and
+// one for the fabric-level response.
+int weave_varying_components(int q_groups, bool vertex_terms) { return 16 + 4 * q_groups + (vertex_terms ? 4 * q_groups + 4 : 0); }
+int varying_limit() {
+  GLint out = 0, in = 0;
+  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
+  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
+  return std::min(out, in);
+}
 constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
 constexpr int kVisibilityUnit = 6;   // above the vertex pass's inputs (0–2) and its result (3)
 constexpr int kVisibilityWidth = 1024;
@@ -86,6 +97,13 @@ void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
   o.layout = std::make_unique<WeaveLayout>(fabric);
 }
 
+int WeaveLayer::max_lights() const {
+  const int limit = varying_limit();
+  int groups = kMaxSgs / 4;
+  while (groups > 1 && weave_varying_components(groups, vertex_terms_) > limit) --groups;
+  return 4 * groups;
+}
+
 bool WeaveLayer::resolves(size_t handle, const Camera& camera, int height) const {
   const Object& o = *objects_.at(handle);
   const glm::dvec3 nearest = glm::clamp(camera.position, o.box_min, o.box_max);
@@ -101,13 +119,7 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
   if (it != programs_.end()) return it->second;
   std::string defines = weave_defines(q_groups);
   Programs p;
-  // Position, normal, warp and UV, each a whole vec4 in case the GL packs no tighter; then a vec4
-  // per group of four lights (their weights or their visibility) and, with vertex terms, the
-  // fabric-level response.
-  GLint out = 0, in = 0;
-  glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
-  glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &in);
-  const int needed = 4 * q_groups + (vertex_terms ? 20 : 16), limit = std::min(out, in);
+  const int needed = weave_varying_components(q_groups, vertex_terms), limit = varying_limit();
   if (needed > limit)
     throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " lights need " + std::to_string(needed) +
                    " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
@@ -117,7 +129,8 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
         program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
                         "weave_visibility.glsl", "weave_vertex_pass.frag"},
                        defines));
-    defines += "#define WEAVE_VERTEX_TERMS\n";
+    // Over per-vertex terms each float is shaded at its middle arc (WeaveArcs::middle).
+    defines += "#define WEAVE_VERTEX_TERMS\n#define WEAVE_MIDDLE_ARC\n";
   }
   p.draw = std::make_unique<GlProgram>(
       program_source({"weave_visibility.glsl", "weave_layer.vert"}, defines),
@@ -144,8 +157,8 @@ VertexPass& WeaveLayer::vertex_pass(Object& o) {
 void WeaveLayer::set_lighting(size_t handle, const WeaveLighting& lighting) {
   Object& o = *objects_.at(handle);
   const SgLighting& lights = lighting.lights;
-  if (lights.size() > size_t(kMaxSgs))
-    throw GpuError("weave layer: at most " + std::to_string(kMaxSgs) + " lights, got " + std::to_string(lights.size()));
+  if (lights.size() > size_t(max_lights()))
+    throw GpuError("weave layer: at most " + std::to_string(max_lights()) + " lights on this GL, got " + std::to_string(lights.size()));
   const size_t vertices = o.source->positions.size();
   if (!lighting.visibility.empty() && lighting.visibility.size() != vertices * lights.size())
     throw GpuError("weave layer: visibility of " + std::to_string(lighting.visibility.size()) + " values for " +

@@ -50,9 +50,12 @@ public:
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
   // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
+  // The most lights set_lighting takes under this GL's varyings (kMaxSgs at most; the per-vertex
+  // terms carry two vec4 a group of four). Needs a current GLES 3 context.
+  int max_lights() const;
   // The lights the factor takes and each vertex's visibility of them (weave_lighting, with at
   // most kMaxSgs lights; its visibility of this object's mesh or empty). Throws GpuError for
-  // lighting of another mesh or more lights than the shaders hold.
+  // lighting of another mesh or more lights than the shaders hold (max_lights).
   void set_lighting(size_t handle, const WeaveLighting& lighting);
   // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
   // depth or alpha writes); restores blending and depth state after. Throws GpuError before the

@@ -1,7 +1,7 @@
-// The weave layer's mesh with its UVs. With WEAVE_VERTEX_TERMS, also each vertex's fabric-level
-// response and per-light weight from the vertex pass (weave_vertex_pass.frag), read by gl_VertexID
-// and interpolated; without, each vertex's per-light visibility (weave_visibility.glsl),
-// interpolated for weave_layer.frag, which computes the terms per pixel.
+// The weave layer's mesh with its UVs and each vertex's visibility of every light
+// (weave_visibility.glsl). With WEAVE_VERTEX_TERMS, also each vertex's fabric-level response and
+// per-light Q from the vertex pass (weave_vertex_pass.frag), read by gl_VertexID and interpolated;
+// without, weave_layer.frag computes them per pixel.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_warp;
@@ -16,19 +16,17 @@ uniform highp sampler2D u_vertex_radiance;
 uniform int u_vertex_width;
 uniform int u_vertex_rows;
 out vec3 v_fabric;
-out vec4 v_weight[Q_GROUPS];
-#else
-out vec4 v_visibility[Q_GROUPS];
+out vec4 v_q[Q_GROUPS];
 #endif
+out vec4 v_visibility[Q_GROUPS];
 invariant gl_Position;  // as visible_vertices.vert's, which marks the vertices this draw shows
 void main() {
 #ifdef WEAVE_VERTEX_TERMS
   ivec2 texel = ivec2(gl_VertexID % u_vertex_width, gl_VertexID / u_vertex_width);
   v_fabric = texelFetch(u_vertex_radiance, texel, 0).rgb;
-  for (int g = 0; g < Q_GROUPS; ++g) v_weight[g] = texelFetch(u_vertex_radiance, texel + ivec2(0, (g + 1) * u_vertex_rows), 0);
-#else
-  for (int g = 0; g < Q_GROUPS; ++g) v_visibility[g] = weave_visibility(gl_VertexID, g);
+  for (int g = 0; g < Q_GROUPS; ++g) v_q[g] = texelFetch(u_vertex_radiance, texel + ivec2(0, (g + 1) * u_vertex_rows), 0);
 #endif
+  for (int g = 0; g < Q_GROUPS; ++g) v_visibility[g] = weave_visibility(gl_VertexID, g);
   v_position = a_position;
   v_normal = a_normal;
   v_warp = a_warp;

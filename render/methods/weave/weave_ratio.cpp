@@ -96,6 +96,7 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
       sum += fabric.threads[j].coverage * thread_sum / double(bsdf.sample_count(j));
     }
     const double weight = lit && q > kQFloor ? (visibility.empty() ? 1.0 : visibility[i]) / q : 0.0;
+    t.q.push_back(q);
     t.weight.push_back(weight);
     t.fabric += weight * light.share * sg_power(g) * sum;
   }
@@ -163,39 +164,55 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
 }
 
 dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
-                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights) {
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights,
+                           WeaveArcs arcs) {
   const WeavePiece& p = c.piece[i];
   const Fabric& fabric = bsdf.fabric();
-  const double mid = 0.5 * (p.arc_lo + p.arc_hi), half = 0.5 * (p.arc_hi - p.arc_lo);
-  if (half > 0.0) {
-    // Three-point Gauss–Legendre over the overlap, each node weighted by the footprint's density
-    // there and its lobes widened by the tilts of the part of the range it stands for (its
-    // weight's share of the range, as a uniform spread).
-    constexpr double kNode = 0.7745966692414834, kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
-    dvec3 sum(0.0);
-    double total = 0.0;
+  // Once at the middle arc, widened by the tilts the whole footprint spans along the float.
+  auto middle = [&] {
+    return resolved_response(bsdf, frame, wo, p.thread, p.arc, weave_tilt_spread(fabric, p.thread, p.arc, c.arc_spread[p.thread]),
+                             terms, sgs, lights);
+  };
+  if (arcs == WeaveArcs::middle || p.arc_hi <= p.arc_lo) return middle();
+  // Three-point Gauss–Legendre over each stretch of the range between the curve's jumps, each node
+  // weighted by the footprint's density there and its lobes widened by the tilts of the part of
+  // the stretch it stands for (its weight's share, as a uniform spread).
+  constexpr double kNode = 0.7745966692414834, kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+  dvec3 sum(0.0);
+  double total = 0.0;
+  auto stretch = [&](double lo, double hi) {
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
     for (int m = 0; m < 3; ++m) {
-      const double a = mid + (m - 1) * kNode * half, w = kWeights[m] * arc_density(c, p, a);
+      const double a = mid + (m - 1) * kNode * half, w = kWeights[m] * half * arc_density(c, p, a);
       if (w <= 0.0) continue;
       const double part = kWeights[m] * 2.0 * half / std::sqrt(12.0);
       sum += w * resolved_response(bsdf, frame, wo, p.thread, a, weave_tilt_spread(fabric, p.thread, a, part), terms, sgs, lights);
       total += w;
     }
-    if (total > 0.0) return sum / total;
+  };
+  // A zero-length segment of the curve is a jump of the tilt at that arc (the velvet's pile).
+  const TangentCurve& curve = fabric.threads[p.thread].curve;
+  double from = p.arc_lo, arc = 0.0;
+  for (double length : curve.lengths()) {
+    if (length == 0.0) {
+      const double jump = arc / curve.total_length();
+      if (jump > from && jump < p.arc_hi) stretch(from, jump), from = jump;
+    }
+    arc += length;
   }
-  return resolved_response(bsdf, frame, wo, p.thread, p.arc, weave_tilt_spread(fabric, p.thread, p.arc, c.arc_spread[p.thread]),
-                           terms, sgs, lights);
+  stretch(from, p.arc_hi);
+  return total > 0.0 ? sum / total : middle();
 }
 
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
-                           std::span<const SphericalGaussian> sgs) {
+                           std::span<const SphericalGaussian> sgs, WeaveArcs arcs) {
   const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
   const std::vector<HorizonLight> lights = horizon_lights(sgs, frame.n);
   dvec3 resolved(0.0);
   for (int i = 0; i < kWeaveCoveragePieces; ++i) {
     if (c.piece[i].thread < 0) break;
-    resolved += piece_weight(c, i) * weave_float_response(bsdf, frame, wo, c, i, terms, sgs, lights);
+    resolved += piece_weight(c, i) * weave_float_response(bsdf, frame, wo, c, i, terms, sgs, lights, arcs);
   }
   return ratio_to(resolved, terms.fabric);
 }

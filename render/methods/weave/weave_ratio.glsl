@@ -65,9 +65,8 @@ vec3 resolved_scattering(ResolvedView view, vec3 n, int j, vec3 wi, float widen2
 
 // The pixel's fabric-level terms (weave_terms in weave_ratio.h): Σ_k V_k P_k·integrand(ξ_k, ω_o)
 // over the program's tangent samples, each widened by the SG's spread and its own tilt spread, and
-// each SG's weight V_k/Q_k (0 where Q_k ≤ Q_FLOOR or the light is below the horizon), four to a
-// vec4; `vis`: V_k, four to a vec4.
-void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, out vec4 weight[Q_GROUPS]) {
+// each SG's Q, four to a vec4; `vis`: V_k, four to a vec4.
+void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, out vec4 q[Q_GROUPS]) {
   // One sweep over the samples, each sample's view taken once for all the SGs.
   vec3 sums[MAX_SGS];
   float qs[MAX_SGS];
@@ -92,19 +91,24 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, o
     }
   }
   fabric = vec3(0.0);
-  bool lit = dot(n, wo) > 0.0;
-  for (int g = 0; g < Q_GROUPS; ++g) weight[g] = vec4(0.0);
+  for (int g = 0; g < Q_GROUPS; ++g) q[g] = vec4(0.0);
   for (int k = 0; k < u_sg_count; ++k) {
-    bool above = lit && lights[k].share > 0.0 && dot(n, lights[k].axis) > 0.0;
-    float w = above && qs[k] > Q_FLOOR ? vis[k >> 2][k & 3] / qs[k] : 0.0;
-    weight[k >> 2][k & 3] = w;
-    fabric += w * lights[k].share * u_sg_power[k] * sums[k];
+    q[k >> 2][k & 3] = qs[k];
+    if (qs[k] > Q_FLOOR && lights[k].share > 0.0)
+      fabric += vis[k >> 2][k & 3] * lights[k].share * u_sg_power[k] * sums[k] / qs[k];
   }
+}
+
+// Each light's weight in the resolved response, V_k/Q_k (0 where Q_k ≤ Q_FLOOR): weave_terms' Q and
+// the visibility the pixel has (its own, or both interpolated from the vertices).
+void weave_weights(vec4 vis[Q_GROUPS], vec4 q[Q_GROUPS], out vec4 weight[Q_GROUPS]) {
+  for (int g = 0; g < Q_GROUPS; ++g)
+    for (int c = 0; c < 4; ++c) weight[g][c] = q[g][c] > Q_FLOOR ? vis[g][c] / q[g][c] : 0.0;
 }
 
 // Σ_k P_k f_s M P cos θ_i · V_k/Q_k of thread j's sample at arc position `arc` of its float, its
 // lobes widened by `tilt_spread` (RMS, radians) besides each SG's own spread; SG k is the point
-// light lights[k] (horizon_lights at n); `weight`: weave_terms' V_k/Q_k.
+// light lights[k] (horizon_lights at n); `weight`: weave_weights' V_k/Q_k.
 vec3 resolved_response(vec3 n, vec3 u, vec3 wo, int j, float arc, float tilt_spread, vec4 weight[Q_GROUPS],
                        HorizonLight lights[MAX_SGS]) {
   ResolvedView view = resolved_view(n, u, j, curve_tilt(j, arc), wo);
@@ -127,8 +131,8 @@ vec3 ratio_to(vec3 resolved, vec3 fabric) {
   return ratio;
 }
 
-// The factor at tile point st, given weave_terms' fabric-level response `fabric` and weights
-// (packed four to a vec4), the pixel's own or interpolated from the vertices.
+// The factor at tile point st, given weave_terms' fabric-level response `fabric` and the lights'
+// weights (weave_weights, packed four to a vec4).
 vec3 weave_ratio(vec3 n, vec3 u, vec3 wo, highp vec2 st, vec3 fabric, vec4 weight[Q_GROUPS]) {
   WeaveSample w = weave_at(st);
   if (w.thread < 0) return vec3(0.0);
@@ -155,27 +159,46 @@ float weave_tilt_spread(int j, float arc, float arc_spread) {
   return slope < 1e30 ? slope * arc_spread : 0.0;
 }
 
-// weave_float_response: piece i of coverage c averaged over its arc range at three Gauss–Legendre
-// arcs, each weighted by the footprint's density there and widened by the tilts of its part of the
-// range (at its middle arc, widened by the footprint's tilts, where the range is a point).
+// weave_float_response's three Gauss–Legendre arcs over one stretch [lo, hi] of piece i's range,
+// each weighted by the footprint's density there (times the stretch's half-length) and widened by
+// the tilts of its part of the stretch; adds to sum and total.
+void weave_stretch(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, float lo, float hi, vec4 weight[Q_GROUPS],
+                   HorizonLight lights[MAX_SGS], inout vec3 sum, inout float total) {
+  int j = c.piece_thread[i];
+  float mid = 0.5 * (lo + hi), half_ = 0.5 * (hi - lo);
+  for (int m = 0; m < 3; ++m) {
+    float a = mid + float(m - 1) * 0.7745966692414834 * half_;
+    float gl = m == 1 ? 8.0 / 18.0 : 5.0 / 18.0;
+    float w = gl * half_ * arc_density(c, i, a);
+    if (w <= 0.0) continue;
+    sum += w * resolved_response(n, u, wo, j, a, weave_tilt_spread(j, a, gl * 2.0 * half_ / sqrt(12.0)), weight, lights);
+    total += w;
+  }
+}
+
+// weave_float_response: piece i of coverage c averaged over its arc range, stretch by stretch
+// between the curve's jumps (a zero-length segment), at three Gauss–Legendre arcs each (at its
+// middle arc, widened by the footprint's tilts, where the range is a point, and always with
+// WEAVE_MIDDLE_ARC: weave_ratio.h's WeaveArcs::middle).
 vec3 weave_float_response(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, vec4 weight[Q_GROUPS],
                           HorizonLight lights[MAX_SGS]) {
   int j = c.piece_thread[i];
+#ifndef WEAVE_MIDDLE_ARC
   float lo = c.piece_arc_lo[i], hi = c.piece_arc_hi[i];
-  float mid = 0.5 * (lo + hi), half_ = 0.5 * (hi - lo);
-  if (half_ > 0.0) {
+  if (hi > lo) {
     vec3 sum = vec3(0.0);
-    float total = 0.0;
-    for (int m = 0; m < 3; ++m) {
-      float a = mid + float(m - 1) * 0.7745966692414834 * half_;
-      float w = (m == 1 ? 8.0 / 18.0 : 5.0 / 18.0) * arc_density(c, i, a);
-      if (w <= 0.0) continue;
-      float part = (m == 1 ? 8.0 / 18.0 : 5.0 / 18.0) * 2.0 * half_ / sqrt(12.0);
-      sum += w * resolved_response(n, u, wo, j, a, weave_tilt_spread(j, a, part), weight, lights);
-      total += w;
+    float total = 0.0, from = lo;
+    int base = j * MAX_CURVE_POINTS;
+    for (int k = 0; k + 1 < u_curve_points[j]; ++k) {
+      float jump = u_curve_arcs[base + k];
+      if (u_curve_arcs[base + k + 1] > jump || jump <= from || jump >= hi) continue;
+      weave_stretch(n, u, wo, c, i, from, jump, weight, lights, sum, total);
+      from = jump;
     }
+    weave_stretch(n, u, wo, c, i, from, hi, weight, lights, sum, total);
     if (total > 0.0) return sum / total;
   }
+#endif
   float arc = c.piece_arc[i];
   return resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), weight, lights);
 }

@@ -57,14 +57,14 @@ inline constexpr int kWeavePixelSamples = 16;
 
 // A pixel's fabric-level terms: its response to the SGs as point lights (horizon_light: F_k·P_k
 // along ξ'_k), Σ_k V_k F_k P_k·integrand(ξ'_k, ω_o) with each lobe widened by the SG's spread and
-// each sample's by its arc's tilts, and each light's weight V_k/Q_k (0 where Q_k is below kQFloor
-// or the light below the horizon): what the resolved response multiplies each light by.
+// each sample's by its arc's tilts, each light's Q_k, and its weight V_k/Q_k (0 where Q_k is below
+// kQFloor or the light below the horizon): what the resolved response multiplies each light by.
 // Per pixel, not per vertex: up close a triangle spans tens of degrees of view, and the sharp lobes
 // of an interpolated response miss the pixel's own (the factor's mean over a repeat was off by
 // tens of per cent on a 16×16 swatch).
 struct WeaveTerms {
   dvec3 fabric{0.0};
-  std::vector<double> weight;
+  std::vector<double> q, weight;
 };
 // `bsdf` with the samples the caller wants (the layer: kWeavePixelSamples per thread);
 // `visibility`: V_k per SG (empty: all 1).
@@ -78,18 +78,24 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
 // R over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the layout
 // box-filtered over the footprint (core/weave_coverage.h), each of its largest floats shaded
 // where it lies (weave_float_response), weighted by its share of the pixel (piece_weight).
+// `along`: WeaveArcs::middle shades each float once at its middle arc, widened by the footprint's
+// tilts (the layer over per-vertex terms: there the terms' interpolation is the larger error, and
+// three arcs a float would double the layer's frame on llvmpipe).
+enum class WeaveArcs { along, middle };
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
-                           std::span<const SphericalGaussian> sgs);
-// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of piece i of coverage c, averaged over the piece's arc range
-// by three-point Gauss–Legendre, each node weighted by the footprint's density there and its lobes
-// widened by the tilts of its part of the range (at the middle arc alone, widened by the
-// footprint's tilts, where the range is a point). One shading at the middle cannot hold a float
-// that turns within the pixel: a satin's back turns 30° there, a velvet's pile jumps from −55° to
-// 55° along its float (its close-up 60 % off the resolved reference with one, 21 % with three;
+                           std::span<const SphericalGaussian> sgs, WeaveArcs arcs = WeaveArcs::along);
+// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of piece i of coverage c, averaged over the piece's arc range:
+// stretch by stretch between the curve's jumps (zero-length segments), each by three-point
+// Gauss–Legendre, every node weighted by the footprint's density there and its lobes widened by
+// the tilts of its part of the stretch (at the middle arc alone, widened by the footprint's
+// tilts, where the range is a point). One shading at the middle cannot hold a float that turns
+// within the pixel: a satin's back turns 30° there, a velvet's pile jumps from −55° to 55° along
+// its float (its close-up 61 % off the resolved reference with one arc;
 // docs/bench/weave/README.md). `lights`: each SG's horizon_light at frame.n.
 dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
-                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights);
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights,
+                           WeaveArcs arcs);
 // The RMS tilt (radians) of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
 // curve's slope there times the spread, the slope the gentler of the two sides' within √3 spreads,
 // so that a jump of the curve (velvet's weft) does not count as a spread of tilts.

@@ -1,6 +1,6 @@
 // The weave layer's terms per vertex (methods/iwasaki/vertex_pass.h), for a method that shades per
 // vertex: at every mesh vertex, block 0 the fabric-level response to the SGs as point lights and
-// blocks 1 … Q_GROUPS each light's weight V_k/Q_k, four to a texel (weave_terms, V_k the vertex's
+// blocks 1 … Q_GROUPS each light's Q, four to a texel (weave_terms, with the vertex's
 // weave_visibility). The layer's vertex shader
 // interpolates them as the method interpolates its own shading, so the factor's ratio takes the
 // method's interpolation out with it. Needs microcylinder.glsl, vertex_pass.glsl,
@@ -21,13 +21,13 @@ void main() {
   if (dot(n, wo) < 0.0) n = -n;  // two-sided: the side facing the eye
   vec3 u = normalize(warp - dot(warp, n) * n);
   vec3 fabric;
-  vec4 vis[Q_GROUPS], weight[Q_GROUPS];
+  vec4 vis[Q_GROUPS], q[Q_GROUPS];
   for (int g = 0; g < Q_GROUPS; ++g) vis[g] = weave_visibility(t.i, g);
-  weave_terms(n, u, wo, vis, fabric, weight);
+  weave_terms(n, u, wo, vis, fabric, q);
   if (t.k == 0) {
     o_value = vec4(fabric, 1.0);
     return;
   }
   for (int g = 0; g < Q_GROUPS; ++g)
-    if (g == t.k - 1) o_value = weight[g];
+    if (g == t.k - 1) o_value = q[g];
 }
