@@ -63,9 +63,13 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
       obj->fabric = object_fabric(o, fabrics[cloth]);
       obj->handle = cloth_->add_object(i, o.mesh, obj->fabric);
       if (bundle_) {
-        obj->sdf = checked_visibility(*bundle_, i, o.mesh);
+        // Optional for the layer: what was baked for another mesh is left out (the method's own
+        // checks name the mismatch where it needs the data).
+        const size_t vertices = o.mesh.positions.size();
+        const auto v = bundle_->visibility.find(i);
+        if (v != bundle_->visibility.end() && v->second.vertex_count() == vertices) obj->sdf = &v->second;
         const auto m = bundle_->masks.find(i);
-        if (m != bundle_->masks.end() && m->second.vertex_count() == o.mesh.positions.size()) obj->mask = &m->second;
+        if (m != bundle_->masks.end() && m->second.vertex_count() == vertices) obj->mask = &m->second;
       }
       if (o.textured() || o.normal_map) {
         const ThreadMaps maps = thread_maps_of(
