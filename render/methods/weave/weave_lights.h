@@ -3,8 +3,8 @@
 // each broad lobe split into a few sharper ones, and each light's share that the object's own
 // geometry leaves open at every vertex. The factor takes an SG as one point light; a thread's
 // response to a broad lobe is its response spread over tens of degrees, not at one direction
-// (an armchair cushion under an interior map: 11.4 % against the resolved reference with the
-// lobes whole and no occlusion, 8.0 % with both below; docs/bench/weave/README.md).
+// (an armchair cushion under an interior map: 10.9 % off the resolved reference with the lobes
+// whole and no occlusion, 7.6 % with both below; docs/bench/weave/README.md).
 #include <vector>
 
 #include "core/spherical_gaussian.h"
