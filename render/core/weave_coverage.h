@@ -9,6 +9,9 @@
 // different places along them (a satin's neighbouring warp floats are half a float apart), so the
 // few largest floats are kept apart, each with its own arc. C++ twin of weave_coverage() in
 // methods/weave/weave_layout.glsl.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "core/weave_layout.h"
@@ -54,16 +57,82 @@ double arc_density(const WeaveCoverage& c, const WeavePiece& p, double x);
 // one float before the one under the centre.
 inline constexpr int kWeaveCoverageReach = 2;
 
-WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy);
-
-// The weight of piece i in the pixel's shading: its thread's share × its part of that thread's
-// kept pieces; 0 for an unused slot. The weights sum to share[0] + share[1].
-double piece_weight(const WeaveCoverage& c, int i);
-
 // The mass in [lo, hi] of a box of width a convolved with a box of width b, both centred at 0
 // (the footprint's marginal along one axis); widths may be 0 (a step).
 double box_pair_mass(double lo, double hi, double a, double b);
 // Its density at x (0 where both widths are 0).
 double box_pair_density(double x, double a, double b);
+
+WeaveCoverage weave_coverage(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy);
+
+// The footprint's two box widths along each thread's float, in arc (WeaveCoverage::arc_box).
+struct WeaveArcBoxes {
+  double box[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+};
+WeaveArcBoxes weave_arc_boxes(const WeaveLayout& layout, glm::dvec2 dx, glm::dvec2 dy);
+
+// Calls visit(piece) for every float with a share of the footprint (rows and floats within
+// kWeaveCoverageReach of its centre), in no particular order: what weave_coverage keeps the
+// largest of, and what a shading cheap enough to visit every float sums (weave_float_table.h).
+template <class Visit>
+void for_each_weave_float(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, Visit&& visit);
+
+namespace detail {
+// Float j over the rectangle [s0, s1] × [t0, t1] of the footprint centred at c (box widths a, b,
+// half-extent half); arc_at gives its arc at (s, t). share 0: not in the footprint.
+template <class ArcAt>
+WeavePiece weave_float_piece(int j, double s0, double s1, double t0, double t1, glm::dvec2 c, glm::dvec2 a, glm::dvec2 b,
+                             glm::dvec2 half, ArcAt arc_at) {
+  WeavePiece p;
+  p.share = box_pair_mass(s0 - c.x, s1 - c.x, a.x, b.x) * box_pair_mass(t0 - c.y, t1 - c.y, a.y, b.y);
+  if (p.share <= 0.0) return p;
+  const double s_lo = std::max(s0, c.x - half.x), s_hi = std::min(s1, c.x + half.x);
+  const double t_lo = std::max(t0, c.y - half.y), t_hi = std::min(t1, c.y + half.y);
+  p.thread = j;
+  p.arc = std::clamp(arc_at(0.5 * (s_lo + s_hi), 0.5 * (t_lo + t_hi)), 0.0, 1.0);
+  p.arc_lo = std::clamp(arc_at(s_lo, t_lo), 0.0, 1.0);
+  p.arc_hi = std::clamp(arc_at(s_hi, t_hi), 0.0, 1.0);
+  p.centre = arc_at(c.x, c.y);
+  return p;
+}
+}  // namespace detail
+
+template <class Visit>
+void for_each_weave_float(const WeaveLayout& layout, glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, Visit&& visit) {
+  const double w = layout.yarn_width(), f = layout.warp_share();
+  if (w <= 0.0) return;
+  const double rows = layout.rows();
+  const glm::dvec2 c = st - glm::floor(st);  // the tile's own coordinates keep precision
+  const glm::dvec2 a = glm::abs(dx), b = glm::abs(dy);
+  const glm::dvec2 half = 0.5 * (a + b);
+  const int kc = int(std::floor(c.y * rows));
+  const int k0 = std::max(int(std::floor((c.y - half.y) * rows)), kc - kWeaveCoverageReach);
+  const int k1 = std::min(int(std::floor((c.y + half.y) * rows)), kc + kWeaveCoverageReach);
+  for (int k = k0; k <= k1; ++k) {
+    const int row = ((k % layout.rows()) + layout.rows()) % layout.rows();
+    const double o = double(row * layout.shift()) / rows;
+    const double t0 = k / rows, t1 = (k + 1) / rows;
+    const int mc = int(std::floor(c.x - o));
+    const int m0 = std::max(int(std::floor(c.x - half.x - o)) - 1, mc - kWeaveCoverageReach);
+    const int m1 = std::min(int(std::floor(c.x + half.x - o)), mc + kWeaveCoverageReach);
+    for (int m = m0; m <= m1; ++m) {
+      const double s = o + m;
+      // The warp floats over [s, s + f) in the middle w of the row.
+      const WeavePiece warp = detail::weave_float_piece(0, s, s + f, t0 + (0.5 - 0.5 * w) / rows, t0 + (0.5 + 0.5 * w) / rows, c,
+                                                        a, b, half, [&](double sm, double) { return f > 0.0 ? (sm - s) / f : 0.0; });
+      if (warp.share > 0.0) visit(warp);
+      // The weft crosses the whole row in the middle w of the rest.
+      const double g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
+      const WeavePiece weft =
+          detail::weave_float_piece(1, g0, g1, t0, t1, c, a, b, half, [&](double, double tm) { return (tm - t0) * rows; });
+      if (weft.share > 0.0) visit(weft);
+    }
+  }
+}
+
+// The weight of piece i in the pixel's shading: its thread's share × its part of that thread's
+// kept pieces; 0 for an unused slot. The weights sum to share[0] + share[1].
+double piece_weight(const WeaveCoverage& c, int i);
+
 
 }  // namespace weft

@@ -38,6 +38,7 @@ struct SceneRenderer::Object {
   size_t handle = 0;  // the cloth's handle in cloth_
   Fabric fabric;      // the cloth's, as drawn (knob edits included)
   size_t weave_handle = 0;
+  bool weave_reachable = true;  // set_weave_range: some camera of the range can show its weave
   const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
   // The cloth's baked visibility, for the weave layer's lights (null: none baked).
   const ObjectVisibility* sdf = nullptr;
@@ -128,7 +129,7 @@ SceneRenderer::PreparedLighting SceneRenderer::prepare_lighting(const SgLighting
     const Object& o = *objects_[k];
     if (o.cloth) {
       out.cloth[k] = cloth_->prepare_lighting(o.handle, sgs);
-      if (weave_on_) out.weave[k] = weave_lighting_of(o, sgs);
+      if (weave_on_ && o.weave_reachable) out.weave[k] = weave_lighting_of(o, sgs);
       continue;
     }
     const auto& m = o.source->mesh;
@@ -157,8 +158,8 @@ void SceneRenderer::set_lighting(const PreparedLighting& lighting) {
       continue;
     }
     if (lighting.cloth[k]) cloth_->set_lighting(o.handle, sgs_, *lighting.cloth[k]);
-    if (weave_on_) weave_->set_lighting(o.weave_handle, lighting.weave.size() > k && lighting.weave[k] ? *lighting.weave[k]
-                                                                                                       : weave_lighting_of(o, sgs_));
+    if (weave_on_ && o.weave_reachable)
+      weave_->set_lighting(o.weave_handle, lighting.weave.size() > k && lighting.weave[k] ? *lighting.weave[k] : weave_lighting_of(o, sgs_));
   }
 }
 
@@ -202,8 +203,29 @@ void SceneRenderer::set_weave(bool on) {
   // The lights as they are now: set_lighting leaves the layer's alone while it is off.
   if (on && !weave_on_)
     for (auto& o : objects_)
-      if (o->cloth) weave_->set_lighting(o->weave_handle, weave_lighting_of(*o, sgs_));
+      if (o->cloth && o->weave_reachable) weave_->set_lighting(o->weave_handle, weave_lighting_of(*o, sgs_));
   weave_on_ = on;
+}
+
+size_t SceneRenderer::set_weave_range(std::span<const OrbitingCamera> cameras, int width, int height) {
+  if (!weave_) return 0;
+  size_t reachable = 0;
+  for (auto& o : objects_) {
+    if (!o->cloth) continue;
+    const bool was = o->weave_reachable;
+    o->weave_reachable = false;
+    for (const OrbitingCamera& c : cameras)
+      if (weave_->reach(o->weave_handle).nearest_footprint_orbiting(c.camera.position, c.pivot,
+                                                                    weave_view(c.camera, width, height).corner_pixel) <
+          kWeaveRangeMargin * kWeaveCoarseFootprint) {
+        o->weave_reachable = true;
+        break;
+      }
+    reachable += o->weave_reachable;
+    // Now in range: its lights as they are (the next lighting change keeps them).
+    if (o->weave_reachable && !was && weave_on_) weave_->set_lighting(o->weave_handle, weave_lighting_of(*o, sgs_));
+  }
+  return reachable;
 }
 
 size_t SceneRenderer::shadowed_lambertian_objects() const {
@@ -284,12 +306,14 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
         glDepthMask(GL_TRUE);
       }
     }
-    if (pass == 0 && weave_on_ && !see_through)
+    if (pass == 0 && weave_on_ && !see_through) {
+      const WeaveView view = weave_view(camera, width, height);
       for (auto& o : objects_)
-        if (o->cloth && weave_->resolves(o->weave_handle, camera, height)) {
+        if (o->cloth && o->weave_reachable && weave_->resolves(o->weave_handle, view)) {
           const StageScope stage(Stage::weave);
           weave_->draw(o->weave_handle, vp, glm::vec3(camera.position));
         }
+    }
     if (pass == 0) draw_backdrop();
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

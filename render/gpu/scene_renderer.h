@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,19 @@ public:
   // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
   void set_weave(bool on);
   bool weave() const { return weave_on_; }
+  // The cameras a viewer can be shown (the kiosk's zoom path), each turned about the vertical
+  // through its pivot by any angle (the turntable), on a width × height image: a cloth object no
+  // such camera can show a thread of gets no weave work at all (no lights, no visibility at a
+  // lighting change, no draw). Every object is in range until this is called; the path must be
+  // sampled finely enough that the eye moves less than a tenth of its distance to the cloth
+  // between samples (kWeaveRangeMargin keeps that margin). Returns the cloth objects in range
+  // (0 while the weave was never armed).
+  struct OrbitingCamera {
+    Camera camera;
+    glm::dvec3 pivot{0.0};
+  };
+  static constexpr double kWeaveRangeMargin = 1.25;
+  size_t set_weave_range(std::span<const OrbitingCamera> cameras, int width, int height);
   // Renders into the currently bound framebuffer of size width × height: the backdrop first,
   // then opaque surfaces, then see-through cloth blended over them.
   void draw(const Camera& camera, int width, int height);

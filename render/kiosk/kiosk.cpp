@@ -148,6 +148,7 @@ void Kiosk::start_renderer() {
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(sb.scene);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
+  arm_weave_range(*renderer_, sb, closeup_, width_, height_);
   colourways_ = std::make_unique<KioskColourways>(sb);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (config_.label == "on" && !label_) {

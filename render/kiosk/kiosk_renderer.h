@@ -22,4 +22,9 @@ std::unique_ptr<gpu::SceneRenderer> make_kiosk_renderer(const SceneBundle& sb, c
                                                         const methods::RuntimeMethod& method,
                                                         std::shared_ptr<const IwasakiBundleData> iwasaki);
 
+// The weave layer's range (SceneRenderer::set_weave_range): the kiosk's zoom path from the scene's
+// view to `closeup` (camera_zoom.h's dolly), each camera turned about the turntable's pivot as
+// the kiosk turns it, on a width × height frame. Logs the cloth objects out of reach.
+void arm_weave_range(gpu::SceneRenderer& renderer, const SceneBundle& sb, const Camera& closeup, int width, int height);
+
 }  // namespace weft

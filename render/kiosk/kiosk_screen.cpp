@@ -12,6 +12,7 @@
 #include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk.h"
 #include "kiosk/kiosk_log.h"
+#include "kiosk/kiosk_renderer.h"
 #include "kiosk/kiosk_status.h"
 
 namespace weft {
@@ -65,6 +66,7 @@ void Kiosk::resize_frame() {
   height_ = display_->height();
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
+  arm_weave_range(*renderer_, *scene_, closeup_, width_, height_);
   renderer_->refresh_all();
   draw_frame(shown_turn_);
   ++drawn_;

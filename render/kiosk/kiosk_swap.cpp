@@ -42,6 +42,7 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   colourways_ = std::make_unique<KioskColourways>(*scene_);
   closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(scene_->scene);
+  arm_weave_range(*renderer_, *scene_, closeup_, width_, height_);
   shown_ = {config_.bundle, false, ""};
   if (knobs_differ.empty())
     kiosk_log_info("knob state carried over (the same fabric presets and the same fabric on the cloth)");

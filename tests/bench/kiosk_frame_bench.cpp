@@ -21,6 +21,9 @@
 // computed (EXR, linear, NaN kept), and a line per case counting the cloth pixels that are not
 // finite or black in each (a driver's NaN shows as black cloth on screen);
 // WEFT_KIOSK_PLAIN_REUSE: no clock for the renderer, so kept values are not extrapolated;
+// WEFT_KIOSK_ZOOMS: zoom positions ("0,0.25,0.5,0.75,1"; default "0": the scene's view), each the
+// camera dollied that far toward the kiosk's close-up as `weft run --zoom` places it;
+// WEFT_KIOSK_WEAVE: "on" (the default, as the kiosk arms it), "off" or "on,off": the weave layer;
 // WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
 #include <gtest/gtest.h>
 
@@ -43,6 +46,7 @@
 #include "gl/frame_profile.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
+#include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk_bundle.h"
 #include "kiosk/kiosk_renderer.h"
 #include "kiosk/turntable.h"
@@ -165,6 +169,9 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
     std::string name() const { return broad > 1 ? "broad " + std::to_string(broad) : std::to_string(all); }
   };
   const std::vector<std::string> vertex_sets = split(env_or("WEFT_KIOSK_VERTICES", "visible"), ',');
+  std::vector<double> zooms;
+  for (const std::string& z : split(env_or("WEFT_KIOSK_ZOOMS", "0"), ',')) zooms.push_back(std::stod(z));
+  const std::vector<std::string> weaves = split(env_or("WEFT_KIOSK_WEAVE", "on"), ',');
   std::vector<Reuse> shares;
   for (const std::string& s : split(env_or("WEFT_KIOSK_REFRESH", smoke ? "1,4,b4" : "1,4,8,16,b4,b8,b16"), ','))
     shares.push_back(s[0] == 'b' ? Reuse{1, std::stoi(s.substr(1))} : Reuse{std::stoi(s), 1});
@@ -185,8 +192,8 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
   std::ostringstream table;
   table << "Machine: " << ctx.renderer() << " (stages by " << (gpu::software_renderer() ? "CPU clock" : "GPU timestamps where the driver has them") << "); " << w << "×" << h << ", turntable " << kDegPerFrame << "°/frame (6°/s at 15 frames/s: 0.4), " << frames
         << " timed frames after " << kWarm << " warm ones.\n\n"
-        << "| bundle | rung | vertices | reuse R | ms/frame | CPU ms/frame | backdrop | surfaces | vertex passes | cloth | weave | other | first frame ms | "
-           "error vs all, R = 1 mean | worst |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        << "| bundle | rung | vertices | reuse R | zoom | weave layer | ms/frame | CPU ms/frame | backdrop | surfaces | vertex passes | cloth | weave | other | first frame ms | "
+           "error vs all, R = 1 mean | worst |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& item : split(bundles, ',')) {
     const auto eq = item.find('=');
     ASSERT_NE(eq, std::string::npos) << item;
@@ -206,14 +213,27 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
       full->set_depth_prepass(false);
       gpu::OffscreenTarget target(w, h), truth(w, h);
       const glm::dvec3 pivot = turntable_pivot(kb.scene.scene);
-      auto camera_at = [&](int k) { return turned_about_z(kb.scene.scene.camera, k * kDegPerFrame, pivot); };
+      // As the kiosk draws a zoom: dollied toward its close-up, turned about the pivot moved as far toward the target.
+      const Camera closeup = closeup_of(kb.scene.scene, cloth, h);
+      arm_weave_range(*r, kb.scene, closeup, w, h);
+      arm_weave_range(*full, kb.scene, closeup, w, h);
+      double zoom = 0.0;
+      auto camera_at = [&](int k) {
+        const Camera c = dolly(kb.scene.scene.camera, closeup, zoom);
+        return turned_about_z(c, k * kDegPerFrame, glm::mix(pivot, c.target, zoom));
+      };
       target.bind();
       r->draw(camera_at(0), w, h);
       glFinish();
       const double first_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_first).count();
       const bool per_vertex = method.shading == methods::Shading::per_vertex;
       for (const std::string& vertices : vertex_sets)
-      for (const Reuse& reuse : shares) {
+      for (const Reuse& reuse : shares)
+      for (const double z : zooms)
+      for (const std::string& weave : weaves) {
+        zoom = z;
+        r->set_weave(weave == "on");
+        full->set_weave(weave == "on");
         const bool visible_only = vertices != "all";
         // Measured against the full frame (WEFT_KIOSK_NO_ERROR: not, where reading frames back would dwarf them, e.g. 4K).
         const bool reused = (reuse.longest() > 1 || (per_vertex && visible_only)) && std::getenv("WEFT_KIOSK_NO_ERROR") == nullptr;
@@ -253,9 +273,9 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
         double mean_err = 0.0, worst = 0.0;
         for (double e : errors) mean_err += e / double(errors.size()), worst = std::max(worst, e);
         char row[512];
-        std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %.1f | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |\n", name.c_str(),
+        std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %.2f | %s | %.1f | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %s | %s |\n", name.c_str(),
                       (method_name == "auto" ? "auto: " + method.name : method.name).c_str(), per_vertex ? vertices.c_str() : "",
-                      reuse.name().c_str(), median(ms), cpu,
+                      reuse.name().c_str(), z, weave.c_str(), median(ms), cpu,
                       stage(gpu::Stage::backdrop), stage(gpu::Stage::surfaces), stage(gpu::Stage::vertex_pass), stage(gpu::Stage::cloth),
                       stage(gpu::Stage::weave), stage(gpu::Stage::other), first_ms,
                       reused ? (std::to_string(mean_err * 100.0).substr(0, 6) + " %").c_str() : "",
@@ -264,7 +284,7 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
         std::cout << row << std::flush;
         if (const char* shots = std::getenv("WEFT_KIOSK_SHOTS")) {
           const std::string stem = std::string(shots) + "/" + name + "_" + method.name + "_" + (per_vertex ? vertices : "") + "_" +
-                                   std::to_string(reuse.longest());
+                                   std::to_string(reuse.longest()) + "_zoom" + std::to_string(int(std::lround(100 * z))) + "_" + weave;
           std::filesystem::create_directories(shots);
           const std::vector<float> shown = target.read_rgba();  // binds the target for the image too
           write_exr(gpu::read_linear_image(w, h), stem + ".exr");

@@ -17,6 +17,7 @@
 #include "methods/fabric_uniforms.h"
 #include "methods/program_cloth.h"
 #include "methods/sg_lights.h"
+#include "methods/weave/weave_float_table.h"
 #include "methods/weave/weave_layer.h"
 #include "methods/weave/weave_ratio.h"
 #include "scene/scene_file.h"
@@ -42,8 +43,9 @@ SgLighting four_sgs() {
 
 // Per pixel: ω_o, the frame, the tile point (u_st.xy), the fabric-level term, the four Qs and the
 // four visibilities V_k; writes the factor (mode 0), the four Qs weave_terms gives (mode 1), its
-// fabric-level term (mode 3) or the factor filtered over the footprint whose tile-space
-// derivatives are u_d's xy and zw (mode 2).
+// fabric-level term (mode 3), the factor filtered over the footprint whose tile-space
+// derivatives are u_d's xy and zw (mode 2), or the same from the per-float table made at the
+// pixel (mode 4: weave_table_node, weave_ratio_tabled), or the four Qs weave_q_group gives (mode 5).
 const char* kFs = R"(
 uniform highp sampler2D u_wo, u_n, u_u, u_st, u_fabric, u_q, u_d, u_vis;
 uniform int u_mode;
@@ -64,10 +66,17 @@ void main() {
     colour = vec4(weave_ratio_filtered(n, u, wo, texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, weight), 1.0);
     return;
   }
+  if (u_mode == 4) {
+    vec3 table[WEAVE_TABLE_NODES];
+    for (int k = 0; k < WEAVE_TABLE_NODES; ++k) table[k] = weave_table_node(n, u, wo, k / WEAVE_TABLE_ARCS, k % WEAVE_TABLE_ARCS, weight);
+    highp vec4 d = texelFetch(u_d, p, 0);
+    colour = vec4(weave_ratio_tabled(texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, table), 1.0);
+    return;
+  }
   vec3 fabric;
   vec4 terms_q[1];
   weave_terms(n, u, wo, vis, fabric, terms_q);
-  colour = u_mode == 1 ? terms_q[0] : vec4(fabric, 1.0);
+  colour = u_mode == 1 ? terms_q[0] : u_mode == 5 ? weave_q_group(n, u, wo, 0) : vec4(fabric, 1.0);
 })";
 }  // namespace
 
@@ -83,7 +92,9 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   auto make_program = [&](const std::string& defines) {
     auto program = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
-        program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl"}, weave_defines(1) + defines) + kFs);
+        program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_float_table.glsl"},
+                       weave_defines(1) + defines) +
+            kFs);
     program->use();
     upload_fabric(*program, bsdf);
     upload_weave_tilt_spreads(*program, bsdf);
@@ -101,11 +112,8 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     glUniform1fv(program->uniform("u_sg_widen2"), 4, widen2.data());
     return program;
   };
-  // The layer's programs over per-pixel terms (each float at three arcs) and per-vertex terms (at
-  // its middle arc).
-  const std::unique_ptr<GlProgram> middle_program = make_program("#define WEAVE_MIDDLE_ARC\n");
-  const std::unique_ptr<GlProgram> along_program = make_program("");
-  const GlProgram& program = *along_program;
+  const std::unique_ptr<GlProgram> made = make_program("");
+  const GlProgram& program = *made;
 
   constexpr int kW = 32, kH = 16, kCases = kW * kH;
   std::mt19937 rng(11), vis_rng(23);
@@ -159,13 +167,18 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   program.use();
   glUniform1i(program.uniform("u_mode"), 3);
   const std::vector<float> fabrics = test::shade_cases(program, kW, kH, inputs);
-  middle_program->use();
-  glUniform1i(middle_program->uniform("u_mode"), 2);
-  const std::vector<float> filtered_middle = test::shade_cases(*middle_program, kW, kH, inputs);
+  program.use();
+  glUniform1i(program.uniform("u_mode"), 5);
+  const std::vector<float> group_qs = test::shade_cases(program, kW, kH, inputs);
+  program.use();
+  glUniform1i(program.uniform("u_mode"), 4);
+  const std::vector<float> tabled = test::shade_cases(program, kW, kH, inputs);
   int compared = 0, threads = 0, filtered_compared = 0, mixed = 0;
   for (int i = 0; i < kCases; ++i) {
     const WeaveTerms twin = weave_terms(bsdf, frames[i], wos[i], sgs, visibility[i]);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k;
+    for (int k = 0; k < 4; ++k)
+      EXPECT_NEAR(group_qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k << ", its group alone";
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(fabrics[4 * i + c], twin.fabric[c], 3e-3 * (1.0 + twin.fabric[c])) << "case " << i << " channel " << c;
     // A point within float round-off of a yarn's edge may fall either side: not a parity case.
@@ -188,11 +201,11 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     if (!jump) {
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(filtered[4 * i + c], expect_filtered[c], 3e-3 * (1.0 + expect_filtered[c])) << "filtered case " << i << " channel " << c;
-      const dvec3 expect_middle =
-          weave_ratio_filtered(bsdf, layout, frames[i], wos[i], sts[i], dxs[i], dys[i], terms[i], sgs, WeaveArcs::middle);
+      const dvec3 expect_tabled = weave_ratio_tabled(layout, weave_float_table(bsdf, frames[i], wos[i], terms[i], sgs), sts[i],
+                                                     dxs[i], dys[i], terms[i].fabric);
       for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(filtered_middle[4 * i + c], expect_middle[c], 3e-3 * (1.0 + expect_middle[c]))
-            << "filtered case " << i << " channel " << c << ", middle arc";
+        EXPECT_NEAR(tabled[4 * i + c], expect_tabled[c], 3e-3 * (1.0 + expect_tabled[c]))
+            << "filtered case " << i << " channel " << c << ", from the table";
       ++filtered_compared;
       const WeaveCoverage cover = weave_coverage(layout, sts[i], dxs[i], dys[i]);
       mixed += cover.share[0] > 0.0 && cover.share[1] > 0.0;

@@ -68,7 +68,10 @@ public:
   }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
+  // The results' texture, for a program that reads them under its own name (no results yet: 0).
+  GLuint result_texture() const { return target_ ? target_->colour_texture() : 0; }
   int texels() const { return width_ * height_; }  // of an input or a block
+  int width() const { return width_; }             // texels a row: vertex i at (i mod width, i div width)
   // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
   std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
 

@@ -11,6 +11,7 @@
 #include "methods/program_cloth.h"
 #include "methods/sg_lighting_uniforms.h"
 #include "methods/sg_lights.h"
+#include "methods/weave/weave_float_table.h"
 #include "methods/weave/weave_ratio.h"
 #include "scene/weave_scale.h"
 
@@ -19,10 +20,11 @@ namespace weft::gpu {
 namespace {
 constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
 
-// Position, normal, warp and UV, each a whole vec4 in case the GL packs no tighter; then a vec4
-// per group of four lights for their visibility and, with vertex terms, another for their Q and
-// one for the fabric-level response.
-int weave_varying_components(int q_groups, bool vertex_terms) { return 16 + 4 * q_groups + (vertex_terms ? 4 * q_groups + 4 : 0); }
+// Each a whole vec4 in case the GL packs no tighter. Per-pixel terms: position, normal, warp, UV
+// and a vec4 per group of four lights for their visibility. Vertex terms: UV, the fabric-level
+// response and the per-float table's RGB values packed four to a vec4, whatever the lights.
+constexpr int kTableVec4s = (3 * 2 * kWeaveTableArcs + 3) / 4;
+int weave_varying_components(int q_groups, bool vertex_terms) { return vertex_terms ? 4 * (2 + kTableVec4s) : 16 + 4 * q_groups; }
 int varying_limit() {
   GLint out = 0, in = 0;
   glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
@@ -30,7 +32,10 @@ int varying_limit() {
   return std::min(out, in);
 }
 constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
-constexpr int kVisibilityUnit = 6;   // above the vertex pass's inputs (0–2) and its result (3)
+constexpr int kTermsUnit = 3;        // the vertex pass's result, above its inputs (0–2)
+constexpr int kTableUnit = 4;        // the table pass's result
+constexpr int kReachUnit = 5;
+constexpr int kVisibilityUnit = 6;
 constexpr int kVisibilityWidth = 1024;
 
 }  // namespace
@@ -61,7 +66,9 @@ void upload_weave_layout(const GlProgram& p, const WeaveLayout& layout, const Fa
 std::string weave_defines(int q_groups) {
   char floats[96];
   std::snprintf(floats, sizeof floats, "#define RATIO_FLOOR %.9e\n#define RATIO_CAP %.9e\n", kWeaveRatioFloor, kWeaveRatioCap);
-  return "#define Q_GROUPS " + std::to_string(q_groups) + "\n#define MAX_SGS " + std::to_string(kMaxSgs) + "\n" + floats;
+  return "#define Q_GROUPS " + std::to_string(q_groups) + "\n#define MAX_SGS " + std::to_string(kMaxSgs) +
+         "\n#define WEAVE_TABLE_ARCS " + std::to_string(kWeaveTableArcs) + "\n#define WEAVE_TABLE_NODES " +
+         std::to_string(2 * kWeaveTableArcs) + "\n#define WEAVE_TABLE_VEC4S " + std::to_string(kTableVec4s) + "\n" + floats;
 }
 
 size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
@@ -75,13 +82,6 @@ size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, gl
   for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(mesh.uvs[i], 0.0);
   o->mesh->add_attribute(kUvAttribute, uv);
   o->tiles_per_uv = tiles_per_uv;
-  o->box_min = o->box_max = mesh.positions.at(0);
-  for (const auto& p : mesh.positions) {
-    o->box_min = glm::min(o->box_min, p);
-    o->box_max = glm::max(o->box_max, p);
-  }
-  const glm::dvec2 repeat = uv_length(mesh) / tiles_per_uv;
-  o->smallest_repeat = std::min(repeat.x, repeat.y);
   objects_.push_back(std::move(o));
   set_fabric(objects_.size() - 1, fabric);
   return objects_.size() - 1;
@@ -94,7 +94,20 @@ void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
                      std::to_string(kMaxCurvePoints) + " points");
   Object& o = *objects_.at(handle);
   o.bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
-  o.layout = std::make_unique<WeaveLayout>(fabric);
+  auto layout = std::make_unique<WeaveLayout>(fabric);
+  if (!o.layout || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.tiles_per_uv, layout->rows());
+  o.layout = std::move(layout);
+}
+
+void WeaveLayer::upload_reach(Object& o) {
+  const int width = o.pass->width(), rows = o.pass->texels() / width;
+  std::vector<float> texels(size_t(width) * rows, 1e30f);
+  std::copy(o.footprints.begin(), o.footprints.end(), texels.begin());
+  glBindTexture(GL_TEXTURE_2D, o.reach_texels.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, rows, 0, GL_RED, GL_FLOAT, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  check_gl("uploading the weave layer's reach");
 }
 
 int WeaveLayer::max_lights() const {
@@ -104,14 +117,9 @@ int WeaveLayer::max_lights() const {
   return 4 * groups;
 }
 
-bool WeaveLayer::resolves(size_t handle, const Camera& camera, int height) const {
-  const Object& o = *objects_.at(handle);
-  const glm::dvec3 nearest = glm::clamp(camera.position, o.box_min, o.box_max);
-  const double distance = std::max(glm::length(camera.position - nearest), 1e-6);
-  // Pixels per metre at that distance on the image's vertical axis.
-  const double pixels_per_metre = height / (2.0 * distance * std::tan(glm::radians(camera.fov_deg) / 2.0));
-  // The finest repeat under kWeaveCoarseFootprint threads a pixel somewhere on the object.
-  return weave_thread_footprint(*o.layout, 1.0 / (o.smallest_repeat * pixels_per_metre)) < kWeaveCoarseFootprint;
+bool WeaveLayer::resolves(size_t handle, const WeaveView& view) {
+  Object& o = *objects_.at(handle);
+  return o.reach->footprints(view, kWeaveCoarseFootprint, o.footprints) < kWeaveCoarseFootprint;
 }
 
 const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms) {
@@ -127,14 +135,20 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
     p.pass = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
         program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
-                        "weave_visibility.glsl", "weave_vertex_pass.frag"},
+                        "weave_visibility.glsl", "weave_reach.glsl", "weave_vertex_pass.frag"},
                        defines));
-    // Over per-vertex terms each float is shaded at its middle arc (WeaveArcs::middle).
-    defines += "#define WEAVE_VERTEX_TERMS\n#define WEAVE_MIDDLE_ARC\n";
+    p.table = std::make_unique<GlProgram>(
+        fullscreen_triangle_vs(),
+        program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
+                        "weave_visibility.glsl", "weave_reach.glsl", "weave_float_table.glsl", "weave_table_pass.frag"},
+                       defines));
+    defines += "#define WEAVE_VERTEX_TERMS\n";
   }
   p.draw = std::make_unique<GlProgram>(
       program_source({"weave_visibility.glsl", "weave_layer.vert"}, defines),
-      program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_layer.frag"}, defines));
+      program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_float_table.glsl",
+                      "weave_layer.frag"},
+                     defines));
   return programs_.emplace(std::make_pair(q_groups, vertex_terms), std::move(p)).first->second;
 }
 
@@ -148,6 +162,7 @@ void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf) 
 VertexPass& WeaveLayer::vertex_pass(Object& o) {
   if (!o.pass) {
     o.pass = std::make_unique<VertexPass>(*o.source);
+    o.table = std::make_unique<VertexPass>(*o.source);
     if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
     if (visible_) o.marks = visible_->add_mesh(*o.source, *o.mesh, o.pass->texels());
   }
@@ -220,20 +235,40 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) 
     glUniform1i(program.uniform("u_weave_visibility_texels"), kVisibilityUnit);
     glUniform1i(program.uniform("u_weave_visibility_width"), o.visibility_width);
     glUniform1i(program.uniform("u_weave_visibility_rows"), o.visibility_rows);
+    glActiveTexture(GL_TEXTURE0 + kReachUnit);
+    glBindTexture(GL_TEXTURE_2D, o.reach_texels.id());
+    glUniform1i(program.uniform("u_weave_reach"), kReachUnit);
+    glUniform1f(program.uniform("u_weave_coarse"), float(kWeaveCoarseFootprint));
   };
   if (p.pass) {
     VertexPass& pass = vertex_pass(o);
+    upload_reach(o);
     set_up(*p.pass);
     if (visible_ && visible_only_)
       visible_->mark_for(pass, o.marks, vp);
     else
       pass.clear_marks();  // culling switched off after frames with it on: every vertex again
     pass.run(*p.pass, 0, groups + 1);
+    // Then each float's table from the terms' Qs: a second target, as a pass cannot read its own.
+    set_up(*p.table);
+    glActiveTexture(GL_TEXTURE0 + kTermsUnit);
+    glBindTexture(GL_TEXTURE_2D, pass.result_texture());
+    glUniform1i(p.table->uniform("u_weave_terms"), kTermsUnit);
+    if (visible_ && visible_only_)
+      visible_->mark_for(*o.table, o.marks, vp);  // the same view: the same marks
+    else
+      o.table->clear_marks();
+    o.table->run(*p.table, 0, 2 * kWeaveTableArcs);
   }
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform2f(p.draw->uniform("u_lod"), float(kWeaveFineFootprint), float(kWeaveCoarseFootprint));
-  if (p.pass) o.pass->bind_result(*p.draw, 3);
+  if (p.pass) {
+    o.pass->bind_result(*p.draw, kTermsUnit);
+    glActiveTexture(GL_TEXTURE0 + kTableUnit);
+    glBindTexture(GL_TEXTURE_2D, o.table->result_texture());
+    glUniform1i(p.draw->uniform("u_weave_table"), kTableUnit);
+  }
   GLint depth_func = GL_LESS;
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
   const GLboolean blend = glIsEnabled(GL_BLEND);

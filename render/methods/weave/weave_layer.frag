@@ -1,22 +1,25 @@
-// The weave layer's factor per pixel: the fabric-level terms (weave_terms) at the pixel, or with
-// WEAVE_VERTEX_TERMS interpolated from the vertices as a per-vertex method's shading is, each
+// The weave layer's factor per pixel: the fabric-level terms (weave_terms) at the pixel, each
 // light weighted by its visibility interpolated from the vertices (weave_weights), then
-// weave_ratio_filtered() over the pixel's footprint,
+// weave_ratio_filtered() over the pixel's footprint; or with WEAVE_VERTEX_TERMS the fabric-level
+// response and the per-float table interpolated from the vertices as a per-vertex method's
+// shading is, then weave_ratio_tabled() over the footprint (no light is visited per pixel);
 // eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
 // threads, so a distant cloth is the fabric-level method's, untouched. Drawn over the cloth
-// with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl.
+// with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl,
+// weave_float_table.glsl.
 uniform vec3 u_eye;
 uniform highp vec2 u_tiles_per_uv;
 uniform vec2 u_lod;
-in vec3 v_position;
-in vec3 v_normal;
-in vec3 v_warp;
 in highp vec2 v_uv;
 #ifdef WEAVE_VERTEX_TERMS
 in vec3 v_fabric;
-in vec4 v_q[Q_GROUPS];
-#endif
+in vec4 v_table[WEAVE_TABLE_VEC4S];
+#else
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_warp;
 in vec4 v_visibility[Q_GROUPS];
+#endif
 out vec4 o_factor;
 void main() {
   highp vec2 st = v_uv * u_tiles_per_uv;
@@ -27,18 +30,20 @@ void main() {
     o_factor = vec4(1.0);
     return;
   }
+#ifdef WEAVE_VERTEX_TERMS
+  vec3 table[WEAVE_TABLE_NODES];
+  for (int k = 0; k < WEAVE_TABLE_NODES; ++k)
+    for (int c = 0; c < 3; ++c) table[k][c] = v_table[(3 * k + c) / 4][(3 * k + c) % 4];
+  o_factor = vec4(mix(weave_ratio_tabled(st, dx, dy, v_fabric, table), vec3(1.0), coarse), 1.0);
+#else
   vec3 n = normalize(v_normal);
   vec3 wo = normalize(u_eye - v_position);
   if (dot(n, wo) < 0.0) n = -n;
   vec3 u = normalize(v_warp - dot(v_warp, n) * n);
   vec3 fabric;
   vec4 q[Q_GROUPS], weight[Q_GROUPS];
-#ifdef WEAVE_VERTEX_TERMS
-  fabric = v_fabric;
-  for (int g = 0; g < Q_GROUPS; ++g) q[g] = v_q[g];
-#else
   weave_terms(n, u, wo, v_visibility, fabric, q);
-#endif
   weave_weights(v_visibility, q, weight);
   o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, fabric, weight), vec3(1.0), coarse), 1.0);
+#endif
 }

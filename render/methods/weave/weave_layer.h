@@ -5,9 +5,10 @@
 // of the mesh with its UVs, the factor per pixel; its fabric-level terms per pixel too (under a
 // method that shades the canonical model per pixel, ClothMethod::weave_terms_per_pixel), or per
 // vertex from a vertex pass, interpolated as a per-vertex method's shading is, so that the ratio
-// takes the method's interpolation error out with it. Skipped
-// outright where no point of the object can come closer than the coarse footprint (the object's
-// nearest point against its smallest repeat).
+// takes the method's interpolation error out with it: then each float's lighting is a per-vertex
+// table (weave_float_table.h) and a pixel visits no light. Skipped outright where no vertex in
+// view can show a footprint finer than the coarse one (weave_reach.h), and a vertex pass skips
+// each vertex that cannot.
 #include <map>
 #include <memory>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "methods/iwasaki/visible_vertices.h"
 #include "methods/weave/weave_lights.h"
 #include "methods/weave/weave_ratio.h"
+#include "methods/weave/weave_reach.h"
 #include "scene/scene.h"
 
 namespace weft::gpu {
@@ -41,8 +43,12 @@ public:
   size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv);
   // A knob edit: the factor follows the new colours and gloss.
   void set_fabric(size_t handle, const Fabric& fabric);
-  // Whether object `handle` can show its weave from `camera` on an image `height` pixels high.
-  bool resolves(size_t handle, const Camera& camera, int height) const;
+  // Whether object `handle` can show its weave in `view` (weave_reach.h): some vertex in view
+  // with a footprint under kWeaveCoarseFootprint. Keeps each vertex's footprint for the next
+  // draw, whose vertex passes skip the vertices at or above it.
+  bool resolves(size_t handle, const WeaveView& view);
+  // Where the object's weave can show (weave_reach.h).
+  const WeaveReach& reach(size_t handle) const { return *objects_.at(handle)->reach; }
   // Terms per vertex (true) or per pixel (false, the default; the scene renderer sets it from its
   // method, ClothMethod::weave_terms_per_pixel).
   void set_vertex_terms(bool on) { vertex_terms_ = on; }
@@ -58,8 +64,8 @@ public:
   // lighting of another mesh or more lights than the shaders hold (max_lights).
   void set_lighting(size_t handle, const WeaveLighting& lighting);
   // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
-  // depth or alpha writes); restores blending and depth state after. Throws GpuError before the
-  // object's first set_lighting.
+  // depth or alpha writes); restores blending and depth state after: the view of the last
+  // resolves(handle, …). Throws GpuError before the object's first set_lighting.
   void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye);
 
 private:
@@ -69,12 +75,14 @@ private:
     // The per-vertex terms and the mesh's marks in visible_: made on the first draw that takes its
     // terms per vertex, so that a layer over `iwasaki` holds no vertex-pass target.
     std::unique_ptr<VertexPass> pass;
+    std::unique_ptr<VertexPass> table;  // the per-float table from pass's terms (weave_float_table.h)
     size_t marks = 0;
     std::unique_ptr<ClothBsdf> bsdf;
     std::unique_ptr<WeaveLayout> layout;
+    std::unique_ptr<WeaveReach> reach;  // for layout's rows
+    std::vector<float> footprints;      // each vertex's, in resolves' view
+    GlTexture reach_texels;             // footprints at the vertex passes' texels (weave_reach.glsl)
     glm::dvec2 tiles_per_uv{1.0};
-    glm::dvec3 box_min{0.0}, box_max{0.0};
-    double smallest_repeat = 0.0;  // metres
     bool lit = false;              // set_lighting called
     SgLighting lights;
     GlTexture visibility;          // weave_visibility.glsl's texels; unused while `occluded` is false
@@ -82,10 +90,11 @@ private:
     int visibility_width = 1, visibility_rows = 1;
   };
   struct Programs {
-    std::unique_ptr<GlProgram> pass, draw;  // pass: with vertex terms only
+    std::unique_ptr<GlProgram> pass, table, draw;  // pass and table: with vertex terms only
   };
   const Programs& programs(int q_groups, bool vertex_terms);
   VertexPass& vertex_pass(Object& o);
+  void upload_reach(Object& o);  // o.footprints at o.pass's texels
   std::vector<std::unique_ptr<Object>> objects_;
   std::map<std::pair<int, bool>, Programs> programs_;  // by Q_GROUPS and vertex terms
   std::unique_ptr<VisibleVertices> visible_;           // where supported

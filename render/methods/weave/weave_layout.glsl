@@ -125,6 +125,72 @@ float piece_weight(WeaveCoverage c, int i) {
   return c.share[j] * c.piece_share[i] / kept;
 }
 
+// The footprint's rows and floats (core/weave_coverage.h's for_each_weave_float), for
+// weave_coverage and weave_ratio_tabled: the footprint centred at c (the tile's own coordinates),
+// its box widths a and b (|dx|, |dy|). Rows k0 … k1 of it:
+ivec2 weave_row_span(highp vec2 c, vec2 a, vec2 b) {
+  float rows = float(u_weave_rows), half_y = 0.5 * (a.y + b.y);
+  int kc = int(floor(c.y * rows));
+  return ivec2(max(int(floor((c.y - half_y) * rows)), kc - WEAVE_COVERAGE_REACH),
+               min(int(floor((c.y + half_y) * rows)), kc + WEAVE_COVERAGE_REACH));
+}
+// Row k: its shift o, its band [t0, t1), the masses ty of the band and wy of the warp's yarn in
+// it, and the floats m0 … m1 to visit.
+struct WeaveRow {
+  float o, t0, t1, ty, wy;
+  int m0, m1;
+};
+WeaveRow weave_row(int k, highp vec2 c, vec2 a, vec2 b) {
+  float rows = float(u_weave_rows), w = u_weave_width, half_x = 0.5 * (a.x + b.x);
+  int row = k - u_weave_rows * int(floor(float(k) / rows));  // k mod rows; GLSL's % is undefined below 0
+  WeaveRow r;
+  r.o = float(row * u_weave_shift) / rows;
+  r.t0 = float(k) / rows;
+  r.t1 = float(k + 1) / rows;
+  r.ty = box_pair_mass(r.t0 - c.y, r.t1 - c.y, a.y, b.y);
+  r.wy = box_pair_mass(r.t0 + (0.5 - 0.5 * w) / rows - c.y, r.t0 + (0.5 + 0.5 * w) / rows - c.y, a.y, b.y);
+  int mc = int(floor(c.x - r.o));
+  r.m0 = max(int(floor(c.x - half_x - r.o)) - 1, mc - WEAVE_COVERAGE_REACH);
+  r.m1 = min(int(floor(c.x + half_x - r.o)), mc + WEAVE_COVERAGE_REACH);
+  return r;
+}
+// One float's part of the footprint: its share (0: none), its overlap's arcs (lo, middle, hi) and
+// the footprint centre's arc.
+struct WeaveFloat {
+  float share;
+  vec3 arcs;
+  float centre;
+};
+// The warp's float m of row r: over [s, s + f) in the middle w of the row.
+WeaveFloat weave_warp_float(WeaveRow r, int m, highp vec2 c, vec2 a, vec2 b) {
+  float f = u_weave_warp_share, half_x = 0.5 * (a.x + b.x), s = r.o + float(m);
+  WeaveFloat fl = WeaveFloat(box_pair_mass(s - c.x, s + f - c.x, a.x, b.x) * r.wy, vec3(0.0), 0.0);
+  if (fl.share > 0.0 && f > 0.0) {
+    float lo = max(s, c.x - half_x), hi = min(s + f, c.x + half_x);
+    fl.arcs = (vec3(lo, 0.5 * (lo + hi), hi) - s) / f;
+    fl.centre = (c.x - s) / f;
+  }
+  return fl;
+}
+// The weft's float after warp float m of row r: across the whole row in the middle w of the rest.
+WeaveFloat weave_weft_float(WeaveRow r, int m, highp vec2 c, vec2 a, vec2 b) {
+  float f = u_weave_warp_share, w = u_weave_width, rows = float(u_weave_rows), half_y = 0.5 * (a.y + b.y);
+  float s = r.o + float(m), g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
+  WeaveFloat fl = WeaveFloat(box_pair_mass(g0 - c.x, g1 - c.x, a.x, b.x) * r.ty, vec3(0.0), 0.0);
+  if (fl.share > 0.0) {
+    float lo = max(r.t0, c.y - half_y), hi = min(r.t1, c.y + half_y);
+    fl.arcs = (vec3(lo, 0.5 * (lo + hi), hi) - r.t0) * rows;
+    fl.centre = (c.y - r.t0) * rows;
+  }
+  return fl;
+}
+// The footprint's box widths along thread j's float, in arc (WeaveCoverage::arc_box).
+vec2 weave_arc_box(int j, vec2 a, vec2 b) {
+  float f = u_weave_warp_share;
+  if (j == 0) return f > 0.0 ? vec2(a.x, b.x) / f : vec2(0.0);
+  return vec2(a.y, b.y) * float(u_weave_rows);
+}
+
 WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
   WeaveCoverage out_;
   out_.share = float[2](0.0, 0.0);
@@ -139,42 +205,22 @@ WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
   }
   out_.arc_box[0] = vec2(0.0);
   out_.arc_box[1] = vec2(0.0);
-  float w = u_weave_width, f = u_weave_warp_share, rows = float(u_weave_rows);
-  if (w <= 0.0) return out_;
+  float f = u_weave_warp_share, rows = float(u_weave_rows);
+  if (u_weave_width <= 0.0) return out_;
   highp vec2 c = fract(st);
-  vec2 a = abs(dx), b = abs(dy), half_ = 0.5 * (a + b);
+  vec2 a = abs(dx), b = abs(dy);
   out_.arc_spread[0] = f > 0.0 ? sqrt((a.x * a.x + b.x * b.x) / 12.0) / f : 0.0;
   out_.arc_spread[1] = sqrt((a.y * a.y + b.y * b.y) / 12.0) * rows;
-  if (f > 0.0) out_.arc_box[0] = vec2(a.x, b.x) / f;
-  out_.arc_box[1] = vec2(a.y, b.y) * rows;
-  int kc = int(floor(c.y * rows));
-  int k0 = max(int(floor((c.y - half_.y) * rows)), kc - WEAVE_COVERAGE_REACH);
-  int k1 = min(int(floor((c.y + half_.y) * rows)), kc + WEAVE_COVERAGE_REACH);
-  for (int k = k0; k <= k1; ++k) {
-    int row = k - u_weave_rows * int(floor(float(k) / rows));  // k mod rows; GLSL's % is undefined below 0
-    float o = float(row * u_weave_shift) / rows;
-    float t0 = float(k) / rows, t1 = float(k + 1) / rows;
-    float ty = box_pair_mass(t0 - c.y, t1 - c.y, a.y, b.y);
-    float wy = box_pair_mass(t0 + (0.5 - 0.5 * w) / rows - c.y, t0 + (0.5 + 0.5 * w) / rows - c.y, a.y, b.y);
-    int mc = int(floor(c.x - o));
-    int m0 = max(int(floor(c.x - half_.x - o)) - 1, mc - WEAVE_COVERAGE_REACH);
-    int m1 = min(int(floor(c.x + half_.x - o)), mc + WEAVE_COVERAGE_REACH);
-    for (int m = m0; m <= m1; ++m) {
-      float s = o + float(m);
-      // The warp floats over [s, s + f) in the middle w of the row.
-      float share = box_pair_mass(s - c.x, s + f - c.x, a.x, b.x) * wy;
-      if (share > 0.0) {
-        float lo = max(s, c.x - half_.x), hi = min(s + f, c.x + half_.x);
-        vec3 arcs = f > 0.0 ? (vec3(lo, 0.5 * (lo + hi), hi) - s) / f : vec3(0.0);
-        add_piece(out_, 0, share, arcs, f > 0.0 ? (c.x - s) / f : 0.0);
-      }
-      // The weft crosses the whole row in the middle w of the rest.
-      float g0 = s + f + (1.0 - f) * (0.5 - 0.5 * w), g1 = s + f + (1.0 - f) * (0.5 + 0.5 * w);
-      share = box_pair_mass(g0 - c.x, g1 - c.x, a.x, b.x) * ty;
-      if (share > 0.0) {
-        float lo = max(t0, c.y - half_.y), hi = min(t1, c.y + half_.y);
-        add_piece(out_, 1, share, (vec3(lo, 0.5 * (lo + hi), hi) - t0) * rows, (c.y - t0) * rows);
-      }
+  out_.arc_box[0] = weave_arc_box(0, a, b);
+  out_.arc_box[1] = weave_arc_box(1, a, b);
+  ivec2 ks = weave_row_span(c, a, b);
+  for (int k = ks.x; k <= ks.y; ++k) {
+    WeaveRow r = weave_row(k, c, a, b);
+    for (int m = r.m0; m <= r.m1; ++m) {
+      WeaveFloat fl = weave_warp_float(r, m, c, a, b);
+      if (fl.share > 0.0) add_piece(out_, 0, fl.share, fl.arcs, fl.centre);
+      fl = weave_weft_float(r, m, c, a, b);
+      if (fl.share > 0.0) add_piece(out_, 1, fl.share, fl.arcs, fl.centre);
     }
   }
   return out_;

@@ -155,6 +155,13 @@ double weave_tilt_spread(const Fabric& fabric, int thread, double arc, double ar
   return std::isfinite(slope) ? slope * arc_spread : 0.0;
 }
 
+dvec3 weave_resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, int thread, double arc,
+                              double tilt_spread, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
+  return resolved_response(bsdf, frame, wo, thread, arc, tilt_spread, terms, sgs, horizon_lights(sgs, frame.n));
+}
+
+dvec3 weave_ratio_of(const dvec3& resolved, const dvec3& fabric) { return ratio_to(resolved, fabric); }
+
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                   glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs) {
   const WeaveSample w = layout.at(st.x, st.y);
@@ -164,8 +171,7 @@ dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const Surfac
 }
 
 dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
-                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights,
-                           WeaveArcs arcs) {
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights) {
   const WeavePiece& p = c.piece[i];
   const Fabric& fabric = bsdf.fabric();
   // Once at the middle arc, widened by the tilts the whole footprint spans along the float.
@@ -173,7 +179,7 @@ dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, con
     return resolved_response(bsdf, frame, wo, p.thread, p.arc, weave_tilt_spread(fabric, p.thread, p.arc, c.arc_spread[p.thread]),
                              terms, sgs, lights);
   };
-  if (arcs == WeaveArcs::middle || p.arc_hi <= p.arc_lo) return middle();
+  if (p.arc_hi <= p.arc_lo) return middle();
   // Three-point Gauss–Legendre over each stretch of the range between the curve's jumps, each node
   // weighted by the footprint's density there and its lobes widened by the tilts of the part of
   // the stretch it stands for (its weight's share, as a uniform spread).
@@ -206,13 +212,13 @@ dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, con
 
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
-                           std::span<const SphericalGaussian> sgs, WeaveArcs arcs) {
+                           std::span<const SphericalGaussian> sgs) {
   const WeaveCoverage c = weave_coverage(layout, st, dx, dy);
   const std::vector<HorizonLight> lights = horizon_lights(sgs, frame.n);
   dvec3 resolved(0.0);
   for (int i = 0; i < kWeaveCoveragePieces; ++i) {
     if (c.piece[i].thread < 0) break;
-    resolved += piece_weight(c, i) * weave_float_response(bsdf, frame, wo, c, i, terms, sgs, lights, arcs);
+    resolved += piece_weight(c, i) * weave_float_response(bsdf, frame, wo, c, i, terms, sgs, lights);
   }
   return ratio_to(resolved, terms.fabric);
 }

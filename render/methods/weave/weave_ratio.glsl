@@ -99,6 +99,25 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, o
   }
 }
 
+// weave_terms' Q of lights 4g … 4g + 3 alone (0 past the last light): the projection terms, no
+// scattering, for a pass that writes one group of four at a time.
+vec4 weave_q_group(vec3 n, vec3 u, vec3 wo, int g) {
+  HorizonLight lights[4];
+  for (int c = 0; c < 4; ++c) lights[c] = 4 * g + c < u_sg_count ? horizon_light(4 * g + c, n) : HorizonLight(n, 0.0);
+  float gap_q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
+  vec4 q = vec4(gap_q);
+  for (int j = 0; j < 2; ++j) {
+    float share = u_threads[j].coverage / float(u_threads[j].samples);
+    for (int s = 0; s < u_threads[j].samples; ++s) {
+      ResolvedView view = resolved_view(n, u, j, thread_tilt(j * MAX_TANGENT_SAMPLES + s), wo);
+      for (int c = 0; c < 4; ++c) q[c] += share * projection_term(fiber_angles_in(view.t, view.np, view.axis, lights[c].axis), view.fo);
+    }
+  }
+  for (int c = 0; c < 4; ++c)
+    if (4 * g + c >= u_sg_count) q[c] = 0.0;
+  return q;
+}
+
 // Each light's weight in the resolved response, V_k/Q_k (0 where Q_k ≤ Q_FLOOR): weave_terms' Q and
 // the visibility the pixel has (its own, or both interpolated from the vertices).
 void weave_weights(vec4 vis[Q_GROUPS], vec4 q[Q_GROUPS], out vec4 weight[Q_GROUPS]) {
@@ -178,12 +197,10 @@ void weave_stretch(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, float lo, fl
 
 // weave_float_response: piece i of coverage c averaged over its arc range, stretch by stretch
 // between the curve's jumps (a zero-length segment), at three Gauss–Legendre arcs each (at its
-// middle arc, widened by the footprint's tilts, where the range is a point, and always with
-// WEAVE_MIDDLE_ARC: weave_ratio.h's WeaveArcs::middle).
+// middle arc, widened by the footprint's tilts, where the range is a point).
 vec3 weave_float_response(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, vec4 weight[Q_GROUPS],
                           HorizonLight lights[MAX_SGS]) {
   int j = c.piece_thread[i];
-#ifndef WEAVE_MIDDLE_ARC
   float lo = c.piece_arc_lo[i], hi = c.piece_arc_hi[i];
   if (hi > lo) {
     vec3 sum = vec3(0.0);
@@ -198,7 +215,6 @@ vec3 weave_float_response(vec3 n, vec3 u, vec3 wo, WeaveCoverage c, int i, vec4 
     weave_stretch(n, u, wo, c, i, from, hi, weight, lights, sum, total);
     if (total > 0.0) return sum / total;
   }
-#endif
   float arc = c.piece_arc[i];
   return resolved_response(n, u, wo, j, arc, weave_tilt_spread(j, arc, c.arc_spread[j]), weight, lights);
 }

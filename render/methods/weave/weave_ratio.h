@@ -75,16 +75,23 @@ WeaveTerms weave_terms(const ClothBsdf& bsdf, const SurfaceFrame& frame, const d
 dvec3 weave_ratio(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                   glm::dvec2 st, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs);
 
+// Σ_k P_k f_s M P cos θ_i · V_k/Q_k of thread `thread`'s sample at `arc` along its float, its lobes
+// widened by `tilt_spread` (RMS, radians) besides each light's own spread: R's numerator at one
+// point of one float (each light taken as its horizon_light at frame.n).
+dvec3 weave_resolved_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, int thread, double arc,
+                              double tilt_spread, const WeaveTerms& terms, std::span<const SphericalGaussian> sgs);
+// resolved / fabric per channel: 1 where the fabric-level response is below kWeaveRatioFloor,
+// at most kWeaveRatioCap.
+dvec3 weave_ratio_of(const dvec3& resolved, const dvec3& fabric);
+
 // R over a pixel's footprint (tile-space derivatives dx, dy), as the layer draws it: the layout
 // box-filtered over the footprint (core/weave_coverage.h), each of its largest floats shaded
-// where it lies (weave_float_response), weighted by its share of the pixel (piece_weight).
-// `along`: WeaveArcs::middle shades each float once at its middle arc, widened by the footprint's
-// tilts (the layer over per-vertex terms: there the terms' interpolation is the larger error, and
-// three arcs a float would double the layer's frame on llvmpipe).
-enum class WeaveArcs { along, middle };
+// where it lies (weave_float_response), weighted by its share of the pixel (piece_weight). The
+// layer over per-pixel terms; over per-vertex terms it reads the floats' shading off a table
+// (methods/weave/weave_float_table.h).
 dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, const SurfaceFrame& frame, const dvec3& wo,
                            glm::dvec2 st, glm::dvec2 dx, glm::dvec2 dy, const WeaveTerms& terms,
-                           std::span<const SphericalGaussian> sgs, WeaveArcs arcs = WeaveArcs::along);
+                           std::span<const SphericalGaussian> sgs);
 // Σ_k P_k f_s M P cos θ_i · V_k/Q_k of piece i of coverage c, averaged over the piece's arc range:
 // stretch by stretch between the curve's jumps (zero-length segments), each by three-point
 // Gauss–Legendre, every node weighted by the footprint's density there and its lobes widened by
@@ -94,8 +101,7 @@ dvec3 weave_ratio_filtered(const ClothBsdf& bsdf, const WeaveLayout& layout, con
 // its float (its close-up 61 % off the resolved reference with one arc;
 // docs/bench/weave/README.md). `lights`: each SG's horizon_light at frame.n.
 dvec3 weave_float_response(const ClothBsdf& bsdf, const SurfaceFrame& frame, const dvec3& wo, const WeaveCoverage& c, int i,
-                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights,
-                           WeaveArcs arcs);
+                           const WeaveTerms& terms, std::span<const SphericalGaussian> sgs, std::span<const HorizonLight> lights);
 // The RMS tilt (radians) of thread j's float over an arc spread `arc_spread` (RMS) about `arc`: the
 // curve's slope there times the spread, the slope the gentler of the two sides' within √3 spreads,
 // so that a jump of the curve (velvet's weft) does not count as a spread of tilts.

@@ -4,30 +4,30 @@
 // weave_visibility). The layer's vertex shader
 // interpolates them as the method interpolates its own shading, so the factor's ratio takes the
 // method's interpolation out with it. Needs microcylinder.glsl, vertex_pass.glsl,
-// weave_layout.glsl, weave_ratio.glsl and weave_visibility.glsl before it.
+// weave_layout.glsl, weave_ratio.glsl, weave_visibility.glsl and weave_reach.glsl before it.
 uniform vec3 u_eye;
 out vec4 o_value;
 void main() {
   PassTexel t = pass_texel();
   if (pass_keeps(t)) discard;  // no visible triangle uses it
+  vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
+  if (weave_vertex_unresolved(t.p)) discard;  // no pixel near it shows the weave
   if (t.i >= u_vertex_count || t.k > Q_GROUPS) {
     o_value = vec4(0.0);
     return;
   }
-  vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
   vec3 n = normalize(texelFetch(u_vertex_normal, t.p, 0).xyz);
   vec3 warp = texelFetch(u_vertex_warp, t.p, 0).xyz;
   vec3 wo = normalize(u_eye - p);
   if (dot(n, wo) < 0.0) n = -n;  // two-sided: the side facing the eye
   vec3 u = normalize(warp - dot(warp, n) * n);
+  if (t.k > 0) {  // a group's Qs alone: the projection terms of its four lights
+    o_value = weave_q_group(n, u, wo, t.k - 1);
+    return;
+  }
   vec3 fabric;
   vec4 vis[Q_GROUPS], q[Q_GROUPS];
   for (int g = 0; g < Q_GROUPS; ++g) vis[g] = weave_visibility(t.i, g);
   weave_terms(n, u, wo, vis, fabric, q);
-  if (t.k == 0) {
-    o_value = vec4(fabric, 1.0);
-    return;
-  }
-  for (int g = 0; g < Q_GROUPS; ++g)
-    if (g == t.k - 1) o_value = q[g];
+  o_value = vec4(fabric, 1.0);
 }

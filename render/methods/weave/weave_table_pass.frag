@@ -1,0 +1,31 @@
+// The weave layer's per-float table per vertex (weave_float_table.glsl), for a method that shades
+// per vertex: block k = j·WEAVE_TABLE_ARCS + m holds thread j's node m at every mesh vertex, from
+// the vertex's Q (weave_vertex_pass.frag's blocks, u_weave_terms) and visibility. Needs
+// microcylinder.glsl, vertex_pass.glsl, erf.glsl, weave_layout.glsl, weave_ratio.glsl,
+// weave_visibility.glsl, weave_reach.glsl and weave_float_table.glsl before it.
+uniform vec3 u_eye;
+uniform highp sampler2D u_weave_terms;
+out vec4 o_value;
+void main() {
+  PassTexel t = pass_texel();
+  if (pass_keeps(t)) discard;  // no visible triangle uses it
+  vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
+  if (weave_vertex_unresolved(t.p)) discard;  // no pixel near it shows the weave
+  if (t.i >= u_vertex_count || t.k >= WEAVE_TABLE_NODES) {
+    o_value = vec4(0.0);
+    return;
+  }
+  vec3 n = normalize(texelFetch(u_vertex_normal, t.p, 0).xyz);
+  vec3 warp = texelFetch(u_vertex_warp, t.p, 0).xyz;
+  vec3 wo = normalize(u_eye - p);
+  if (dot(n, wo) < 0.0) n = -n;  // two-sided: the side facing the eye
+  vec3 u = normalize(warp - dot(warp, n) * n);
+  vec4 vis[Q_GROUPS], q[Q_GROUPS], weight[Q_GROUPS];
+  for (int g = 0; g < Q_GROUPS; ++g) {
+    vis[g] = weave_visibility(t.i, g);
+    q[g] = texelFetch(u_weave_terms, t.p + ivec2(0, (g + 1) * u_vertex_rows), 0);
+  }
+  weave_weights(vis, q, weight);
+  int j = t.k / WEAVE_TABLE_ARCS;
+  o_value = vec4(weave_table_node(n, u, wo, j, t.k - j * WEAVE_TABLE_ARCS, weight), 1.0);
+}
