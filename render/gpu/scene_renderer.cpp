@@ -184,6 +184,17 @@ std::vector<float> SceneRenderer::cloth_vertex_values(size_t cloth_index, int* b
   throw std::out_of_range("no cloth object " + std::to_string(cloth_index));
 }
 
+void SceneRenderer::set_vertex_refresh(int shares) {
+  cloth_->set_vertex_refresh(shares);
+  vertex_refresh_ = shares;
+  if (weave_) weave_->set_vertex_refresh(shares);
+}
+
+void SceneRenderer::refresh_all() {
+  cloth_->refresh_all();
+  if (weave_) weave_->refresh_all();
+}
+
 void SceneRenderer::set_visible_vertices_only(bool on) {
   visible_only_ = on;
   cloth_->set_visible_vertices_only(on);
@@ -194,6 +205,7 @@ void SceneRenderer::set_weave(bool on) {
   if (on && !weave_) {
     auto layer = std::make_unique<WeaveLayer>();
     layer->set_visible_vertices_only(visible_only_);
+    layer->set_vertex_refresh(vertex_refresh_);
     layer->set_vertex_terms(!cloth_->weave_terms_per_pixel());
     weave_max_lights_ = layer->max_lights();
     for (auto& o : objects_)

@@ -77,12 +77,13 @@ public:
   // What the operator should know about how the scene is drawn: a textured cloth object the method
   // draws without its texture (one line each).
   const std::vector<std::string>& warnings() const { return warnings_; }
-  // Temporal reuse of the cloth's per-vertex work (ClothMethod::set_vertex_refresh): each draw
+  // Temporal reuse of the cloth's per-vertex work (ClothMethod::set_vertex_refresh, and the weave
+  // layer's: WeaveLayer::set_vertex_refresh): each draw
   // recomputes 1/shares of the vertices; refresh_all(): every vertex on the next draw (the eye
   // jumped). Default 1: all, every draw.
-  void set_vertex_refresh(int shares) { cloth_->set_vertex_refresh(shares); }
+  void set_vertex_refresh(int shares);
   void set_broad_lobe_refresh(int shares) { cloth_->set_broad_lobe_refresh(shares); }
-  void refresh_all() { cloth_->refresh_all(); }
+  void refresh_all();
   // The next draw's time (ClothMethod::set_clock): kept per-vertex values follow the camera.
   void set_clock(double seconds) { cloth_->set_clock(seconds); }
   bool reuse_follows_camera() const { return cloth_->reuse_follows_camera(); }
@@ -129,6 +130,7 @@ private:
   bool weave_on_ = false;
   int weave_max_lights_ = 0;           // the layer's max_lights, read on the GL thread
   bool visible_only_ = true;  // set_visible_vertices_only
+  int vertex_refresh_ = 1;    // set_vertex_refresh
   bool depth_prepass_ = true;
   std::map<const TextureImage*, std::unique_ptr<ThreadMapTexture>> textures_;  // each image once
   std::map<const TextureImage*, std::unique_ptr<NormalMapTexture>> normal_textures_;  // linear, each once

@@ -34,7 +34,7 @@ int varying_limit() {
 constexpr int kMaxCurvePoints = 16;  // MAX_CURVE_POINTS in weave_layout.glsl
 constexpr int kTermsUnit = 3;        // the vertex pass's result, above its inputs (0–2)
 constexpr int kTableUnit = 4;        // the table pass's result
-constexpr int kReachUnit = 5;
+constexpr int kReachUnit = 5, kReachBeforeUnit = 7;
 constexpr int kVisibilityUnit = 6;
 constexpr int kVisibilityWidth = 1024;
 
@@ -94,6 +94,7 @@ void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
                      std::to_string(kMaxCurvePoints) + " points");
   Object& o = *objects_.at(handle);
   o.bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
+  if (o.pass) o.pass->invalidate(), o.table->invalidate();  // kept terms are of the fabric before
   auto layout = std::make_unique<WeaveLayout>(fabric);
   if (!o.layout || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.tiles_per_uv, layout->rows());
   o.layout = std::move(layout);
@@ -101,13 +102,30 @@ void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
 
 void WeaveLayer::upload_reach(Object& o) {
   const int width = o.pass->width(), rows = o.pass->texels() / width;
-  std::vector<float> texels(size_t(width) * rows, 1e30f);
+  std::vector<float> texels(size_t(width) * rows, 1e30f);  // out of reach until drawn
+  auto upload = [&](GlTexture& t) {
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, rows, 0, GL_RED, GL_FLOAT, texels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  };
+  if (!o.reach_filled) {
+    upload(o.reach_texels[0]);
+    upload(o.reach_texels[1]);
+    o.reach_filled = true;
+  }
   std::copy(o.footprints.begin(), o.footprints.end(), texels.begin());
-  glBindTexture(GL_TEXTURE_2D, o.reach_texels.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, rows, 0, GL_RED, GL_FLOAT, texels.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  o.reach_now ^= 1;
+  upload(o.reach_texels[o.reach_now]);
   check_gl("uploading the weave layer's reach");
+}
+
+void WeaveLayer::refresh_all() {
+  for (auto& o : objects_)
+    if (o->pass) {
+      o->pass->invalidate();
+      o->table->invalidate();
+    }
 }
 
 int WeaveLayer::max_lights() const {
@@ -180,6 +198,7 @@ void WeaveLayer::set_lighting(size_t handle, const WeaveLighting& lighting) {
                    std::to_string(vertices) + " vertices × " + std::to_string(lights.size()) + " lights");
   o.lights = lights;
   o.lit = true;
+  if (o.pass) o.pass->invalidate(), o.table->invalidate();  // kept terms are of the lights before
   o.occluded = !lighting.visibility.empty();
   if (!o.occluded) return;
   // Group g of vertex v at (v mod W, v div W + g·rows), four lights a texel.
@@ -236,8 +255,11 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) 
     glUniform1i(program.uniform("u_weave_visibility_width"), o.visibility_width);
     glUniform1i(program.uniform("u_weave_visibility_rows"), o.visibility_rows);
     glActiveTexture(GL_TEXTURE0 + kReachUnit);
-    glBindTexture(GL_TEXTURE_2D, o.reach_texels.id());
+    glBindTexture(GL_TEXTURE_2D, o.reach_texels[o.reach_now].id());
     glUniform1i(program.uniform("u_weave_reach"), kReachUnit);
+    glActiveTexture(GL_TEXTURE0 + kReachBeforeUnit);
+    glBindTexture(GL_TEXTURE_2D, o.reach_texels[o.reach_now ^ 1].id());
+    glUniform1i(program.uniform("u_weave_reach_before"), kReachBeforeUnit);
     glUniform1f(program.uniform("u_weave_coarse"), float(kWeaveCoarseFootprint));
   };
   if (p.pass) {
@@ -248,7 +270,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) 
       visible_->mark_for(pass, o.marks, vp);
     else
       pass.clear_marks();  // culling switched off after frames with it on: every vertex again
-    pass.run(*p.pass, 0, groups + 1);
+    pass.run_share(*p.pass, 0, groups + 1, shares_);
     // Then each float's table from the terms' Qs: a second target, as a pass cannot read its own.
     set_up(*p.table);
     glActiveTexture(GL_TEXTURE0 + kTermsUnit);
@@ -258,7 +280,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) 
       visible_->mark_for(*o.table, o.marks, vp);  // the same view: the same marks
     else
       o.table->clear_marks();
-    o.table->run(*p.table, 0, 2 * kWeaveTableArcs);
+    o.table->run_share(*p.table, 0, 2 * kWeaveTableArcs, shares_);
   }
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));

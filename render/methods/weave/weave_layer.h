@@ -9,6 +9,7 @@
 // table (weave_float_table.h) and a pixel visits no light. Skipped outright where no vertex in
 // view can show a footprint finer than the coarse one (weave_reach.h), and a vertex pass skips
 // each vertex that cannot.
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <vector>
@@ -56,6 +57,12 @@ public:
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
   // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
+  // Temporal reuse of the per-vertex terms and tables (VertexPass::run_share): each draw
+  // recomputes 1/shares of the vertices in reach and keeps the others' (default 1: all). A vertex
+  // that comes into reach, and every vertex after a lighting, knob or refresh_all(), is computed
+  // at once.
+  void set_vertex_refresh(int shares) { shares_ = std::max(shares, 1); }
+  void refresh_all();
   // The most lights set_lighting takes under this GL's varyings (kMaxSgs at most; the per-vertex
   // terms carry two vec4 a group of four). Needs a current GLES 3 context.
   int max_lights() const;
@@ -81,7 +88,10 @@ private:
     std::unique_ptr<WeaveLayout> layout;
     std::unique_ptr<WeaveReach> reach;  // for layout's rows
     std::vector<float> footprints;      // each vertex's, in resolves' view
-    GlTexture reach_texels;             // footprints at the vertex passes' texels (weave_reach.glsl)
+    // Footprints at the vertex passes' texels (weave_reach.glsl): this draw's and the one's before.
+    GlTexture reach_texels[2];
+    int reach_now = 0;
+    bool reach_filled = false;
     glm::dvec2 tiles_per_uv{1.0};
     bool lit = false;              // set_lighting called
     SgLighting lights;
@@ -99,6 +109,7 @@ private:
   std::map<std::pair<int, bool>, Programs> programs_;  // by Q_GROUPS and vertex terms
   std::unique_ptr<VisibleVertices> visible_;           // where supported
   bool visible_only_ = true, vertex_terms_ = false;
+  int shares_ = 1;
   // Each sample's lobes widened by its arc's tilts: a few stand for the float, satin's included.
   int tangent_samples_ = kWeavePixelSamples;
 };

@@ -8,9 +8,10 @@ uniform highp sampler2D u_weave_terms;
 out vec4 o_value;
 void main() {
   PassTexel t = pass_texel();
-  if (pass_keeps(t)) discard;  // no visible triangle uses it
-  vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
   if (weave_vertex_unresolved(t.p)) discard;  // no pixel near it shows the weave
+  // Kept where no visible triangle uses it or another share is due; computed where it was out of reach.
+  if (!weave_vertex_newly_resolved(t.p) && pass_keeps(t)) discard;
+  vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
   if (t.i >= u_vertex_count || t.k >= WEAVE_TABLE_NODES) {
     o_value = vec4(0.0);
     return;
