@@ -323,7 +323,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
       for (auto& o : objects_)
         if (o->cloth && o->weave_reachable && weave_->resolves(o->weave_handle, view)) {
           const StageScope stage(Stage::weave);
-          weave_->draw(o->weave_handle, vp, glm::vec3(camera.position));
+          weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), cloth_->shown_vertices(o->handle));
         }
     }
     if (pass == 0) draw_backdrop();

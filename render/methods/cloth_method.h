@@ -84,6 +84,17 @@ public:
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }
+  // The vertices of `handle` its last draw showed, where it marked them (iwasaki/visible_vertices.h):
+  // the marks' buffer (a uint per vertex) and the stamp a shown vertex holds, so that a layer drawn
+  // over the object from the same view takes them instead of rasterising the mesh again.
+  struct ShownVertices {
+    unsigned buffer = 0;  // a GL buffer name
+    unsigned stamp = 0;
+  };
+  virtual std::optional<ShownVertices> shown_vertices(size_t handle) const {
+    (void)handle;
+    return std::nullopt;
+  }
   // The object's per-vertex values as its last draw computed them (RGBA float texels, a block of
   // rows per value, vertex_pass.h's layout) and the texels a block holds; empty where the method
   // has none. For tests and diagnostics (a driver's NaN found at its vertex and SG).

@@ -101,6 +101,7 @@ struct IwasakiCloth::Object {
   GpuMesh mesh;
   std::unique_ptr<VertexPass> pass;  // per-vertex evaluation only
   size_t marks = 0;                  // its mesh in visible_, where there is one
+  unsigned shown_stamp = 0;          // the stamp of its last draw's marks (0: not marked)
   size_t vertices = 0;
   std::unique_ptr<ClothBsdf> bsdf;
   std::unique_ptr<ClothBsdf> ratio_bsdf;  // per vertex with a normal map: normal_map_ratio_bsdf(*bsdf)
@@ -266,6 +267,12 @@ bool IwasakiCloth::draw_depth(size_t handle, const glm::mat4& view_projection) {
   return true;
 }
 
+std::optional<ClothMethod::ShownVertices> IwasakiCloth::shown_vertices(size_t handle) const {
+  const Object& o = *objects_.at(handle);
+  if (!visible_ || o.shown_stamp == 0) return std::nullopt;
+  return ShownVertices{visible_->marks(o.marks), o.shown_stamp};
+}
+
 std::vector<float> IwasakiCloth::vertex_values(size_t handle, int* block_texels) const {
   const Object& o = *objects_.at(handle);
   if (!o.pass) return {};
@@ -406,8 +413,10 @@ void IwasakiCloth::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye
     if (broad[size_t(k)] != 0) shares[size_t(k)] = std::max(vertex_shares_, broad_shares_);
   if (visible_ && visible_only_) {
     visible_->mark_for(*o.pass, o.marks, vp);
+    o.shown_stamp = visible_->stamp();
   } else {
     o.pass->clear_marks();
+    o.shown_stamp = 0;
   }
   std::vector<const GlProgram*> programs(shares.size(), &program_);
   if (narrow_pass_) {

@@ -107,6 +107,7 @@ public:
   // computed them all (for tests).
   size_t visible_vertices(size_t handle) const;
   std::vector<float> vertex_values(size_t handle, int* block_texels) const override;
+  std::optional<ShownVertices> shown_vertices(size_t handle) const override;
 
 private:
   struct Object;

@@ -49,6 +49,7 @@ public:
   // against it instead of drawing the meshes' depth again into its own target.
   void draw_depth(size_t mesh, const glm::mat4& view_projection);
   GLuint marks(size_t mesh) const { return meshes_.at(mesh).marks; }
+  unsigned stamp() const { return stamp_; }  // the last mark's (0: none yet)
   // How many vertices of `mesh` the last mark found visible (reads the marks back: for tests).
   size_t visible(size_t mesh) const;
 

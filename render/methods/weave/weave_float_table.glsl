@@ -9,19 +9,7 @@ float weave_table_arc(int m) { return (float(m) + 0.5) / float(WEAVE_TABLE_ARCS)
 // Node m of thread j as a pixel's coverage: the cell its one piece, seen uniformly (weave_table_cell).
 WeaveCoverage weave_table_cell(int j, int m) {
   float width = 1.0 / float(WEAVE_TABLE_ARCS), centre = weave_table_arc(m);
-  WeaveCoverage c;
-  c.share = float[2](0.0, 0.0);
-  c.arc_spread = float[2](0.0, 0.0);
-  for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
-    c.piece_thread[i] = -1;
-    c.piece_share[i] = 0.0;
-    c.piece_arc[i] = 0.0;
-    c.piece_arc_lo[i] = 0.0;
-    c.piece_arc_hi[i] = 0.0;
-    c.piece_centre[i] = 0.0;
-  }
-  c.arc_box[0] = vec2(0.0);
-  c.arc_box[1] = vec2(0.0);
+  WeaveCoverage c = weave_coverage_empty();
   c.share[j] = 1.0;
   c.piece_thread[0] = j;
   c.piece_share[0] = 1.0;

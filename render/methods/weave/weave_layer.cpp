@@ -182,7 +182,7 @@ VertexPass& WeaveLayer::vertex_pass(Object& o) {
     o.pass = std::make_unique<VertexPass>(*o.source);
     o.table = std::make_unique<VertexPass>(*o.source);
     if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
-    if (visible_) o.marks = visible_->add_mesh(*o.source, *o.mesh, o.pass->texels());
+    if (visible_) o.marks = visible_->add_mesh(*o.source, *o.mesh, o.pass->texels());  // for a method that marks none
   }
   return *o.pass;
 }
@@ -223,7 +223,7 @@ void WeaveLayer::set_lighting(size_t handle, const WeaveLighting& lighting) {
   check_gl("uploading the weave layer's visibility");
 }
 
-void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) {
+void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, std::optional<ClothMethod::ShownVertices> shown) {
   Object& o = *objects_.at(handle);
   if (!o.lit) throw GpuError("weave layer: drawn before its lighting was set");
   const SgLighting& sgs = o.lights;
@@ -266,20 +266,23 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye) 
     VertexPass& pass = vertex_pass(o);
     upload_reach(o);
     set_up(*p.pass);
-    if (visible_ && visible_only_)
-      visible_->mark_for(pass, o.marks, vp);
-    else
-      pass.clear_marks();  // culling switched off after frames with it on: every vertex again
+    // The method's marks of this view where it made them; else the layer's own.
+    auto mark = [&](VertexPass& target) {
+      if (!visible_only_ || (!shown && !visible_))
+        target.clear_marks();  // culling switched off after frames with it on: every vertex again
+      else if (shown)
+        target.set_marks(shown->buffer, shown->stamp);
+      else
+        visible_->mark_for(target, o.marks, vp);
+    };
+    mark(pass);
     pass.run_share(*p.pass, 0, groups + 1, shares_);
     // Then each float's table from the terms' Qs: a second target, as a pass cannot read its own.
     set_up(*p.table);
     glActiveTexture(GL_TEXTURE0 + kTermsUnit);
     glBindTexture(GL_TEXTURE_2D, pass.result_texture());
     glUniform1i(p.table->uniform("u_weave_terms"), kTermsUnit);
-    if (visible_ && visible_only_)
-      visible_->mark_for(*o.table, o.marks, vp);  // the same view: the same marks
-    else
-      o.table->clear_marks();
+    mark(*o.table);  // the same view: the same marks
     o.table->run_share(*p.table, 0, 2 * kWeaveTableArcs, shares_);
   }
   set_up(*p.draw);

@@ -20,6 +20,7 @@
 #include "gl/gl_program.h"
 #include "gl/gl_texture.h"
 #include "gl/gpu_mesh.h"
+#include "methods/cloth_method.h"
 #include "methods/fabric_uniforms.h"
 #include "methods/iwasaki/vertex_pass.h"
 #include "methods/iwasaki/visible_vertices.h"
@@ -72,8 +73,11 @@ public:
   void set_lighting(size_t handle, const WeaveLighting& lighting);
   // Multiplies the bound framebuffer by the factor where the object is drawn (depth LEQUAL, no
   // depth or alpha writes); restores blending and depth state after: the view of the last
-  // resolves(handle, …). Throws GpuError before the object's first set_lighting.
-  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye);
+  // resolves(handle, …). `shown`: the vertices the method's draw of the object just showed in
+  // this view (ClothMethod::shown_vertices), where it marked them; else the layer marks them itself.
+  // Throws GpuError before the object's first set_lighting.
+  void draw(size_t handle, const glm::mat4& view_projection, const glm::vec3& eye,
+            std::optional<ClothMethod::ShownVertices> shown = std::nullopt);
 
 private:
   struct Object {

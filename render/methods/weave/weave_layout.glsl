@@ -191,20 +191,26 @@ vec2 weave_arc_box(int j, vec2 a, vec2 b) {
   return vec2(a.y, b.y) * float(u_weave_rows);
 }
 
-WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
-  WeaveCoverage out_;
-  out_.share = float[2](0.0, 0.0);
-  out_.arc_spread = float[2](0.0, 0.0);
+// A coverage of nothing: no share, every piece unused.
+WeaveCoverage weave_coverage_empty() {
+  WeaveCoverage c;
+  c.share = float[2](0.0, 0.0);
+  c.arc_spread = float[2](0.0, 0.0);
   for (int i = 0; i < WEAVE_COVERAGE_PIECES; ++i) {
-    out_.piece_thread[i] = -1;
-    out_.piece_share[i] = 0.0;
-    out_.piece_arc[i] = 0.0;
-    out_.piece_arc_lo[i] = 0.0;
-    out_.piece_arc_hi[i] = 0.0;
-    out_.piece_centre[i] = 0.0;
+    c.piece_thread[i] = -1;
+    c.piece_share[i] = 0.0;
+    c.piece_arc[i] = 0.0;
+    c.piece_arc_lo[i] = 0.0;
+    c.piece_arc_hi[i] = 0.0;
+    c.piece_centre[i] = 0.0;
   }
-  out_.arc_box[0] = vec2(0.0);
-  out_.arc_box[1] = vec2(0.0);
+  c.arc_box[0] = vec2(0.0);
+  c.arc_box[1] = vec2(0.0);
+  return c;
+}
+
+WeaveCoverage weave_coverage(highp vec2 st, highp vec2 dx, highp vec2 dy) {
+  WeaveCoverage out_ = weave_coverage_empty();
   float f = u_weave_warp_share, rows = float(u_weave_rows);
   if (u_weave_width <= 0.0) return out_;
   highp vec2 c = fract(st);
