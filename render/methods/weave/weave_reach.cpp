@@ -135,16 +135,8 @@ double WeaveReach::vertex_footprint(size_t i, const WeaveView& view) const {
 }
 
 double WeaveReach::nearest_footprint(const WeaveView& view) const {
-  const auto planes = frustum_planes(view.view_projection);
-  double best = std::numeric_limits<double>::infinity();
-  for (const Cluster& c : clusters_) {
-    if (outside(planes, c.centre, c.radius)) continue;
-    // The cluster's finest under any view direction first: most clusters of a far view end here.
-    if (c.threads_per_metre * std::max(glm::length(c.centre - view.eye) - c.radius, 0.0) * view.corner_pixel >= best) continue;
-    for (size_t i = c.begin; i < c.end; ++i)
-      if (!outside(planes, positions_[i], vertices_[i].radius)) best = std::min(best, vertex_footprint(i, view));
-  }
-  return best;
+  std::vector<float> each;
+  return footprints(view, std::numeric_limits<double>::infinity(), each);
 }
 
 double WeaveReach::footprints(const WeaveView& view, double limit, std::vector<float>& out) const {

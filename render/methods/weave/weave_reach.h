@@ -44,7 +44,8 @@ public:
   const std::vector<Vertex>& vertices() const { return vertices_; }
   // Vertex i's footprint from `view` (infinity where it is seen edge-on or from behind the eye).
   double vertex_footprint(size_t i, const WeaveView& view) const;
-  // The smallest footprint of any vertex within the view's frustum (infinity where none is).
+  // The smallest footprint of any vertex within the view's frustum (infinity where none is):
+  // footprints with no limit.
   double nearest_footprint(const WeaveView& view) const;
   // Every vertex's footprint into `out` (one a vertex), where it may come under `limit`; 1e30
   // where it cannot (out of the frustum, or its cluster's bound for any direction at or above
