@@ -21,10 +21,12 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "scene/gltf_cloth_names.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_loadable.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_names.h"
+#include "scene/gltf_sheen_fabric.h"
 #include "scene/thread_maps.h"
 
 namespace weft {
@@ -142,8 +144,13 @@ private:
   AccessorData accessor(int index, const std::string& where, std::initializer_list<int> types,
                         std::initializer_list<int> component_types, Integers integers = Integers::either);
   void resolve_materials();
+  // What a material that neither an override, its extras nor a preset's name makes cloth is taken
+  // as from its name and its KHR_materials_sheen (docs/design.md §1, "glTF materials as cloth"):
+  // a preset name, or "" for Lambertian; notes what it decided.
+  std::string inferred_fabric(size_t index);
   // The product colour of cloth material `index`: its baseColorFactor's RGB when the file gives
-  // one (absent, glTF's default white is no colour of the product's: the fabric's own stays).
+  // one (absent, glTF's default white is no colour of the product's: the fabric's own stays); for
+  // a material with a sheen made cloth by its name or sheen, the colour sheen_thread_colour gives.
   std::optional<glm::dvec3> cloth_colour(size_t index) const;
   // Cloth material `index`'s textures (baseColorTexture on both threads, extras.weft.weft_texture
   // the weft's own); none when it has no baseColorTexture.
@@ -168,6 +175,10 @@ private:
   std::vector<double> thickness_;  // per material (index + 1): extras.weft.optical_thickness, 0 when absent
   std::vector<glm::dvec2> repeats_;  // per material (index + 1): extras.weft.weave_repeats_per_uv, 0 when absent
   std::vector<std::string> variants_;  // KHR_materials_variants' variant names, in order
+  // Per material (index + 1): the thread colour of a material with a sheen made cloth by its name
+  // or sheen (sheen_thread_colour), none otherwise.
+  std::vector<std::optional<glm::dvec3>> sheen_colours_;
+  std::vector<std::string> notes_;  // what the import decided for the log (Scene::warnings)
   // Per variant, per material (index + 1): the materials (index + 1) that material's primitives wear in it.
   std::vector<std::vector<std::set<size_t>>> variant_materials_;
   // Per material (index + 1): extras.weft.display_name and .composition, empty when absent.
@@ -257,6 +268,7 @@ void Importer::resolve_materials() {
   repeats_.assign(m_.materials.size() + 1, glm::dvec2(0.0));
   display_names_.assign(m_.materials.size() + 1, "");
   compositions_.assign(m_.materials.size() + 1, "");
+  sheen_colours_.assign(m_.materials.size() + 1, std::nullopt);
   bool any_cloth = false;
   for (size_t i = 0; i < m_.materials.size(); ++i) {
     const tinygltf::Material& mat = m_.materials[i];
@@ -306,13 +318,69 @@ void Importer::resolve_materials() {
       fabric = mat.name;
     } else if (is_preset(options_.fabrics_dir, without_copy_suffix(mat.name))) {
       fabric = without_copy_suffix(mat.name);
+    } else {
+      fabric = inferred_fabric(i);
     }
     any_cloth = any_cloth || !fabric.empty();
   }
   if (!any_cloth && !options_.fallback_fabric.empty()) std::fill(fabrics_.begin(), fabrics_.end(), options_.fallback_fabric);
 }
 
+std::string Importer::inferred_fabric(size_t index) {
+  if (options_.fabrics_dir.empty()) return "";  // no presets to take: the caller wants geometry only
+  const tinygltf::Material& mat = m_.materials[index];
+  const std::string label = "material '" + mat.name + "'";
+  const ClothNameVerdict name = cloth_name_verdict(mat.name);
+  const auto words = [&] {
+    std::string out;
+    for (const std::string& w : name.words) out += (out.empty() ? "" : ", ") + w;
+    return out;
+  };
+  using Kind = ClothNameVerdict::Kind;
+  // A hard material's name outweighs a sheen: exporters put sheen on lacquered wood and brushed
+  // metal too, and a leg drawn as velvet is worse than a cushion drawn flat.
+  if (name.kind == Kind::hard) {
+    if (mat.extensions.count(kSheenExtension))
+      notes_.push_back(label + " not taken as cloth by its " + kSheenExtension + ": its name says " + words());
+    return "";
+  }
+  std::optional<SheenFactors> sheen;
+  try {
+    sheen = read_sheen_factors(mat, "materials[" + std::to_string(index) + "] ('" + mat.name + "')", notes_);
+  } catch (const SceneError& e) {
+    fail(e.what());
+  }
+  if (sheen && !sheen_is_on(*sheen)) sheen.reset();
+  std::string fabric, why;
+  if (name.kind == Kind::preset) {
+    fabric = name.preset;  // the author's word for the cloth outweighs its sheen
+    why = "name: " + words();
+  } else if (sheen) {
+    fabric = sheen_preset(*sheen);
+    why = std::string(kSheenExtension) + ": " + describe_sheen(*sheen);
+  } else if (name.kind == Kind::generic) {
+    fabric = kDefaultClothPreset;
+    why = "name: " + words();
+  } else {
+    if (name.kind == Kind::ambiguous)
+      notes_.push_back(label + " not taken as cloth by its name: its words disagree (" + words() + ")");
+    return "";
+  }
+  // The colour follows the sheen wherever there is one: a velvet named so is still a dark
+  // ground under its sheen's colour.
+  if (sheen) sheen_colours_[index + 1] = sheen_thread_colour(*sheen, fabric);
+  if (!is_preset(options_.fabrics_dir, fabric)) {
+    notes_.push_back(label + " would be cloth (" + why + ") in preset " + fabric + ", which " +
+                     options_.fabrics_dir.string() + " lacks: taken as Lambertian");
+    sheen_colours_[index + 1].reset();
+    return "";
+  }
+  notes_.push_back(label + " taken as cloth (" + why + "), preset " + fabric);
+  return fabric;
+}
+
 std::optional<glm::dvec3> Importer::cloth_colour(size_t index) const {
+  if (sheen_colours_[index + 1]) return sheen_colours_[index + 1];
   const tinygltf::Material& mat = m_.materials[index];
   // tinygltf fills an absent factor with the default; `values` holds only what the file says.
   if (!mat.values.count("baseColorFactor")) return std::nullopt;
@@ -818,6 +886,7 @@ Scene Importer::run() {
     throw SceneError(std::string(e.what()) + " (from extensions." + kVariants + ")");
   }
   if (!have_camera) s.camera = framed_camera(s);
+  for (const std::string& n : notes_) s.warnings.push_back(origin_ + ": " + n);
   return s;
 }
 
@@ -855,8 +924,8 @@ Scene parse_gltf_scene(const std::string& bytes, const std::string& origin, cons
   }
   // A required extension Weft does not read is refused by name (its data would read as garbage),
   // an optional one is a remark for the log.
-  const std::set<std::string> read = {kTextureTransform,          kVariants,           kDracoCompression,
-                                      kMeshoptCompression,        kKhrMeshoptCompression, kMeshQuantization};
+  const std::set<std::string> read = {kTextureTransform,   kVariants,         kDracoCompression, kMeshoptCompression,
+                                      kKhrMeshoptCompression, kMeshQuantization, kSheenExtension};
   for (const std::string& e : model.extensionsRequired)
     if (!read.count(e))
       throw SceneError(origin + ": requires the glTF extension " + e +

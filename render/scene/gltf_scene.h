@@ -19,8 +19,9 @@ struct GltfImportOptions {
   // Per material name: a preset name or a fabric file path (taken as given), overriding what
   // the glTF says; the material becomes cloth.
   std::map<std::string, std::string> fabric_overrides;
-  // When no material is cloth (no override, no extras.weft.fabric, no preset name), every
-  // material becomes cloth with this fabric; empty: the scene stays without cloth.
+  // When no material is cloth (no override, no extras.weft.fabric, no preset name, no fabric in
+  // its name, no sheen), every material becomes cloth with this fabric; empty: the scene stays
+  // without cloth.
   std::string fallback_fabric;
 };
 
@@ -35,8 +36,10 @@ bool is_gltf_path(const std::string& name);
 // Loads a glTF file as a scene: its first perspective camera (else a camera framed on the cloth,
 // or on everything when nothing is cloth), the default environment ("studio"). A material is
 // cloth when an override names it, when its extras.weft.fabric names a preset or a fabric file
-// (relative to the glTF), or when its name is a preset's. Throws SceneError naming the file and
-// the reason for anything it cannot use.
+// (relative to the glTF), when its name is a preset's, or when its name's words or its
+// KHR_materials_sheen say cloth (docs/design.md §1, "glTF materials as cloth"; each such
+// inference is in the scene's warnings). Throws SceneError naming the file and the reason for
+// anything it cannot use.
 Scene load_gltf_scene(const std::filesystem::path& file, const GltfImportOptions& options);
 // The same from bytes in memory (`origin` names them in errors, `base_dir` resolves external
 // buffers and fabric files).

@@ -3,6 +3,7 @@
 // glTF written here checks the frame conversion, hierarchy, cameras and warps by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_cloth_names.h"
 #include "scene/gltf_scene.h"
 #include "scene/scene_file.h"
 #include "support/base64_text.h"
@@ -442,9 +444,16 @@ TEST(GltfScene, BlenderCopySuffixMatchesItsPreset) {
   GltfBuilder b = quad();
   b.j["materials"][0] = {{"name", "linen_plain.001"}};
   EXPECT_EQ(parse(b).objects[0].fabric, "linen_plain");
-  for (const std::string name : {"linen_plain.", "linen_plain.a01", ".001", "linen_plain.001.002x"}) {
+  EXPECT_TRUE(parse(b).warnings.empty());  // the preset's own name: nothing inferred to report
+  b.j["materials"][0] = {{"name", ".001"}};
+  EXPECT_EQ(parse(b).objects[0].material, Material::lambertian);
+  // No copy suffix: not the preset's name, but the word "linen" in it is (the name rule, logged).
+  for (const std::string name : {"linen_plain.", "linen_plain.a01", "linen_plain.001.002x"}) {
     b.j["materials"][0] = {{"name", name}};
-    EXPECT_EQ(parse(b).objects[0].material, Material::lambertian) << name;
+    const Scene s = parse(b);
+    EXPECT_EQ(s.objects[0].fabric, "linen_plain") << name;
+    ASSERT_EQ(s.warnings.size(), 1u) << name;
+    EXPECT_NE(s.warnings[0].find("taken as cloth (name: linen)"), std::string::npos) << s.warnings[0];
   }
 }
 
@@ -633,10 +642,10 @@ TEST(GltfScene, SceneFileColourwaysDressTheGltfsClothObjects) {
 TEST(GltfScene, ExtensionsAreNamedWarnedOrRefused) {
   GltfBuilder b = quad();
   EXPECT_TRUE(parse(b).warnings.empty());
-  b.j["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+  b.j["extensionsUsed"] = json::array({"KHR_materials_clearcoat"});
   const Scene s = parse(b);
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_NE(s.warnings[0].find("KHR_materials_sheen"), std::string::npos) << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("KHR_materials_clearcoat"), std::string::npos) << s.warnings[0];
   b.j["extensionsUsed"] = json::array({"KHR_mesh_quantization", "EXT_texture_webp"});
   b.j["extensionsRequired"] = json::array({"KHR_mesh_quantization", "EXT_texture_webp"});
   try {
@@ -646,4 +655,242 @@ TEST(GltfScene, ExtensionsAreNamedWarnedOrRefused) {
     EXPECT_NE(std::string(e.what()).find("requires the glTF extension EXT_texture_webp"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("test.gltf"), std::string::npos) << e.what();
   }
+}
+
+// Cloth as pipelines author it (docs/design.md §1, "glTF materials as cloth"): the rule's cases
+// are chosen far from its thresholds, and what each must give is read off the rule as written
+// there, not off the code.
+namespace {
+
+// The quad's material replaced by `material`; its "name" is what the name rule reads.
+GltfBuilder quad_with(const json& material) {
+  GltfBuilder b = quad();
+  b.j["materials"][0] = material;
+  return b;
+}
+
+json sheen_material(const std::string& name, const std::vector<double>& base, double base_roughness,
+                    const std::vector<double>& sheen, double sheen_roughness) {
+  json m = {{"name", name},
+            {"pbrMetallicRoughness", {{"roughnessFactor", base_roughness}}},
+            {"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", sheen}, {"sheenRoughnessFactor", sheen_roughness}}}}}};
+  if (!base.empty()) m["pbrMetallicRoughness"]["baseColorFactor"] = {base[0], base[1], base[2], 1.0};
+  return m;
+}
+
+bool any_warning_has(const Scene& s, const std::vector<std::string>& words) {
+  for (const std::string& w : s.warnings)
+    if (std::all_of(words.begin(), words.end(), [&](const std::string& x) { return w.find(x) != std::string::npos; }))
+      return true;
+  return false;
+}
+
+std::string all_warnings(const Scene& s) {
+  std::string out;
+  for (const std::string& w : s.warnings) out += w + "\n";
+  return out;
+}
+
+}  // namespace
+
+TEST(GltfSheenCloth, NameWordsSplitAsExportersJoinThem) {
+  using W = std::vector<std::string>;
+  EXPECT_EQ(material_name_words("Fabric_Boucle.001"), (W{"fabric", "boucle"}));
+  EXPECT_EQ(material_name_words("Sofa Velvet-2"), (W{"sofa", "velvet"}));
+  EXPECT_EQ(material_name_words("sofaVelvet"), (W{"sofa", "velvet"}));
+  EXPECT_EQ(material_name_words("SOFAVelvet"), (W{"sofa", "velvet"}));
+  EXPECT_EQ(material_name_words("OAK_LEGS.012"), (W{"oak", "legs"}));
+  EXPECT_EQ(material_name_words("Bouclé"), (W{"bouclé"}));
+  EXPECT_EQ(material_name_words(".001"), W{});
+}
+
+TEST(GltfSheenCloth, ASheenMaterialIsClothInThePresetItsFactorsDescribe) {
+  struct Case {
+    const char* what;
+    json material;
+    std::string preset;
+    dvec3 colour;
+  };
+  const std::vector<Case> cases = {
+      // A dark base under a bright sheen on a matte base: a pile, coloured by its sheen (the sheen
+      // is more than twice the base).
+      {"velvet", sheen_material("Seat", {0.075, 0.06, 0.04}, 0.7, {0.9, 0.7, 0.6}, 0.6), "velvet", {0.9, 0.7, 0.6}},
+      // A faint, soft sheen over a matte, lighter base: a plain weave in the base colour.
+      {"linen", sheen_material("Seat", {0.6, 0.5, 0.4}, 0.9, {0.2, 0.2, 0.2}, 0.8), "linen_plain", {0.6, 0.5, 0.4}},
+      // A glossy base: the satin's float highlight, the crêpe's softer one; the base colour.
+      {"satin", sheen_material("Seat", {0.7, 0.2, 0.3}, 0.1, {0.3, 0.3, 0.3}, 0.3), "polyester_satin_charmeuse",
+       {0.7, 0.2, 0.3}},
+      {"crêpe", sheen_material("Seat", {0.2, 0.6, 0.3}, 0.32, {0.3, 0.3, 0.3}, 0.3), "silk_crepe_de_chine",
+       {0.2, 0.6, 0.3}},
+      // A strong, sharp sheen over a lighter base: the spec's own velvet example, whose base is
+      // glTF's default white (not outshone: the threads take that white).
+      {"spec's velvet", sheen_material("Seat", {}, 1.0, {0.9, 0.9, 0.9}, 0.0), "velvet", {1.0, 1.0, 1.0}},
+      // The same base as the velvet but the sheen less than twice it: the base colour.
+      {"pale velvet", sheen_material("Seat", {0.76, 0.53, 0.54}, 0.75, {1.0, 0.9, 0.9}, 0.85), "velvet",
+       {0.76, 0.53, 0.54}},
+  };
+  for (const Case& c : cases) {
+    GltfBuilder b = quad_with(c.material);
+    b.j["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+    const Scene s = parse(b);
+    ASSERT_EQ(s.objects.size(), 1u) << c.what;
+    const SceneObject& o = s.objects[0];
+    EXPECT_EQ(o.material, Material::cloth) << c.what;
+    EXPECT_EQ(o.fabric, c.preset) << c.what;
+    ASSERT_TRUE(o.colour.has_value()) << c.what;
+    expect_near(*o.colour, c.colour);
+    // Read, not ignored, and logged with the preset it chose.
+    EXPECT_FALSE(any_warning_has(s, {"ignores"})) << all_warnings(s);
+    EXPECT_TRUE(any_warning_has(s, {"test.gltf", "material 'Seat' taken as cloth (KHR_materials_sheen", "preset " + c.preset}))
+        << c.what << ": " << all_warnings(s);
+    // The threads carry the colour at the preset's own scales.
+    const json file = preset_json(c.preset);
+    const Fabric worn = object_base_fabric(o, load_fabric_preset(c.preset, kFabrics));
+    for (int t = 0; t < 2; ++t)
+      expect_near(worn.threads[t].albedo, file["threads"][t]["albedo_scale"].get<double>() * c.colour, 1e-12);
+  }
+}
+
+TEST(GltfSheenCloth, AZeroOrAbsentSheenColourIsNoSheen) {
+  for (const json& sheen : {json{{"sheenColorFactor", {0, 0, 0}}, {"sheenRoughnessFactor", 0.5}},
+                            json{{"sheenRoughnessFactor", 0.3}}, json::object()}) {
+    GltfBuilder b = quad_with({{"name", "Seat"},
+                               {"pbrMetallicRoughness", {{"baseColorFactor", {0.3, 0.4, 0.5, 1}}}},
+                               {"extensions", {{"KHR_materials_sheen", sheen}}}});
+    const Scene s = parse(b);
+    EXPECT_EQ(s.objects[0].material, Material::lambertian) << sheen.dump();
+    expect_near(s.objects[0].albedo, {0.3, 0.4, 0.5});
+    EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
+    // Nothing is cloth, so the fallback still dresses everything.
+    EXPECT_EQ(parse(b, options("silk_shot")).objects[0].fabric, "silk_shot");
+  }
+}
+
+TEST(GltfSheenCloth, ExtrasFabricAndAPresetsNameOverrideTheSheen) {
+  json m = sheen_material("Seat", {0.05, 0.05, 0.3}, 0.8, {0.9, 0.9, 0.9}, 0.2);  // velvet by its sheen
+  m["extras"]["weft"]["fabric"] = "linen_plain";
+  const Scene s = parse(quad_with(m));
+  EXPECT_EQ(s.objects[0].fabric, "linen_plain");
+  ASSERT_TRUE(s.objects[0].colour.has_value());
+  expect_near(*s.objects[0].colour, {0.05, 0.05, 0.3});  // the base colour, as any cloth's
+  EXPECT_FALSE(any_warning_has(s, {"taken as cloth"})) << all_warnings(s);
+  m.erase("extras");
+  m["name"] = "silk_shot.002";
+  EXPECT_EQ(parse(quad_with(m)).objects[0].fabric, "silk_shot");
+}
+
+TEST(GltfSheenCloth, ExportNamesOfFabricsAreClothByName) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"Velvet.001", "velvet"},          {"SOFA-velvet 2", "velvet"},       {"sofaVelvets", "velvet"},
+      {"Fabric_Boucle.001", "linen_plain"}, {"Cotton Linen", "linen_plain"}, {"Wool_Throw", "linen_plain"},
+      {"Satin.003", "polyester_satin_charmeuse"}, {"Silk cushion", "silk_crepe_de_chine"},
+      {"Textile", "linen_plain"},        {"Upholstery.002", "linen_plain"}, {"Cloth", "linen_plain"},
+  };
+  for (const auto& [name, preset] : cases) {
+    const Scene s = parse(quad_with({{"name", name}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.4, 0.2, 0.1, 1}}}}}));
+    EXPECT_EQ(s.objects[0].material, Material::cloth) << name;
+    EXPECT_EQ(s.objects[0].fabric, preset) << name;
+    ASSERT_TRUE(s.objects[0].colour.has_value()) << name;
+    expect_near(*s.objects[0].colour, {0.4, 0.2, 0.1});
+    EXPECT_TRUE(any_warning_has(s, {"material '" + name + "' taken as cloth (name", "preset " + preset})) << all_warnings(s);
+  }
+  // Without a colour a name keeps the preset's own, as a preset's name does.
+  EXPECT_FALSE(parse(quad_with({{"name", "Velvet.001"}})).objects[0].colour.has_value());
+  // A velvet named so, as Khronos' GlamVelvetSofa's: the name gives the weave, the sheen that
+  // outshines its near-black ground the colour.
+  const Scene navy =
+      parse(quad_with(sheen_material("GlamVelvetSofa_fabric_navy", {0.01, 0.01, 0.01}, 0.7, {0.05, 0.17, 0.5}, 0.6)));
+  EXPECT_EQ(navy.objects[0].fabric, "velvet");
+  ASSERT_TRUE(navy.objects[0].colour.has_value());
+  expect_near(*navy.objects[0].colour, {0.05, 0.17, 0.5});
+  // A fabric's own word outweighs the sheen; a generic word leaves the weave to the sheen.
+  const json glossy_velvet_sheen = sheen_material("Linen.001", {0.05, 0.05, 0.05}, 0.8, {0.9, 0.9, 0.9}, 0.2);
+  EXPECT_EQ(parse(quad_with(glossy_velvet_sheen)).objects[0].fabric, "linen_plain");
+  EXPECT_EQ(parse(quad_with(sheen_material("Upholstery", {0.5, 0.5, 0.5}, 0.1, {0.2, 0.2, 0.2}, 0.5))).objects[0].fabric,
+            "polyester_satin_charmeuse");
+}
+
+TEST(GltfSheenCloth, HardAmbiguousAndUnknownNamesStayLambertian) {
+  for (const std::string name : {"Oak_Legs", "Wood", "Chrome.001", "Steel feet", "Plastic", "Leather_Seat", "Wood_Fabric",
+                                 "Velvet_Satin", "Velvety", "Cottonwood", "Sofa"}) {
+    const Scene s = parse(quad_with({{"name", name}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.4, 0.3, 0.2, 1}}}}}));
+    EXPECT_EQ(s.objects[0].material, Material::lambertian) << name;
+    expect_near(s.objects[0].albedo, {0.4, 0.3, 0.2});
+  }
+  EXPECT_TRUE(any_warning_has(parse(quad_with({{"name", "Velvet_Satin"}})), {"'Velvet_Satin'", "velvet, satin"}));
+  // A sheen on a part named as wood or metal does not make it cloth, and the log says why.
+  const Scene oak = parse(quad_with(sheen_material("Oak_Legs", {0.4, 0.3, 0.2}, 0.8, {0.9, 0.9, 0.9}, 0.3)));
+  EXPECT_EQ(oak.objects[0].material, Material::lambertian);
+  EXPECT_TRUE(any_warning_has(oak, {"'Oak_Legs' not taken as cloth", "oak, legs"})) << all_warnings(oak);
+  // Cloth and wood words together are no verdict: the sheen decides.
+  EXPECT_EQ(parse(quad_with(sheen_material("Wood_Fabric", {0.6, 0.5, 0.4}, 0.9, {0.2, 0.2, 0.2}, 0.8))).objects[0].fabric,
+            "linen_plain");
+}
+
+TEST(GltfSheenCloth, AProductFileAsExportedHasClothSeatAndWoodenLegs) {
+  GltfBuilder b = quad_with(sheen_material("Fabric_Boucle.001", {0.55, 0.5, 0.45}, 0.9, {0.3, 0.3, 0.3}, 0.7));
+  b.j["materials"].push_back({{"name", "Oak_Legs"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.35, 0.2, 1}}}}});
+  json legs = b.j["meshes"][0];
+  legs["primitives"][0]["material"] = 1;
+  b.j["meshes"].push_back(legs);
+  b.j["nodes"].push_back({{"mesh", 1}, {"translation", {0, -1, 0}}});
+  b.j["scenes"][0]["nodes"].push_back(2);
+  b.j["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+  const Scene s = parse(b, options("silk_shot"));  // the fallback is for files with no cloth at all
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].name, "Fabric_Boucle.001");
+  EXPECT_EQ(s.objects[0].fabric, "linen_plain");
+  expect_near(*s.objects[0].colour, {0.55, 0.5, 0.45});
+  EXPECT_EQ(s.objects[1].name, "Oak_Legs");
+  EXPECT_EQ(s.objects[1].material, Material::lambertian);
+  expect_near(s.objects[1].albedo, {0.5, 0.35, 0.2});
+  EXPECT_TRUE(any_warning_has(s, {"material 'Fabric_Boucle.001' taken as cloth (name: fabric, boucle), preset linen_plain"}))
+      << all_warnings(s);
+}
+
+TEST(GltfSheenCloth, ASceneFilesFabricOverridesTheSheen) {
+  const fs::path dir = fs::temp_directory_path() / "weft_gltf_sheen_scene_file_test";
+  fs::create_directories(dir);
+  std::ofstream(dir / "sofa.gltf") << quad_with(sheen_material("Seat", {0.1, 0.1, 0.4}, 0.8, {0.8, 0.8, 0.9}, 0.3)).text();
+  std::ofstream(dir / "room.json") << R"({"gltf": "sofa.gltf", "fabrics": {"Seat": "silk_shot"}})";
+  SceneLoadOptions o;
+  o.fabrics_dir = kFabrics;
+  EXPECT_EQ(load_scene(dir / "sofa.gltf", o).objects.at(0).fabric, "velvet");  // by its sheen alone
+  const Scene s = load_scene(dir / "room.json", o);
+  EXPECT_EQ(s.objects.at(0).fabric, "silk_shot");
+  ASSERT_TRUE(s.objects.at(0).colour.has_value());
+  expect_near(*s.objects.at(0).colour, {0.1, 0.1, 0.4});  // the base colour, as any cloth's
+}
+
+TEST(GltfSheenCloth, BadSheenFactorsAreRefusedOrClampedWithANote) {
+  const auto with_sheen = [](const json& sheen) {
+    return quad_with({{"name", "Seat"}, {"extensions", {{"KHR_materials_sheen", sheen}}}});
+  };
+  for (const auto& [sheen, field] : std::vector<std::pair<json, std::string>>{
+           {json{{"sheenColorFactor", "red"}}, "sheenColorFactor"},
+           {json{{"sheenColorFactor", {0.5, 0.5}}}, "sheenColorFactor"},
+           {json{{"sheenColorFactor", {0.5, "x", 0.5}}}, "sheenColorFactor[1]"},
+           {json{{"sheenColorFactor", {0.5, 0.5, 0.5}}, {"sheenRoughnessFactor", "rough"}}, "sheenRoughnessFactor"}}) {
+    const std::string why = refusal([&] { parse(with_sheen(sheen)); });
+    EXPECT_NE(why.find("test.gltf"), std::string::npos) << sheen.dump() << ": " << why;
+    EXPECT_NE(why.find("materials[0] ('Seat').extensions.KHR_materials_sheen"), std::string::npos) << why;
+    EXPECT_NE(why.find(field), std::string::npos) << sheen.dump() << ": " << why;
+  }
+  // An extension that is no object is no sheen (tinygltf drops it).
+  EXPECT_EQ(parse(with_sheen(json(3))).objects[0].material, Material::lambertian);
+  // Out of range: clamped into [0, 1] and noted. The colour's 2 is 1 and its -0.5 is 0, the
+  // roughness 1.5 is 1: a sheen of 1 is not below glTF's default white base, a pile.
+  const Scene s = parse(with_sheen({{"sheenColorFactor", {2.0, 0.5, -0.5}}, {"sheenRoughnessFactor", 1.5}}));
+  EXPECT_EQ(s.objects[0].material, Material::cloth);
+  EXPECT_EQ(s.objects[0].fabric, "velvet");  // the sheen (1) is not below the base (1)
+  EXPECT_TRUE(any_warning_has(s, {"sheenRoughnessFactor", "1.5", "clamped to 1"})) << all_warnings(s);
+  EXPECT_TRUE(any_warning_has(s, {"sheenColorFactor[0]", "clamped to 1"})) << all_warnings(s);
+  EXPECT_TRUE(any_warning_has(s, {"sheenColorFactor[2]", "clamped to 0"})) << all_warnings(s);
+  // A number JSON cannot hold is refused whole or named, never taken.
+  const std::string huge = refusal([&] {
+    std::string text = with_sheen({{"sheenColorFactor", {0.5, 0.5, 0.5}}}).text();
+    text.replace(text.find("0.5"), 3, "1e999");
+    parse_gltf_scene(text, "test.gltf", fs::temp_directory_path(), options());
+  });
+  EXPECT_NE(huge.find("test.gltf"), std::string::npos) << huge;
 }
