@@ -69,6 +69,16 @@ CommandAction add_run_command(CLI::App& app) {
                   "shading that changes slowly with the view) once per this many degrees of turn, a share each frame; "
                   "the sharper lobes follow --vertex-refresh and --vertex-refresh-deg; 0: every frame")
       ->capture_default_str();
+  sub->add_option("--weave-terms", a->weave_terms,
+                  "Up close over a per-vertex rung, each float of the weave lit per pixel (pixel: close to the resolved "
+                  "model), from a per-vertex table (table: a fraction of the cost, coarser), or auto: per pixel while the "
+                  "frames that show threads stay within --weave-budget, else the table for the rest of the run")
+      ->check(CLI::IsMember({"auto", "pixel", "table"}))
+      ->capture_default_str();
+  sub->add_option("--weave-budget", a->weave_budget_ms,
+                  "Milliseconds a frame (median of 8 that show threads) the per-pixel weave may take under --weave-terms auto")
+      ->check(CLI::Range(1.0, 10000.0))
+      ->capture_default_str();
   sub->add_option("--profile", a->profile,
                   "Per-stage frame profile in the stats lines (backdrop, surfaces, vertex passes, cloth, weave, "
                   "metering, present): off, auto (GPU timer queries where a hardware driver has them, else CPU time), gpu or cpu")

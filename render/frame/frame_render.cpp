@@ -14,7 +14,8 @@ namespace weft {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
-                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave) {
+                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave,
+                          bool weave_pixel_terms) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
   for (const auto& o : scene.cloth_objects()) cloth.push_back(object_base_fabric(o, fabrics));
@@ -23,6 +24,7 @@ GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);
   renderer.set_weave(weave);
+  renderer.set_weave_pixel_terms(weave_pixel_terms);
   gpu::OffscreenTarget target(width, height);
   target.bind();
   renderer.draw(scene.camera, width, height);  // warm-up: shader compilation, first upload

@@ -27,6 +27,7 @@ struct GpuFrame {
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
                           std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr,
-                          gpu::Backdrop backdrop = gpu::Backdrop::measure, bool weave = false);
+                          gpu::Backdrop backdrop = gpu::Backdrop::measure, bool weave = false,
+                          bool weave_pixel_terms = true);  // gpu::SceneRenderer::set_weave_pixel_terms
 
 }  // namespace weft

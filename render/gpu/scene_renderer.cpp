@@ -1,5 +1,6 @@
 #include "gpu/scene_renderer.h"
 
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <algorithm>
@@ -18,6 +19,18 @@
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {
+
+namespace {
+// The layer's terms for the method (SceneRenderer::set_weave_pixel_terms). Over a per-pixel
+// approximation of the model (`sheen`, `sgpoint`) its level is the pixel's own, which a level
+// interpolated from the vertices would miscorrect: the table, whose ratio divides out its own
+// interpolation.
+WeaveLayer::Terms weave_terms(const ClothMethod& cloth, const methods::RuntimeMethod& method, bool pixel_terms) {
+  if (cloth.weave_terms_per_pixel()) return WeaveLayer::Terms::pixel;
+  if (pixel_terms && method.shading == methods::Shading::per_vertex) return WeaveLayer::Terms::pixel_over_vertex;
+  return WeaveLayer::Terms::vertex_table;
+}
+}  // namespace
 
 SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness) {
   SgLighting out = sgs;
@@ -206,7 +219,7 @@ void SceneRenderer::set_weave(bool on) {
     auto layer = std::make_unique<WeaveLayer>();
     layer->set_visible_vertices_only(visible_only_);
     layer->set_vertex_refresh(vertex_refresh_);
-    layer->set_vertex_terms(!cloth_->weave_terms_per_pixel());
+    layer->set_terms(weave_terms(*cloth_, *method_, weave_pixel_terms_));
     weave_max_lights_ = layer->max_lights();
     for (auto& o : objects_)
       if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
@@ -217,6 +230,14 @@ void SceneRenderer::set_weave(bool on) {
     for (auto& o : objects_)
       if (o->cloth && o->weave_reachable) weave_->set_lighting(o->weave_handle, weave_lighting_of(*o, sgs_));
   weave_on_ = on;
+}
+
+void SceneRenderer::set_weave_pixel_terms(bool on) {
+  if (on == weave_pixel_terms_) return;
+  weave_pixel_terms_ = on;
+  if (!weave_) return;
+  weave_->set_terms(weave_terms(*cloth_, *method_, weave_pixel_terms_));
+  weave_->refresh_all();  // the other terms' kept values are of frames before
 }
 
 size_t SceneRenderer::set_weave_range(std::span<const OrbitingCamera> cameras, int width, int height) {
@@ -252,6 +273,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
   const glm::mat4 vp = proj * view;
   const bool see_through = method_->see_through;
   glViewport(0, 0, width, height);
+  weave_drawn_ = false;
   glDisable(GL_BLEND);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -323,6 +345,7 @@ void SceneRenderer::draw(const Camera& camera, int width, int height) {
       for (auto& o : objects_)
         if (o->cloth && o->weave_reachable && weave_->resolves(o->weave_handle, view)) {
           const StageScope stage(Stage::weave);
+          weave_drawn_ = true;
           weave_->draw(o->weave_handle, vp, glm::vec3(camera.position), cloth_->shown_vertices(o->handle));
         }
     }

@@ -98,6 +98,15 @@ public:
   // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
   void set_weave(bool on);
   bool weave() const { return weave_on_; }
+  // Over a method that shades per vertex, where each float's lighting comes from
+  // (WeaveLayer::Terms): per pixel over the method's per-vertex level (true, the default: within
+  // 8 % of the resolved reference up close, at a per-pixel light loop), or the per-vertex table
+  // (false: no light per pixel, far less accurate up close). Over `iwasaki` the layer's terms are
+  // all per pixel, over another per-pixel method from the table, either way.
+  void set_weave_pixel_terms(bool on);
+  bool weave_pixel_terms() const { return weave_pixel_terms_; }
+  // Whether the last draw() drew the weave layer over any object (some thread was resolved).
+  bool weave_drawn() const { return weave_drawn_; }
   // The cameras a viewer can be shown (the kiosk's zoom path), each turned about the vertical
   // through its pivot by any angle (the turntable), on a width × height image: a cloth object no
   // such camera can show a thread of gets no weave work at all (no lights, no visibility at a
@@ -127,7 +136,7 @@ private:
   SgLighting sgs_, backdrop_sgs_;
   std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)
-  bool weave_on_ = false;
+  bool weave_on_ = false, weave_pixel_terms_ = true, weave_drawn_ = false;
   int weave_max_lights_ = 0;           // the layer's max_lights, read on the GL thread
   bool visible_only_ = true;  // set_visible_vertices_only
   int vertex_refresh_ = 1;    // set_vertex_refresh

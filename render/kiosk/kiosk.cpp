@@ -44,7 +44,9 @@ Kiosk::Kiosk(KioskConfig config)
     : config_(std::move(config)),
       exposure_(config_.exposure_bias + std::log2(config_.exposure), kExposureAdaptSeconds),
       idle_(config_.idle_return_s, kIdleEaseSeconds),
-      screen_schedule_(ScreenSchedule::parse(config_.screen_off)) {}
+      screen_schedule_(ScreenSchedule::parse(config_.screen_off)),
+      weave_terms_(WeaveTermsGovernor::parse(config_.weave_terms).value_or(WeaveTermsGovernor::Mode::automatic),
+                   config_.weave_budget_ms) {}
 
 Kiosk::~Kiosk() = default;
 
@@ -362,6 +364,7 @@ void Kiosk::draw_frame(double turn_deg) {
   renderer_->set_vertex_refresh(std::max(config_.vertex_refresh, by_turn));
   renderer_->set_broad_lobe_refresh(refresh_shares(config_.broad_lobe_refresh_deg, turn_per_frame_));
   renderer_->set_clock(std::chrono::duration<double>(t0.time_since_epoch()).count());
+  renderer_->set_weave_pixel_terms(weave_terms_.pixel_terms());
   target_->bind();
   // Far away the camera circles the product; all the way in, the point it looks at up close.
   const Camera camera = dolly(scene_->scene.camera, closeup_, zoom_shown_);
@@ -376,6 +379,7 @@ void Kiosk::draw_frame(double turn_deg) {
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   frame_ms_.push(ms);
   since_stats_ms_.push(ms);
+  if (const auto line = weave_terms_.frame(ms, renderer_->weave_drawn())) kiosk_log_info(*line);
 }
 
 void Kiosk::present(Clock::time_point now) {

@@ -62,6 +62,7 @@
 #include "kiosk/screen_schedule.h"
 #include "kiosk/screen_wait.h"
 #include "kiosk/service_notifier.h"
+#include "kiosk/weave_terms_governor.h"
 #include "panel/appearance_state.h"
 
 namespace weft {
@@ -199,6 +200,7 @@ private:
   bool screen_off_ = false, screen_checked_ = false;
   Clock::time_point screen_checked_at_;
   RecentSamples frame_ms_, since_stats_ms_, latency_ms_;
+  WeaveTermsGovernor weave_terms_;  // the weave layer's terms up close, by what the GPU affords
 
   // The screen: how long it has been missing; set when the display card came or went.
   std::optional<ScreenWait> screen_wait_;

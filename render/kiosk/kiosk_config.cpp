@@ -7,6 +7,7 @@
 #include "gpu/display_choice.h"
 #include "kiosk/kiosk_config_error.h"
 #include "kiosk/screen_schedule.h"
+#include "kiosk/weave_terms_governor.h"
 #include "label/label_overlay.h"
 #include "methods/registry.h"
 
@@ -57,6 +58,10 @@ void check_kiosk_config(const KioskConfig& c) {
     throw KioskConfigError("--vertex-refresh-deg: degrees of turn over which every vertex is recomputed once, in [0, 90]");
   if (!(c.broad_lobe_refresh_deg >= 0.0 && c.broad_lobe_refresh_deg <= 90.0))
     throw KioskConfigError("--broad-lobe-refresh-deg: degrees of turn over which the broad lobes' quadrature is recomputed once, in [0, 90]");
+  if (!WeaveTermsGovernor::parse(c.weave_terms))
+    throw KioskConfigError("--weave-terms: expected auto, pixel or table, got '" + c.weave_terms + "'");
+  if (!(c.weave_budget_ms >= 1.0 && c.weave_budget_ms <= 10000.0))
+    throw KioskConfigError("--weave-budget: milliseconds a frame in [1, 10000]");
   if (c.profile != "off" && c.profile != "auto" && c.profile != "gpu" && c.profile != "cpu")
     throw KioskConfigError("--profile: expected off, auto, gpu or cpu, got '" + c.profile + "'");
   if (c.label != "on" && c.label != "off") throw KioskConfigError("--label: expected on or off, got '" + c.label + "'");

@@ -43,6 +43,11 @@ struct KioskConfig {
   // changes slowly with the view, is recomputed for every vertex at least once per this many degrees
   // of turntable (each frame the share its turn calls for); 0: every frame.
   double broad_lobe_refresh_deg = 6.0;
+  // The weave layer's terms up close over a per-vertex rung (kiosk/weave_terms_governor.h): auto
+  // (each float lit per pixel while the frames that show threads take at most weave_budget_ms,
+  // else the per-vertex table), pixel or table.
+  std::string weave_terms = "auto";
+  double weave_budget_ms = 40.0;
   double stats_every = 300;               // seconds between stats lines; 0: none
   // The per-stage frame profile (gl/frame_profile.h) in the stats lines and the last line:
   // off, auto (GPU timestamps where the driver has them), gpu or cpu.

@@ -23,7 +23,9 @@
 // WEFT_KIOSK_PLAIN_REUSE: no clock for the renderer, so kept values are not extrapolated;
 // WEFT_KIOSK_ZOOMS: zoom positions ("0,0.25,0.5,0.75,1"; default "0": the scene's view), each the
 // camera dollied that far toward the kiosk's close-up as `weft run --zoom` places it;
-// WEFT_KIOSK_WEAVE: "on" (the default, as the kiosk arms it), "off" or "on,off": the weave layer;
+// WEFT_KIOSK_WEAVE: the weave layer, a list of "on" (the default, as the kiosk arms it: up close
+// over a per-vertex rung each float lit per pixel), "table" (the per-vertex table instead: the
+// kiosk's choice where those frames exceed --weave-budget) and "off";
 // WEFT_KIOSK_FRAMES: timed frames (24); WEFT_KIOSK_DEG_PER_FRAME: the turn a frame (0.4); WEFT_KIOSK_SIZE: "640x480"; WEFT_KIOSK_OUT: the table file.
 #include <gtest/gtest.h>
 
@@ -232,8 +234,11 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
       for (const double z : zooms)
       for (const std::string& weave : weaves) {
         zoom = z;
-        r->set_weave(weave == "on");
-        full->set_weave(weave == "on");
+        // on or pixel: each float lit per pixel up close; table: the per-vertex table; off.
+        r->set_weave(weave != "off");
+        full->set_weave(weave != "off");
+        r->set_weave_pixel_terms(weave != "table");
+        full->set_weave_pixel_terms(weave != "table");
         const bool visible_only = vertices != "all";
         // Measured against the full frame (WEFT_KIOSK_NO_ERROR: not, where reading frames back would dwarf them, e.g. 4K).
         const bool reused = (reuse.longest() > 1 || (per_vertex && visible_only)) && std::getenv("WEFT_KIOSK_NO_ERROR") == nullptr;

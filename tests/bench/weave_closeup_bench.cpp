@@ -25,7 +25,9 @@
 // from tables this bench wrote, rendering nothing. WEFT_WEAVE_REFERENCE_FROM=DIR takes each
 // case's resolved reference from DIR (a WEFT_WEAVE_IMAGES directory of an earlier run of the same
 // case) instead of rendering it: the rungs measured again in minutes, not the reference's quarter
-// hour. The bake is weft bake's default (tables, visibility, masks): the weave layer's lights take
+// hour. WEFT_WEAVE_TERMS=table: over a per-vertex rung the layer reads each float's lighting off
+// its per-vertex table (the kiosk's choice on a GPU too slow for the default, each float lit per
+// pixel); the rung's name in the table says so. The bake is weft bake's default (tables, visibility, masks): the weave layer's lights take
 // their visibility from the masks, as in a kiosk.
 #include <gtest/gtest.h>
 
@@ -300,6 +302,8 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     bo.mask_resolution = kMaskResolution;
     in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, bo));
     const bool quick = std::getenv("WEFT_WEAVE_QUICK") != nullptr;  // accuracy of iwasaki_vertex only
+    // Over a per-vertex rung, the layer's per-vertex table instead of each float lit per pixel.
+    const bool table_terms = std::getenv("WEFT_WEAVE_TERMS") && std::string(std::getenv("WEFT_WEAVE_TERMS")) == "table";
     std::vector<std::string> methods = {"iwasaki_vertex", "iwasaki"};
     if (const char* m = std::getenv("WEFT_WEAVE_METHODS")) {
       methods.clear();
@@ -310,7 +314,8 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       auto frame = [&](const Camera& cam, int w, int h, int frames, bool weave) {
         Scene s = in.scene;
         s.camera = cam;
-        return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.iwasaki, gpu::Backdrop::measure, weave);
+        return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.iwasaki, gpu::Backdrop::measure, weave,
+                                !table_terms);
       };
       const Image alone_image = frame(close, kW, kH, 0, false).image;
       const double nan = std::nan("");
@@ -346,7 +351,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       char row[700];
       std::snprintf(row, sizeof row,
                     "| %s | %s | %.0f | %s | %.4f | %.4f | %.4f | %.4f (%zu px) | %.1f | %.1f | %.2f | %.1e | %.4f | %.4f | %.4f | %.4f |\n",
-                    c.scene.c_str(), c.fabric.empty() ? "(scene's)" : c.fabric.c_str(), repeat_px, method.c_str(), fabric_level, alone,
+                    c.scene.c_str(), c.fabric.empty() ? "(scene's)" : c.fabric.c_str(), repeat_px, (table_terms && method.find("_vertex") != std::string::npos ? method + " (table)" : method).c_str(), fabric_level, alone,
                     woven, woven_resolved.relative_rmse, woven_resolved.pixels, ms_alone, ms_woven, ms_woven / ms_alone, far_change, flicker[0], flicker[1], at_points[0], at_points[1]);
       table << row;
       std::cout << row << std::flush;

@@ -45,7 +45,8 @@ SgLighting four_sgs() {
 // four visibilities V_k; writes the factor (mode 0), the four Qs weave_terms gives (mode 1), its
 // fabric-level term (mode 3), the factor filtered over the footprint whose tile-space
 // derivatives are u_d's xy and zw (mode 2), or the same from the per-float table made at the
-// pixel (mode 4: weave_table_node, weave_ratio_tabled), or the four Qs weave_q_group gives (mode 5).
+// pixel (mode 4: weave_table_node, weave_ratio_tabled), or the four Qs weave_q_group gives (mode 5)
+// or weave_qs (mode 6: the layer's Qs over a per-vertex method's level).
 const char* kFs = R"(
 uniform highp sampler2D u_wo, u_n, u_u, u_st, u_fabric, u_q, u_d, u_vis;
 uniform int u_mode;
@@ -71,6 +72,12 @@ void main() {
     for (int k = 0; k < WEAVE_TABLE_NODES; ++k) table[k] = weave_table_node(n, u, wo, k / WEAVE_TABLE_ARCS, k % WEAVE_TABLE_ARCS, weight);
     highp vec4 d = texelFetch(u_d, p, 0);
     colour = vec4(weave_ratio_tabled(texelFetch(u_st, p, 0).xy, d.xy, d.zw, texelFetch(u_fabric, p, 0).xyz, table), 1.0);
+    return;
+  }
+  if (u_mode == 6) {
+    vec4 alone[1];
+    weave_qs(n, u, wo, alone);
+    colour = alone[0];
     return;
   }
   vec3 fabric;
@@ -173,12 +180,17 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
   program.use();
   glUniform1i(program.uniform("u_mode"), 4);
   const std::vector<float> tabled = test::shade_cases(program, kW, kH, inputs);
+  program.use();
+  glUniform1i(program.uniform("u_mode"), 6);
+  const std::vector<float> sweep_qs = test::shade_cases(program, kW, kH, inputs);
   int compared = 0, threads = 0, filtered_compared = 0, mixed = 0;
   for (int i = 0; i < kCases; ++i) {
     const WeaveTerms twin = weave_terms(bsdf, frames[i], wos[i], sgs, visibility[i]);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k;
     for (int k = 0; k < 4; ++k)
       EXPECT_NEAR(group_qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k << ", its group alone";
+    for (int k = 0; k < 4; ++k)
+      EXPECT_NEAR(sweep_qs[4 * i + k], twin.q[k], 2e-3 * (1.0 + twin.q[k])) << "case " << i << " SG " << k << ", the Qs alone";
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(fabrics[4 * i + c], twin.fabric[c], 3e-3 * (1.0 + twin.fabric[c])) << "case " << i << " channel " << c;
     // A point within float round-off of a yarn's edge may fall either side: not a parity case.

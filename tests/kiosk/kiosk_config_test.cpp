@@ -25,6 +25,14 @@ std::string error(Edit edit) {
 }
 }  // namespace
 
+TEST(KioskConfig, WeaveTermsAndBudgetNameTheirFlag) {
+  for (const char* terms : {"auto", "pixel", "table"}) EXPECT_EQ(error([&](KioskConfig& c) { c.weave_terms = terms; }), "") << terms;
+  EXPECT_EQ(error([](KioskConfig& c) { c.weave_terms = "vertex"; }).rfind("--weave-terms:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.weave_budget_ms = 16.7; }), "");
+  EXPECT_EQ(error([](KioskConfig& c) { c.weave_budget_ms = 0.0; }).rfind("--weave-budget:", 0), 0u);
+  EXPECT_EQ(error([](KioskConfig& c) { c.weave_budget_ms = std::numeric_limits<double>::quiet_NaN(); }).rfind("--weave-budget:", 0), 0u);
+}
+
 TEST(KioskConfig, ProfileAndVertexRefreshNameTheirFlag) {
   for (const char* clock : {"off", "auto", "gpu", "cpu"}) EXPECT_EQ(error([&](KioskConfig& c) { c.profile = clock; }), "") << clock;
   EXPECT_EQ(error([](KioskConfig& c) { c.profile = "fast"; }).rfind("--profile:", 0), 0u);

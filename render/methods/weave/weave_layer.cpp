@@ -21,10 +21,17 @@ namespace {
 constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
 
 // Each a whole vec4 in case the GL packs no tighter. Per-pixel terms: position, normal, warp, UV
-// and a vec4 per group of four lights for their visibility. Vertex terms: UV, the fabric-level
-// response and the per-float table's RGB values packed four to a vec4, whatever the lights.
+// and a vec4 per group of four lights for their visibility (and the fabric-level response over
+// the vertex level). Vertex table: UV, the fabric-level response and the per-float table's RGB
+// values packed four to a vec4, whatever the lights.
 constexpr int kTableVec4s = (3 * 2 * kWeaveTableArcs + 3) / 4;
-int weave_varying_components(int q_groups, bool vertex_terms) { return vertex_terms ? 4 * (2 + kTableVec4s) : 16 + 4 * q_groups; }
+int weave_varying_components(int q_groups, WeaveLayer::Terms terms) {
+  switch (terms) {
+    case WeaveLayer::Terms::vertex_table: return 4 * (2 + kTableVec4s);
+    case WeaveLayer::Terms::pixel_over_vertex: return 20 + 4 * q_groups;
+    default: return 16 + 4 * q_groups;
+  }
+}
 int varying_limit() {
   GLint out = 0, in = 0;
   glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &out);
@@ -131,7 +138,7 @@ void WeaveLayer::refresh_all() {
 int WeaveLayer::max_lights() const {
   const int limit = varying_limit();
   int groups = kMaxSgs / 4;
-  while (groups > 1 && weave_varying_components(groups, vertex_terms_) > limit) --groups;
+  while (groups > 1 && weave_varying_components(groups, terms_) > limit) --groups;
   return 4 * groups;
 }
 
@@ -140,21 +147,23 @@ bool WeaveLayer::resolves(size_t handle, const WeaveView& view) {
   return o.reach->footprints(view, kWeaveCoarseFootprint, o.footprints) < kWeaveCoarseFootprint;
 }
 
-const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms) {
-  auto it = programs_.find({q_groups, vertex_terms});
+const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, Terms terms) {
+  auto it = programs_.find({q_groups, terms});
   if (it != programs_.end()) return it->second;
   std::string defines = weave_defines(q_groups);
   Programs p;
-  const int needed = weave_varying_components(q_groups, vertex_terms), limit = varying_limit();
+  const int needed = weave_varying_components(q_groups, terms), limit = varying_limit();
   if (needed > limit)
     throw GpuError("weave layer: " + std::to_string(4 * q_groups) + " lights need " + std::to_string(needed) +
                    " varying components per vertex, more than this GL's " + std::to_string(limit) + ": fit fewer SGs");
-  if (vertex_terms) {
+  if (terms != Terms::pixel)
     p.pass = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
         program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
                         "weave_visibility.glsl", "weave_reach.glsl", "weave_vertex_pass.frag"},
                        defines));
+  if (terms == Terms::pixel_over_vertex) defines += "#define WEAVE_VERTEX_LEVEL\n";
+  if (terms == Terms::vertex_table) {
     p.table = std::make_unique<GlProgram>(
         fullscreen_triangle_vs(),
         program_source({"microcylinder.glsl", "vertex_pass.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl",
@@ -167,7 +176,7 @@ const WeaveLayer::Programs& WeaveLayer::programs(int q_groups, bool vertex_terms
       program_source({"microcylinder.glsl", "erf.glsl", "weave_layout.glsl", "weave_ratio.glsl", "weave_float_table.glsl",
                       "weave_layer.frag"},
                      defines));
-  return programs_.emplace(std::make_pair(q_groups, vertex_terms), std::move(p)).first->second;
+  return programs_.emplace(std::make_pair(q_groups, terms), std::move(p)).first->second;
 }
 
 void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf) {
@@ -228,7 +237,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
   if (!o.lit) throw GpuError("weave layer: drawn before its lighting was set");
   const SgLighting& sgs = o.lights;
   const int groups = std::max(1, int((sgs.size() + 3) / 4));
-  const Programs& p = programs(groups, vertex_terms_);
+  const Programs& p = programs(groups, terms_);
   std::vector<float> axes, powers, widen2;
   for (const auto& g : sgs) {
     const glm::dvec3 power = sg_power(g);
@@ -262,21 +271,24 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     glUniform1i(program.uniform("u_weave_reach_before"), kReachBeforeUnit);
     glUniform1f(program.uniform("u_weave_coarse"), float(kWeaveCoarseFootprint));
   };
+  // The method's marks of this view where it made them; else the layer's own.
+  auto mark = [&](VertexPass& target) {
+    if (!visible_only_ || (!shown && !visible_))
+      target.clear_marks();  // culling switched off after frames with it on: every vertex again
+    else if (shown)
+      target.set_marks(shown->buffer, shown->stamp);
+    else
+      visible_->mark_for(target, o.marks, vp);
+  };
   if (p.pass) {
     VertexPass& pass = vertex_pass(o);
     upload_reach(o);
     set_up(*p.pass);
-    // The method's marks of this view where it made them; else the layer's own.
-    auto mark = [&](VertexPass& target) {
-      if (!visible_only_ || (!shown && !visible_))
-        target.clear_marks();  // culling switched off after frames with it on: every vertex again
-      else if (shown)
-        target.set_marks(shown->buffer, shown->stamp);
-      else
-        visible_->mark_for(target, o.marks, vp);
-    };
     mark(pass);
     pass.run_share(*p.pass, 0, groups + 1, shares_);
+  }
+  if (p.table) {
+    VertexPass& pass = *o.pass;
     // Then each float's table from the terms' Qs: a second target, as a pass cannot read its own.
     set_up(*p.table);
     glActiveTexture(GL_TEXTURE0 + kTermsUnit);
@@ -288,8 +300,8 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
   set_up(*p.draw);
   glUniformMatrix4fv(p.draw->uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform2f(p.draw->uniform("u_lod"), float(kWeaveFineFootprint), float(kWeaveCoarseFootprint));
-  if (p.pass) {
-    o.pass->bind_result(*p.draw, kTermsUnit);
+  if (p.pass) o.pass->bind_result(*p.draw, kTermsUnit);
+  if (p.table) {
     glActiveTexture(GL_TEXTURE0 + kTableUnit);
     glBindTexture(GL_TEXTURE_2D, o.table->result_texture());
     glUniform1i(p.draw->uniform("u_weave_table"), kTableUnit);

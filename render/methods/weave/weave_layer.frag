@@ -1,6 +1,8 @@
 // The weave layer's factor per pixel: the fabric-level terms (weave_terms) at the pixel, each
 // light weighted by its visibility interpolated from the vertices (weave_weights), then
-// weave_ratio_filtered() over the pixel's footprint; or with WEAVE_VERTEX_TERMS the fabric-level
+// weave_ratio_filtered() over the pixel's footprint; with WEAVE_VERTEX_LEVEL the same over the
+// fabric-level response of a per-vertex method's vertex pass, interpolated as the method's
+// shading is, so the factor also lifts that shading to the pixel's; or with WEAVE_VERTEX_TERMS the fabric-level
 // response and the per-float table interpolated from the vertices as a per-vertex method's
 // shading is, then weave_ratio_tabled() over the footprint (no light is visited per pixel);
 // eased to 1 (the fabric-level shading) as the pixel's footprint grows from u_lod.x to u_lod.y
@@ -15,6 +17,9 @@ in highp vec2 v_uv;
 in vec3 v_fabric;
 in vec4 v_table[WEAVE_TABLE_VEC4S];
 #else
+#ifdef WEAVE_VERTEX_LEVEL
+in vec3 v_fabric;
+#endif
 in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_warp;
@@ -40,10 +45,19 @@ void main() {
   vec3 wo = normalize(u_eye - v_position);
   if (dot(n, wo) < 0.0) n = -n;
   vec3 u = normalize(v_warp - dot(v_warp, n) * n);
+#ifdef WEAVE_VERTEX_LEVEL
+  // The level the per-vertex method drew, interpolated as it was, so that the factor lifts it to
+  // the pixel's resolved shading. The lights' Qs per pixel: they follow the view too fast to interpolate.
+  vec3 fabric = v_fabric;
+  vec4 q[Q_GROUPS], weight[Q_GROUPS];
+  weave_qs(n, u, wo, q);
+  weave_weights(v_visibility, q, weight);
+#else
   vec3 fabric;
   vec4 q[Q_GROUPS], weight[Q_GROUPS];
   weave_terms(n, u, wo, v_visibility, fabric, q);
   weave_weights(v_visibility, q, weight);
+#endif
   o_factor = vec4(mix(weave_ratio_filtered(n, u, wo, st, dx, dy, fabric, weight), vec3(1.0), coarse), 1.0);
 #endif
 }

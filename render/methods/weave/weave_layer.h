@@ -2,13 +2,13 @@
 // The weave layer's GPU side (methods/weave/weave_ratio.h): after a fabric-level method has drawn
 // a cloth object, multiplies the colour where the object lies by the layer's factor (blending
 // dst·src), so close-ups show each thread and distant cloth keeps the method's shading. One draw
-// of the mesh with its UVs, the factor per pixel; its fabric-level terms per pixel too (under a
-// method that shades the canonical model per pixel, ClothMethod::weave_terms_per_pixel), or per
-// vertex from a vertex pass, interpolated as a per-vertex method's shading is, so that the ratio
-// takes the method's interpolation error out with it: then each float's lighting is a per-vertex
-// table (weave_float_table.h) and a pixel visits no light. Skipped outright where no vertex in
-// view can show a footprint finer than the coarse one (weave_reach.h), and a vertex pass skips
-// each vertex that cannot.
+// of the mesh with its UVs, the factor per pixel (Terms): under a method that shades the canonical
+// model per pixel (ClothMethod::weave_terms_per_pixel) all its terms per pixel; under a per-vertex
+// method the fabric level per vertex from a vertex pass, interpolated as the method's shading is,
+// with each float's lighting per pixel over it (so the factor lifts the method's interpolated
+// shading to the pixel's own) or from a per-vertex table (weave_float_table.h: no light per pixel,
+// far coarser up close). Skipped outright where no vertex in view can show a footprint finer than
+// the coarse one (weave_reach.h), and a vertex pass skips each vertex that cannot.
 #include <algorithm>
 #include <map>
 #include <memory>
@@ -51,10 +51,17 @@ public:
   bool resolves(size_t handle, const WeaveView& view);
   // Where the object's weave can show (weave_reach.h).
   const WeaveReach& reach(size_t handle) const { return *objects_.at(handle)->reach; }
-  // Terms per vertex (true) or per pixel (false, the default; the scene renderer sets it from its
-  // method, ClothMethod::weave_terms_per_pixel).
-  void set_vertex_terms(bool on) { vertex_terms_ = on; }
-  bool vertex_terms() const { return vertex_terms_; }
+  // Where the factor's terms come from (the scene renderer sets it from its method,
+  // ClothMethod::weave_terms_per_pixel, and the kiosk's choice for per-vertex rungs).
+  enum class Terms {
+    pixel,         // all per pixel: over a method that shades per pixel (the default)
+    vertex_table,  // the fabric level and each float's lighting per vertex (weave_float_table.h): no light per pixel
+    // Each float's lighting per pixel, over the fabric level per vertex: the factor lifts the
+    // per-vertex method's interpolated shading to the pixel's resolved shading.
+    pixel_over_vertex,
+  };
+  void set_terms(Terms terms) { terms_ = terms; }
+  Terms terms() const { return terms_; }
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
   // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
@@ -104,15 +111,16 @@ private:
     int visibility_width = 1, visibility_rows = 1;
   };
   struct Programs {
-    std::unique_ptr<GlProgram> pass, table, draw;  // pass and table: with vertex terms only
+    std::unique_ptr<GlProgram> pass, table, draw;  // pass: with terms per vertex; table: vertex_table only
   };
-  const Programs& programs(int q_groups, bool vertex_terms);
+  const Programs& programs(int q_groups, Terms terms);
   VertexPass& vertex_pass(Object& o);
   void upload_reach(Object& o);  // o.footprints at o.pass's texels
   std::vector<std::unique_ptr<Object>> objects_;
-  std::map<std::pair<int, bool>, Programs> programs_;  // by Q_GROUPS and vertex terms
-  std::unique_ptr<VisibleVertices> visible_;           // where supported
-  bool visible_only_ = true, vertex_terms_ = false;
+  std::map<std::pair<int, Terms>, Programs> programs_;  // by Q_GROUPS and terms
+  std::unique_ptr<VisibleVertices> visible_;            // where supported
+  bool visible_only_ = true;
+  Terms terms_ = Terms::pixel;
   int shares_ = 1;
   // Each sample's lobes widened by its arc's tilts: a few stand for the float, satin's included.
   int tangent_samples_ = kWeavePixelSamples;

@@ -99,23 +99,39 @@ void weave_terms(vec3 n, vec3 u, vec3 wo, vec4 vis[Q_GROUPS], out vec3 fabric, o
   }
 }
 
-// weave_terms' Q of lights 4g … 4g + 3 alone (0 past the last light): the projection terms, no
-// scattering, for a pass that writes one group of four at a time.
-vec4 weave_q_group(vec3 n, vec3 u, vec3 wo, int g) {
-  HorizonLight lights[4];
-  for (int c = 0; c < 4; ++c) lights[c] = 4 * g + c < u_sg_count ? horizon_light(4 * g + c, n) : HorizonLight(n, 0.0);
+// weave_terms' Q of lights first … first + count − 1 alone (the projection terms, no scattering),
+// into qs[0 … count − 1]; 0 past the last light.
+void weave_q_lights(vec3 n, vec3 u, vec3 wo, int first, int count, out float qs[MAX_SGS]) {
+  vec3 axes[MAX_SGS];
   float gap_q = (1.0 - u_threads[0].coverage - u_threads[1].coverage) * max(dot(n, wo), 0.0);
-  vec4 q = vec4(gap_q);
+  for (int c = 0; c < count; ++c) {
+    axes[c] = first + c < u_sg_count ? horizon_light(first + c, n).axis : n;
+    qs[c] = gap_q;
+  }
   for (int j = 0; j < 2; ++j) {
     float share = u_threads[j].coverage / float(u_threads[j].samples);
     for (int s = 0; s < u_threads[j].samples; ++s) {
       ResolvedView view = resolved_view(n, u, j, thread_tilt(j * MAX_TANGENT_SAMPLES + s), wo);
-      for (int c = 0; c < 4; ++c) q[c] += share * projection_term(fiber_angles_in(view.t, view.np, view.axis, lights[c].axis), view.fo);
+      for (int c = 0; c < count; ++c) qs[c] += share * projection_term(fiber_angles_in(view.t, view.np, view.axis, axes[c]), view.fo);
     }
   }
-  for (int c = 0; c < 4; ++c)
-    if (4 * g + c >= u_sg_count) q[c] = 0.0;
-  return q;
+  for (int c = 0; c < count; ++c)
+    if (first + c >= u_sg_count) qs[c] = 0.0;
+}
+
+// The Qs of lights 4g … 4g + 3, for a pass that writes one group of four at a time.
+vec4 weave_q_group(vec3 n, vec3 u, vec3 wo, int g) {
+  float qs[MAX_SGS];
+  weave_q_lights(n, u, wo, 4 * g, 4, qs);
+  return vec4(qs[0], qs[1], qs[2], qs[3]);
+}
+
+// Every light's Q, four to a vec4, in one sweep over the samples.
+void weave_qs(vec3 n, vec3 u, vec3 wo, out vec4 q[Q_GROUPS]) {
+  float qs[MAX_SGS];
+  weave_q_lights(n, u, wo, 0, u_sg_count, qs);
+  for (int g = 0; g < Q_GROUPS; ++g) q[g] = vec4(0.0);
+  for (int k = 0; k < u_sg_count; ++k) q[k >> 2][k & 3] = qs[k];
 }
 
 // Each light's weight in the resolved response, V_k/Q_k (0 where Q_k ≤ Q_FLOOR): weave_terms' Q and
