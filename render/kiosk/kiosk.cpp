@@ -147,6 +147,9 @@ void Kiosk::start_knobs() {
 void Kiosk::start_renderer() {
   const SceneBundle& sb = *scene_;
   cloth_fabrics_ = cloth_fabrics(sb);
+  if (cloth_fabrics_.empty())
+    kiosk_log_info("the bundle has no cloth: its surfaces are shown, the knobs change nothing (name a fabric for a "
+                   "material in the scene file, or give it KHR_materials_sheen, and bake again)");
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(sb.scene);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);

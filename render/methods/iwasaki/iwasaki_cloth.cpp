@@ -147,7 +147,8 @@ IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evalua
   } else if (shaders_.broad_lobe_quadrature) {
     broad_pass_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source(shaders_.pass_fs));
   }
-  if (!data_ || data_->tables.empty()) throw GpuError("method iwasaki needs weighting tables (bake the bundle with `weft bake`)");
+  // Tables are looked up per fabric as cloth is added (tables_for): a bundle with no cloth has none.
+  if (!data_) throw GpuError("method iwasaki needs weighting tables (bake the bundle with `weft bake`)");
   if (data_->kappa) kappa_ = std::make_unique<KappaTexture>(*data_->kappa);
 }
 
@@ -157,7 +158,8 @@ const WeightingTablesTexture& IwasakiCloth::tables_for(const Fabric& fabric) {
   auto it = tables_.find(fabric.name);
   if (it != tables_.end()) return *it->second;
   const auto t = data_->tables.find(fabric.name);
-  if (t == data_->tables.end()) throw GpuError("method iwasaki: no weighting tables baked for fabric '" + fabric.name + "'");
+  if (t == data_->tables.end())
+    throw GpuError("method iwasaki: no weighting tables baked for fabric '" + fabric.name + "' (bake the bundle with `weft bake`)");
   return *tables_.emplace(fabric.name, std::make_unique<WeightingTablesTexture>(t->second)).first->second;
 }
 
