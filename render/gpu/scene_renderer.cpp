@@ -50,8 +50,9 @@ struct SceneRenderer::Object {
   bool cloth = false;
   size_t handle = 0;  // the cloth's handle in cloth_
   Fabric fabric;      // the cloth's, as drawn (knob edits included)
+  bool woven = false;  // cloth with UVs: the weave layer holds it (weave_handle)
   size_t weave_handle = 0;
-  bool weave_reachable = true;  // set_weave_range: some camera of the range can show its weave
+  bool weave_reachable = false;  // woven, and (set_weave_range) some camera of the range can show its weave
   const ObjectVisibility* lambert_visibility = nullptr;  // Lambertian objects the bundle baked
   // The cloth's baked visibility, for the weave layer's lights (null: none baked).
   const ObjectVisibility* sdf = nullptr;
@@ -72,6 +73,9 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
     auto obj = std::make_unique<Object>();
     obj->source = &o;
     obj->cloth = o.is_cloth();
+    // A cloth mesh without UVs has no place for its threads: the fabric level alone.
+    obj->woven = obj->cloth && !o.mesh.uvs.empty() && o.mesh.uvs.size() == o.mesh.positions.size();
+    obj->weave_reachable = obj->woven;
     if (obj->cloth) {
       if (cloth >= fabrics.size()) throw GpuError("no fabric given for cloth object '" + o.name + "'");
       obj->fabric = object_fabric(o, fabrics[cloth]);
@@ -124,7 +128,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
       const Fabric drawn = object_fabric(*o->source, fabric);
       cloth_->set_fabric(o->handle, drawn);  // throws (and changes nothing) for a fabric the method cannot show
       o->fabric = drawn;
-      if (weave_) weave_->set_fabric(o->weave_handle, drawn);
+      if (weave_ && o->woven) weave_->set_fabric(o->weave_handle, drawn);
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));
@@ -222,7 +226,7 @@ void SceneRenderer::set_weave(bool on) {
     layer->set_terms(weave_terms(*cloth_, *method_, weave_pixel_terms_));
     weave_max_lights_ = layer->max_lights();
     for (auto& o : objects_)
-      if (o->cloth) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
+      if (o->woven) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
     weave_ = std::move(layer);
   }
   // The lights as they are now: set_lighting leaves the layer's alone while it is off.
@@ -244,7 +248,7 @@ size_t SceneRenderer::set_weave_range(std::span<const OrbitingCamera> cameras, i
   if (!weave_) return 0;
   size_t reachable = 0;
   for (auto& o : objects_) {
-    if (!o->cloth) continue;
+    if (!o->woven) continue;
     const bool was = o->weave_reachable;
     o->weave_reachable = false;
     for (const OrbitingCamera& c : cameras)

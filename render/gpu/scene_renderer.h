@@ -95,7 +95,7 @@ public:
   void set_depth_prepass(bool on) { depth_prepass_ = on; }
   // The resolved weave over opaque cloth (methods/weave/weave_layer.h): where a pixel covers less
   // than about a repeat, each point shows the thread that lies there. Off by default; a
-  // see-through method draws no weave. Throws GpuError for cloth it cannot draw (no UVs).
+  // see-through method draws no weave; nor does cloth without UVs (no place for its threads).
   void set_weave(bool on);
   bool weave() const { return weave_on_; }
   // Over a method that shades per vertex, where each float's lighting comes from

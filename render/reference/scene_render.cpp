@@ -44,7 +44,8 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
       fabric = object_base_fabric(obj, it->second);
     }
     weaves_.emplace_back();
-    if (fabric && options_.resolved_weave) {
+    // Cloth without UVs has no place for its threads: the fabric level, as the weave layer leaves it.
+    if (fabric && options_.resolved_weave && !obj.mesh.uvs.empty()) {
       const Fabric f = object_fabric(obj, *fabric);
       weaves_.back() = Weave{WeaveLayout(f), weave_tiles_per_uv(obj, f)};
     }

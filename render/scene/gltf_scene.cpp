@@ -704,9 +704,12 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
       if (!finite(tangents[v])) fail(where + ".TANGENT: vertex " + std::to_string(v) + " is not finite (NaN/Inf)");
     }
   }
+  // Cloth with neither: the importer's fixed warp (compute_warp_directions) and no weave, which
+  // needs UVs to lay its threads out; the fabric level needs only a frame.
   if (cloth && tangents.empty() && mesh.uvs.empty())
-    fail(where + ": cloth (fabric '" + fabric +
-         "') needs TANGENT or TEXCOORD_0 for its warp direction, and this primitive has neither");
+    notes_.push_back(where + ": cloth (fabric '" + fabric +
+                     "') without TANGENT or TEXCOORD_0: its warp is a fixed direction (x × its normal), and no "
+                     "weave is drawn up close");
 
   if (p.indices >= 0) {
     const AccessorData a = accessor(p.indices, where + ".indices", {TINYGLTF_TYPE_SCALAR},
@@ -746,7 +749,7 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
   MeshRepairReport report;
   try {
     // UV-degenerate triangles matter only where the warp comes from the UVs.
-    report = repair_mesh(mesh, cloth && tangents.empty(), where);
+    report = repair_mesh(mesh, cloth && tangents.empty() && !mesh.uvs.empty(), where);
     if (mesh.normals.empty()) compute_vertex_normals(mesh);
     for (size_t v = 0; v < nv; ++v) {
       const double l = glm::length(mesh.normals[v]);

@@ -181,14 +181,23 @@ TEST(GltfScene, NodeRotationAndMirrorFollowTheHierarchy) {
   for (const auto& n : mirrored.objects.at(0).mesh.normals) expect_near(n, {0, 0, 1});
 }
 
-TEST(GltfScene, TangentOverridesUVsAndClothNeedsOneOfThem) {
+TEST(GltfScene, TangentOverridesUVsAndClothWithNeitherGetsAFixedWarpAndNoWeave) {
   const Scene s = parse(quad(true, true));
   for (const auto& w : s.objects[0].mesh.warps) expect_near(w, {1, 0, 0});  // glTF +x stays +x
   const Scene t = parse(quad(false, true));
   for (const auto& w : t.objects[0].mesh.warps) expect_near(w, {1, 0, 0});
-  const std::string why = refusal([] { parse(quad(false, false)); });
-  EXPECT_NE(why.find("test.gltf"), std::string::npos) << why;
-  EXPECT_NE(why.find("neither"), std::string::npos) << why;
+  // Neither: still cloth, its warp x × n (here n = +z: −y), no UVs for a weave, and a note saying so.
+  const Scene u = parse(quad(false, false));
+  ASSERT_EQ(u.objects.size(), 1u);
+  EXPECT_TRUE(u.objects[0].is_cloth());
+  EXPECT_TRUE(u.objects[0].mesh.uvs.empty());
+  for (size_t v = 0; v < u.objects[0].mesh.warps.size(); ++v) {
+    const glm::dvec3 n = u.objects[0].mesh.normals[v];
+    expect_near(u.objects[0].mesh.warps[v], glm::normalize(glm::cross(glm::dvec3(1, 0, 0), n)), 1e-9);
+  }
+  bool noted = false;
+  for (const std::string& w : u.warnings) noted = noted || (w.find("test.gltf") != std::string::npos && w.find("no weave") != std::string::npos);
+  EXPECT_TRUE(noted) << "no note that the cloth without UVs gets no weave";
 }
 
 TEST(GltfScene, MaterialNamedLikeAPresetIsClothOtherwiseLambertianOrFallback) {
@@ -394,9 +403,16 @@ TEST(GltfScene, BrokenSampleFilesAreRefusedWithAReason) {
     EXPECT_NE(why.find(file.string()), std::string::npos) << f << ": " << why;
     EXPECT_NE(why.find(reason), std::string::npos) << f << ": " << why;
   }
-  // Cloth needs a warp direction: the cameras sample has neither UVs nor tangents.
-  const std::string why = refusal([] { load_gltf_scene(kModels / "cameras/Cameras.gltf", options("linen_plain")); });
-  EXPECT_NE(why.find("neither"), std::string::npos) << why;
+  // The cameras sample has neither UVs nor tangents: as cloth it gets a fixed warp and no weave.
+  const Scene cameras = load_gltf_scene(kModels / "cameras/Cameras.gltf", options("linen_plain"));
+  bool noted = false;
+  for (const std::string& w : cameras.warnings) noted = noted || w.find("no weave") != std::string::npos;
+  EXPECT_TRUE(noted);
+  for (const auto& o : cameras.objects)
+    for (size_t v = 0; v < o.mesh.warps.size(); ++v) {
+      EXPECT_NEAR(glm::length(o.mesh.warps[v]), 1.0, 1e-9);
+      EXPECT_NEAR(glm::dot(o.mesh.warps[v], o.mesh.normals[v]), 0.0, 1e-9);
+    }
 }
 
 TEST(GltfScene, PrimitiveModesOtherThanTrianglesAreRefused) {
