@@ -28,15 +28,13 @@ struct RenderArgs {
   std::string env;     // empty: the scene's
   std::string method = "reference";
   std::string lighting = "sg";
-  std::string sgs_file;
-  std::string out;
+  std::string sgs_file, out;
   int width = 320, height = 240, sg_grid = 8, map_width = 128, sg_count = 10;
   int tangent_samples = 32;  // docs/design.md §2: the reference converges in N_j ≥ 32
   int check_stride = 6, timed_frames = 20;
   bool no_check = false, weave = false;
-  std::string weave_terms = "pixel";
+  std::string weave_terms = "pixel", backdrop = "showroom";
   double exposure = 0.0, exposure_bias = 0.0;  // exposure 0: automatic
-  std::string backdrop = "showroom";
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
   int supersample = 0;  // 0: 4 with --weave, else 1
   std::string camera = "scene";  // or "closeup", or "EYE:TARGET[:FOV]"
@@ -89,9 +87,8 @@ int run_render(const RenderArgs& a) {
   if (a.method != "reference") {
     GpuFrame f;
     try {
-      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki,
-                           a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure, a.weave,
-                           a.weave_terms == "pixel");
+      const gpu::Backdrop backdrop = a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure;
+      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki, backdrop, a.weave, a.weave_terms == "pixel");
     } catch (const gpu::GpuError& e) {
       std::cerr << "weft render: " << e.what() << "\n";
       return 1;
@@ -143,11 +140,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--exposure-bias", a->exposure_bias, "PNG: EV added to the metered exposure (+1: twice as bright)")->capture_default_str();
   sub->add_flag("--weave", a->weave, "The resolved weave: up close each point shows the thread that lies there (GPU methods: the weave layer over the method; reference: the resolved model, supersampled)");
-  sub->add_option("--weave-terms", a->weave_terms,
-                  "GPU methods shading per vertex, with --weave: each float lit per pixel over the method's level (pixel) "
-                  "or from a per-vertex table (table: the kiosk's choice on a GPU too slow for pixel)")
-      ->check(CLI::IsMember({"pixel", "table"}))
-      ->capture_default_str();
+  sub->add_option("--weave-terms", a->weave_terms, "GPU methods shading per vertex, with --weave: each float lit per pixel over the method's level (pixel) or from a per-vertex table (table: the kiosk's choice on a GPU too slow for pixel)")->check(CLI::IsMember({"pixel", "table"}))->capture_default_str();
   sub->add_option("--supersample", a->supersample, "Reference: rays per pixel along each axis (default 4 with --weave, else 1)");
   sub->add_option("--camera", a->camera, "scene: the scene's camera; closeup: its close-up camera (or the camera moved in until a weave repeat spans 24 pixels); EX,EY,EZ:TX,TY,TZ[:FOV]: eye and target in the scene's metres, the scene camera's up, FOV its vertical field of view (degrees)")->capture_default_str();
   sub->add_option("--backdrop", a->backdrop, "GPU methods: showroom (the environment, softened, behind the scene) or measure (black; the sharp environment behind see-through cloth, as the bench draws)")->capture_default_str();
