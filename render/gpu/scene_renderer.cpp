@@ -226,7 +226,7 @@ void SceneRenderer::set_weave(bool on) {
     layer->set_terms(weave_terms(*cloth_, *method_, weave_pixel_terms_));
     weave_max_lights_ = layer->max_lights();
     for (auto& o : objects_)
-      if (o->woven) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_tiles_per_uv(*o->source, o->fabric));
+      if (o->woven) o->weave_handle = layer->add_object(o->source->mesh, o->fabric, weave_coordinates(*o->source, o->fabric));
     weave_ = std::move(layer);
   }
   // The lights as they are now: set_lighting leaves the layer's alone while it is off.

@@ -47,7 +47,7 @@ ReferenceRenderer::ReferenceRenderer(const Scene& scene, const std::map<std::str
     // Cloth without UVs has no place for its threads: the fabric level, as the weave layer leaves it.
     if (fabric && options_.resolved_weave && !obj.mesh.uvs.empty()) {
       const Fabric f = object_fabric(obj, *fabric);
-      weaves_.back() = Weave{WeaveLayout(f), weave_tiles_per_uv(obj, f)};
+      weaves_.back() = Weave{WeaveLayout(f), weave_coordinates(obj, f)};
     }
     for (int level = 0; level < kLevels; ++level)
       bsdfs_[level].push_back(fabric ? std::make_unique<ClothBsdf>(object_fabric(obj, *fabric), options_.tangent_samples << level)
@@ -88,7 +88,9 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   double tilt = 0.0;
   const auto& weave = weaves_[hit.object];
   if (bsdf && weave) {
-    const WeaveSample w = weave->layout.at(s.uv.x * weave->tiles_per_uv.x, s.uv.y * weave->tiles_per_uv.y);
+    const auto& t = obj.mesh.triangles[hit.triangle];
+    const glm::dvec2 st = (1.0 - hit.b1 - hit.b2) * weave->st[t[0]] + hit.b1 * weave->st[t[1]] + hit.b2 * weave->st[t[2]];
+    const WeaveSample w = weave->layout.at(st.x, st.y);
     if (w.thread < 0) return dvec3(0.0);
     thread = w.thread;
     tilt = weave_tilt(bsdf->fabric(), w);

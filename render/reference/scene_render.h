@@ -125,7 +125,7 @@ private:
   ReferenceRenderOptions options_;
   struct Weave {
     WeaveLayout layout;
-    glm::dvec2 tiles_per_uv;
+    std::vector<glm::dvec2> st;  // each vertex's weave coordinates (scene/weave_scale.h)
   };
   std::vector<std::optional<Weave>> weaves_;  // per object; set for cloth when resolved_weave
   mutable std::map<int, std::vector<DirectionalSample>> samples_;  // filled before parallel use

@@ -3,6 +3,7 @@
 // Scene units are metres; the fabric gives its repeat in centimetres (weave_repeat_cm).
 #include <map>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -18,6 +19,14 @@ glm::dvec2 uv_length(const TriangleMesh& mesh);
 // Repeats per UV unit: the object's own weave_repeats_per_uv where it gives one, else the mesh's
 // UV length against the fabric's repeat.
 glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric);
+
+// Each vertex's weave coordinates (tile coordinates, core/weave_layout.h): its UV times the
+// repeats per UV unit of its UV island (the triangles joined through shared vertices: an atlas's
+// panels, cut apart at their seams). Each island takes its own UV length against the fabric's
+// repeat, so panels laid out at different texel densities show threads of one size; the object's
+// weave_repeats_per_uv, where it gives one, holds for every island, and an island without UV area
+// takes the object's mean. Empty for a mesh without UVs.
+std::vector<glm::dvec2> weave_coordinates(const SceneObject& object, const Fabric& fabric);
 
 // The repeat's size on the object in metres (along u, along v): the fabric's own repeat, or the
 // mesh's UV length over the object's weave_repeats_per_uv where it gives them.

@@ -105,7 +105,7 @@ TEST_P(WeaveParity, GlslMatchesTheCppTwin) {
     program->use();
     upload_fabric(*program, bsdf);
     upload_weave_tilt_spreads(*program, bsdf);
-    upload_weave_layout(*program, layout, fabric, {1.0, 1.0});
+    upload_weave_layout(*program, layout, fabric);
     std::vector<float> axes, powers, widen2;
     for (const auto& g : sgs) {
       const dvec3 p = sg_power(g);

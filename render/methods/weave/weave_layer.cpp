@@ -18,7 +18,7 @@
 namespace weft::gpu {
 
 namespace {
-constexpr GLuint kUvAttribute = 4;  // weave_layer.vert's a_uv
+constexpr GLuint kStAttribute = 4;  // weave_layer.vert's a_st
 
 // Each a whole vec4 in case the GL packs no tighter. Per-pixel terms: position, normal, warp, UV
 // and a vec4 per group of four lights for their visibility (and the fabric-level response over
@@ -47,7 +47,7 @@ constexpr int kVisibilityWidth = 1024;
 
 }  // namespace
 
-void upload_weave_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
+void upload_weave_layout(const GlProgram& p, const WeaveLayout& layout, const Fabric& fabric) {
   glUniform1i(p.uniform("u_weave_rows"), layout.rows());
   glUniform1i(p.uniform("u_weave_shift"), layout.shift());
   glUniform1f(p.uniform("u_weave_warp_share"), float(layout.warp_share()));
@@ -67,7 +67,6 @@ void upload_weave_layout(const GlProgram& p, const WeaveLayout& layout, const Fa
   glUniform1iv(p.uniform("u_curve_points"), 2, points);
   glUniform1fv(p.uniform("u_curve_tilts"), 2 * kMaxCurvePoints, tilts.data());
   glUniform1fv(p.uniform("u_curve_arcs"), 2 * kMaxCurvePoints, arcs.data());
-  glUniform2f(p.uniform("u_tiles_per_uv"), float(tiles_per_uv.x), float(tiles_per_uv.y));
 }
 
 std::string weave_defines(int q_groups) {
@@ -78,17 +77,18 @@ std::string weave_defines(int q_groups) {
          std::to_string(2 * kWeaveTableArcs) + "\n#define WEAVE_TABLE_VEC4S " + std::to_string(kTableVec4s) + "\n" + floats;
 }
 
-size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv) {
+size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, std::vector<glm::dvec2> st) {
   if (mesh.uvs.size() != mesh.positions.size()) throw GpuError("weave layer: a cloth mesh without UVs");
-  if (!(tiles_per_uv.x > 0.0 && tiles_per_uv.y > 0.0 && std::isfinite(tiles_per_uv.x) && std::isfinite(tiles_per_uv.y)))
-    throw GpuError("weave layer: the weave's repeats per UV unit must be positive and finite");
+  if (st.size() != mesh.positions.size()) throw GpuError("weave layer: one weave coordinate per vertex needed");
+  for (const glm::dvec2& c : st)
+    if (!(std::isfinite(c.x) && std::isfinite(c.y))) throw GpuError("weave layer: the weave's coordinates must be finite");
   auto o = std::make_unique<Object>();
   o->source = &mesh;
   o->mesh = std::make_unique<GpuMesh>(mesh);
-  std::vector<glm::vec3> uv(mesh.uvs.size());
-  for (size_t i = 0; i < uv.size(); ++i) uv[i] = glm::vec3(mesh.uvs[i], 0.0);
-  o->mesh->add_attribute(kUvAttribute, uv);
-  o->tiles_per_uv = tiles_per_uv;
+  std::vector<glm::vec3> attribute(st.size());
+  for (size_t i = 0; i < st.size(); ++i) attribute[i] = glm::vec3(st[i], 0.0);
+  o->mesh->add_attribute(kStAttribute, attribute);
+  o->st = std::move(st);
   objects_.push_back(std::move(o));
   set_fabric(objects_.size() - 1, fabric);
   return objects_.size() - 1;
@@ -103,7 +103,7 @@ void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
   o.bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
   if (o.pass) o.pass->invalidate(), o.table->invalidate();  // kept terms are of the fabric before
   auto layout = std::make_unique<WeaveLayout>(fabric);
-  if (!o.layout || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.tiles_per_uv, layout->rows());
+  if (!o.layout || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.st, layout->rows());
   o.layout = std::move(layout);
 }
 
@@ -250,7 +250,7 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     glUniform3f(program.uniform("u_eye"), eye.x, eye.y, eye.z);
     upload_fabric(program, *o.bsdf);
     upload_weave_tilt_spreads(program, *o.bsdf);
-    upload_weave_layout(program, *o.layout, o.bsdf->fabric(), o.tiles_per_uv);
+    upload_weave_layout(program, *o.layout, o.bsdf->fabric());
     glUniform1i(program.uniform("u_sg_count"), GLint(sgs.size()));
     if (!sgs.empty()) {
       glUniform3fv(program.uniform("u_sg_axis"), GLsizei(sgs.size()), axes.data());

@@ -10,9 +10,8 @@
 // with multiplicative blending. Needs microcylinder.glsl, weave_layout.glsl, weave_ratio.glsl,
 // weave_float_table.glsl.
 uniform vec3 u_eye;
-uniform highp vec2 u_tiles_per_uv;
 uniform vec2 u_lod;
-in highp vec2 v_uv;
+in highp vec2 v_st;
 #ifdef WEAVE_VERTEX_TERMS
 in vec3 v_fabric;
 in vec4 v_table[WEAVE_TABLE_VEC4S];
@@ -27,7 +26,7 @@ in vec4 v_visibility[Q_GROUPS];
 #endif
 out vec4 o_factor;
 void main() {
-  highp vec2 st = v_uv * u_tiles_per_uv;
+  highp vec2 st = v_st;
   highp vec2 dx = dFdx(st), dy = dFdy(st);
   float footprint = max(length(dx), length(dy)) * float(u_weave_rows);  // in threads: weave_thread_footprint
   float coarse = smoothstep(u_lod.x, u_lod.y, footprint);

@@ -31,8 +31,8 @@
 
 namespace weft::gpu {
 
-// The layout's and curves' uniforms of weave_layout.glsl, and u_tiles_per_uv (the program is in use).
-void upload_weave_layout(const GlProgram& program, const WeaveLayout& layout, const Fabric& fabric, glm::dvec2 tiles_per_uv);
+// The layout's and curves' uniforms of weave_layout.glsl (the program is in use).
+void upload_weave_layout(const GlProgram& program, const WeaveLayout& layout, const Fabric& fabric);
 // The #defines the weave GLSL needs for `q_groups` groups of four SGs.
 std::string weave_defines(int q_groups);
 // u_weave_tilt_spreads (weave_ratio.glsl) from the bsdf's samples (the program is in use).
@@ -40,9 +40,10 @@ void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf);
 
 class WeaveLayer {
 public:
-  // One cloth object: its mesh (kept by the caller, which must outlive the layer), fabric and repeats per UV unit
-  // (scene/weave_scale.h). Returns its handle. Needs a current GLES 3 context.
-  size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, glm::dvec2 tiles_per_uv);
+  // One cloth object: its mesh (kept by the caller, which must outlive the layer), fabric and
+  // each vertex's weave coordinates (scene/weave_scale.h's weave_coordinates). Returns its handle.
+  // Needs a current GLES 3 context.
+  size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, std::vector<glm::dvec2> st);
   // A knob edit: the factor follows the new colours and gloss.
   void set_fabric(size_t handle, const Fabric& fabric);
   // Whether object `handle` can show its weave in `view` (weave_reach.h): some vertex in view
@@ -103,7 +104,7 @@ private:
     GlTexture reach_texels[2];
     int reach_now = 0;
     bool reach_filled = false;
-    glm::dvec2 tiles_per_uv{1.0};
+    std::vector<glm::dvec2> st;  // each vertex's weave coordinates
     bool lit = false;              // set_lighting called
     SgLighting lights;
     GlTexture visibility;          // weave_visibility.glsl's texels; unused while `occluded` is false

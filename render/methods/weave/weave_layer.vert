@@ -1,4 +1,4 @@
-// The weave layer's mesh with its UVs. With WEAVE_VERTEX_TERMS, each vertex's fabric-level
+// The weave layer's mesh with its weave coordinates. With WEAVE_VERTEX_TERMS, each vertex's fabric-level
 // response (weave_vertex_pass.frag) and per-float table (weave_table_pass.frag), read by
 // gl_VertexID and interpolated; without, its position, frame and visibility of every light
 // (weave_visibility.glsl), from which weave_layer.frag computes the terms per pixel, and with
@@ -6,9 +6,9 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_warp;
-layout(location = 4) in vec3 a_uv;  // (u, v, 0)
+layout(location = 4) in vec3 a_st;  // the weave's coordinates (s, t, 0): scene/weave_scale.h
 uniform mat4 u_view_projection;
-out highp vec2 v_uv;
+out highp vec2 v_st;
 #if defined(WEAVE_VERTEX_TERMS) || defined(WEAVE_VERTEX_LEVEL)
 uniform highp sampler2D u_vertex_radiance;
 uniform int u_vertex_width;
@@ -43,6 +43,6 @@ void main() {
   v_normal = a_normal;
   v_warp = a_warp;
 #endif
-  v_uv = a_uv.xy;
+  v_st = a_st.xy;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -54,8 +55,20 @@ WeaveView weave_view(const Camera& camera, int width, int height) {
   return v;
 }
 
+namespace {
+std::vector<glm::dvec2> scaled_uvs(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv) {
+  std::vector<glm::dvec2> st(mesh.uvs.size());
+  for (size_t v = 0; v < st.size(); ++v) st[v] = mesh.uvs[v] * tiles_per_uv;
+  return st;
+}
+}  // namespace
+
 WeaveReach::WeaveReach(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv, int rows)
+    : WeaveReach(mesh, scaled_uvs(mesh, tiles_per_uv), rows) {}
+
+WeaveReach::WeaveReach(const TriangleMesh& mesh, std::span<const glm::dvec2> st, int rows)
     : positions_(mesh.positions), vertices_(mesh.positions.size()), first_triangle_(mesh.positions.size() + 1, 0) {
+  if (st.size() != mesh.positions.size()) throw std::invalid_argument("weave reach: one weave coordinate per vertex needed");
   std::vector<uint32_t> mesh_triangle;  // each kept triangle's index in the mesh
   for (size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
     const auto& t = mesh.triangles[ti];
@@ -67,7 +80,7 @@ WeaveReach::WeaveReach(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv, int ro
     if (!(l1 > 0.0 && area2 > 1e-18 * l1 * l1)) continue;  // no area: no pixel
     const glm::dvec3 x = e1 / l1, y = glm::cross(normal / area2, x);
     const double p1x = l1, p2x = glm::dot(e2, x), p2y = glm::dot(e2, y);  // e1 = (p1x, 0), e2 = (p2x, p2y)
-    const glm::dvec2 d1 = (mesh.uvs[t[1]] - mesh.uvs[t[0]]) * tiles_per_uv, d2 = (mesh.uvs[t[2]] - mesh.uvs[t[0]]) * tiles_per_uv;
+    const glm::dvec2 d1 = st[t[1]] - st[t[0]], d2 = st[t[2]] - st[t[0]];
     // J = [d1 d2]·P⁻¹, P = [[p1x p2x] [0 p2y]]: P⁻¹ = [[1/p1x, −p2x/(p1x·p2y)] [0, 1/p2y]].
     const double a = d1.x / p1x, b = (d2.x - d1.x * p2x / p1x) / p2y;
     const double c = d1.y / p1x, d = (d2.y - d1.y * p2x / p1x) / p2y;

@@ -11,6 +11,7 @@
 // vertices, and lets the kiosk skip an object's lights when no camera of its zoom range can come
 // under it (nearest_footprint_orbiting).
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,7 +40,10 @@ public:
     // UVs collapse to a point: the layer draws its finest there); infinity in no triangle.
     float threads_per_metre = std::numeric_limits<float>::infinity();
   };
-  // `tiles_per_uv` repeats per UV unit of a weave of `rows` threads across a repeat.
+  // `st`: each vertex's weave coordinates (scene/weave_scale.h's weave_coordinates), of a weave
+  // of `rows` threads across a repeat.
+  WeaveReach(const TriangleMesh& mesh, std::span<const glm::dvec2> st, int rows);
+  // The same with the mesh's UVs times `tiles_per_uv` repeats per UV unit.
   WeaveReach(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv, int rows);
   const std::vector<Vertex>& vertices() const { return vertices_; }
   // Vertex i's footprint from `view` (infinity where it is seen edge-on or from behind the eye).
