@@ -55,6 +55,12 @@ for size in $SIZES; do
     WEFT_KIOSK_METHODS=auto,iwasaki_vertex,sheen WEFT_KIOSK_REFRESH=1,b16 WEFT_KIOSK_FRAMES=60 \
     WEFT_KIOSK_SIZE="$size" WEFT_KIOSK_NO_ERROR=1 WEFT_KIOSK_OUT="$OUT/kiosk_$size.md" \
     run "$BIN/kiosk_frame_bench"
+  # The zoom: the weave layer lit per pixel (on), from its per-vertex table, and off.
+  step "kiosk zoom $size"
+  WEFT_KIOSK_BUNDLES="showroom=$BUNDLES/showroom.weft" WEFT_KIOSK_METHODS=auto WEFT_KIOSK_REFRESH=4 \
+    WEFT_KIOSK_ZOOMS=0,0.5,1 WEFT_KIOSK_WEAVE=on,table,off WEFT_KIOSK_FRAMES=30 \
+    WEFT_KIOSK_SIZE="$size" WEFT_KIOSK_NO_ERROR=1 WEFT_KIOSK_OUT="$OUT/kiosk_zoom_$size.md" \
+    run "$BIN/kiosk_frame_bench"
 done
 
 # The kiosk itself, headless, its default rung and settings, a GPU frame profile in its stats.
@@ -89,7 +95,7 @@ done
 for size in 640x480 $SIZES; do
   w=${size%x*} h=${size#*x}
   step "weave close-up $size"
-  for weave in "" --weave; do
+  for weave in "" --weave "--weave --weave-terms table"; do
     say "pillow iwasaki_vertex closeup ${weave:-fabric-level} $size: $("$BIN/weft" render --bundle "$BUNDLES/pillow.weft" \
       --method iwasaki_vertex --camera closeup $weave --width "$w" --height "$h" --frames 60 \
       --out /tmp/gpu_bench_frame.exr 2>>"$LOG" | tail -1)"
