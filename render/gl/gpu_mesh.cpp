@@ -43,10 +43,11 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh) : vertices_(mesh.positions.size()) {
 }
 
 GpuMesh::GpuMesh(GpuMesh&& o) noexcept
-    : vao_(o.vao_), vbo_(o.vbo_), ibo_(o.ibo_), colour_vbo_(o.colour_vbo_), extra_vbos_(std::move(o.extra_vbos_)),
+    : vao_(o.vao_), vbo_(o.vbo_), ibo_(o.ibo_), colour_vbo_(o.colour_vbo_), extra_vbos_(std::move(o.extra_vbos_)), extra_locations_(std::move(o.extra_locations_)),
       indices_(o.indices_), vertices_(o.vertices_) {
   o.vao_ = o.vbo_ = o.ibo_ = o.colour_vbo_ = 0;
   o.extra_vbos_.clear();
+  o.extra_locations_.clear();
 }
 
 GpuMesh::~GpuMesh() {
@@ -66,9 +67,16 @@ void GpuMesh::set_vertex_colours(const std::vector<glm::vec3>& colours) {
 
 void GpuMesh::add_attribute(GLuint location, const std::vector<glm::vec3>& values) {
   if (values.size() != vertices_) throw GpuError("attribute value count does not match the mesh");
+  for (size_t i = 0; i < extra_locations_.size(); ++i)
+    if (extra_locations_[i] == location) {
+      glBindBuffer(GL_ARRAY_BUFFER, extra_vbos_[i]);
+      glBufferSubData(GL_ARRAY_BUFFER, 0, values.size() * sizeof(glm::vec3), values.data());
+      return;
+    }
   GLuint vbo = 0;
   glGenBuffers(1, &vbo);
   extra_vbos_.push_back(vbo);
+  extra_locations_.push_back(location);
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo);
   glBufferData(GL_ARRAY_BUFFER, values.size() * sizeof(glm::vec3), values.data(), GL_STATIC_DRAW);

@@ -22,7 +22,8 @@ public:
   ~GpuMesh();
   // Replaces the per-vertex colour slot (e.g. SG irradiance of a Lambertian surface).
   void set_vertex_colours(const std::vector<glm::vec3>& colours);
-  // A further static vec3 attribute at `location` (one value per vertex).
+  // A further static vec3 attribute at `location` (one value per vertex); again at the same
+  // location, its values replaced in place.
   void add_attribute(GLuint location, const std::vector<glm::vec3>& values);
   void draw() const;
   size_t vertex_count() const { return vertices_; }
@@ -30,6 +31,7 @@ public:
 private:
   GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, colour_vbo_ = 0;
   std::vector<GLuint> extra_vbos_;
+  std::vector<GLuint> extra_locations_;  // each extra VBO's attribute location
   GLsizei indices_ = 0;
   size_t vertices_ = 0;
 };

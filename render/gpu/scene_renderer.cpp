@@ -128,7 +128,7 @@ void SceneRenderer::set_fabric(size_t cloth_index, const Fabric& fabric) {
       const Fabric drawn = object_fabric(*o->source, fabric);
       cloth_->set_fabric(o->handle, drawn);  // throws (and changes nothing) for a fabric the method cannot show
       o->fabric = drawn;
-      if (weave_ && o->woven) weave_->set_fabric(o->weave_handle, drawn);
+      if (weave_ && o->woven) weave_->set_fabric(o->weave_handle, drawn, weave_coordinates(*o->source, drawn));
       return;
     }
   throw GpuError("no cloth object #" + std::to_string(cloth_index));

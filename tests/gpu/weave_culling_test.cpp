@@ -3,15 +3,20 @@
 // degrees from there, is the frame with every vertex computed, bit for bit, for a per-vertex rung
 // and for `sheen` (whose own draw has no passes, so the weave's are the only ones culled); the
 // layer did draw (the frame differs from the weave off); and with culling then switched off, a
-// view turned 40° is the every-vertex frame again.
+// view turned 40° is the every-vertex frame again. And the fabric knob's preset shows its weave at
+// its own size.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bundle/bundle_reader.h"
+#include "core/weave_layout.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "kiosk/camera_zoom.h"
@@ -84,4 +89,45 @@ TEST(WeaveCulling, VisibleVerticesOnlyDrawTheSameFrame) {
     full->draw(far_turn, kWidth, kHeight);
     EXPECT_TRUE(a.read_rgba() == b.read_rgba()) << "culling off: the frame is not the every-vertex one";
   }
+}
+
+// The fabric knob turned to a preset of another repeat: the layer draws its threads at that
+// preset's own size, as a renderer made with it does (the weave coordinates follow the knob).
+TEST(WeaveKnob, AnotherPresetsThreadsAtTheirOwnSize) {
+  const test::SmallBundle small("pillow");
+  ASSERT_TRUE(small.baked()) << "bake failed; see " << small.dir() / "bake.log";
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  const bundle::BundleReader reader = bundle::BundleReader::open(small.file());
+  const KioskBundle kb = read_kiosk_bundle(reader, "sheen");
+  const methods::RuntimeMethod& method = kiosk_method("sheen", kb, small.file());
+  const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
+  ASSERT_EQ(cloth.size(), 1u);
+  const std::string other = cloth[0].name == "velvet" ? "linen_plain" : "velvet";
+  const Fabric turned_to = load_fabric_preset(other, std::filesystem::path(WEFT_SOURCE_ASSETS) / "fabrics");
+  ASSERT_GT(glm::length(weave_repeat_cm(turned_to) - weave_repeat_cm(cloth[0])), 0.05 * glm::length(weave_repeat_cm(cloth[0])))
+      << "the two presets must differ in repeat for this to test anything";
+  const Camera closeup = closeup_of(kb.scene.scene, cloth, kHeight);
+  std::unique_ptr<gpu::SceneRenderer> knob = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+  std::unique_ptr<gpu::SceneRenderer> fresh = make_kiosk_renderer(kb.scene, {turned_to}, method, kb.iwasaki);
+  std::unique_ptr<gpu::SceneRenderer> before = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+  for (auto* r : {knob.get(), fresh.get(), before.get()}) r->set_lighting(kb.scene.sgs);
+  gpu::OffscreenTarget a(kWidth, kHeight), b(kWidth, kHeight), c(kWidth, kHeight);
+  a.bind();
+  knob->draw(closeup, kWidth, kHeight);  // the first preset's frame, then the knob
+  knob->set_fabric(0, turned_to);
+  a.bind();
+  knob->draw(closeup, kWidth, kHeight);
+  b.bind();
+  fresh->draw(closeup, kWidth, kHeight);
+  c.bind();
+  before->draw(closeup, kWidth, kHeight);
+  const std::vector<float> pa = a.read_rgba(), pb = b.read_rgba(), pc = c.read_rgba();
+  double worst = 0.0;
+  size_t changed = 0;
+  for (size_t i = 0; i < pa.size(); ++i) {
+    worst = std::max(worst, double(std::abs(pa[i] - pb[i])));
+    changed += std::abs(pa[i] - pc[i]) > 1e-3f ? 1 : 0;
+  }
+  EXPECT_LE(worst, 1e-4) << "the knob's frame differs from a renderer made with " << other;
+  EXPECT_GT(changed, 1000u) << "the knob changed too little of the close-up to test anything";
 }

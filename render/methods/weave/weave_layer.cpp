@@ -79,31 +79,34 @@ std::string weave_defines(int q_groups) {
 
 size_t WeaveLayer::add_object(const TriangleMesh& mesh, const Fabric& fabric, std::vector<glm::dvec2> st) {
   if (mesh.uvs.size() != mesh.positions.size()) throw GpuError("weave layer: a cloth mesh without UVs");
-  if (st.size() != mesh.positions.size()) throw GpuError("weave layer: one weave coordinate per vertex needed");
-  for (const glm::dvec2& c : st)
-    if (!(std::isfinite(c.x) && std::isfinite(c.y))) throw GpuError("weave layer: the weave's coordinates must be finite");
   auto o = std::make_unique<Object>();
   o->source = &mesh;
   o->mesh = std::make_unique<GpuMesh>(mesh);
-  std::vector<glm::vec3> attribute(st.size());
-  for (size_t i = 0; i < st.size(); ++i) attribute[i] = glm::vec3(st[i], 0.0);
-  o->mesh->add_attribute(kStAttribute, attribute);
-  o->st = std::move(st);
   objects_.push_back(std::move(o));
-  set_fabric(objects_.size() - 1, fabric);
+  set_fabric(objects_.size() - 1, fabric, std::move(st));
   return objects_.size() - 1;
 }
 
-void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric) {
+void WeaveLayer::set_fabric(size_t handle, const Fabric& fabric, std::vector<glm::dvec2> st) {
   for (const auto& t : fabric.threads)
     if (t.curve.offsets_deg().size() > size_t(kMaxCurvePoints))
       throw GpuError("weave layer: fabric '" + fabric.name + "' has a tangent curve of more than " +
                      std::to_string(kMaxCurvePoints) + " points");
   Object& o = *objects_.at(handle);
+  if (st.size() != o.source->positions.size()) throw GpuError("weave layer: one weave coordinate per vertex needed");
+  for (const glm::dvec2& c : st)
+    if (!(std::isfinite(c.x) && std::isfinite(c.y))) throw GpuError("weave layer: the weave's coordinates must be finite");
   o.bsdf = std::make_unique<ClothBsdf>(fabric, tangent_samples_);
   if (o.pass) o.pass->invalidate(), o.table->invalidate();  // kept terms are of the fabric before
   auto layout = std::make_unique<WeaveLayout>(fabric);
-  if (!o.layout || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.st, layout->rows());
+  const bool resized = st != o.st;
+  if (resized) {  // another preset's repeat: its threads at their own size
+    std::vector<glm::vec3> attribute(st.size());
+    for (size_t i = 0; i < st.size(); ++i) attribute[i] = glm::vec3(st[i], 0.0);
+    o.mesh->add_attribute(kStAttribute, attribute);
+    o.st = std::move(st);
+  }
+  if (!o.layout || resized || o.layout->rows() != layout->rows()) o.reach = std::make_unique<WeaveReach>(*o.source, o.st, layout->rows());
   o.layout = std::move(layout);
 }
 

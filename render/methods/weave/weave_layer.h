@@ -44,8 +44,9 @@ public:
   // each vertex's weave coordinates (scene/weave_scale.h's weave_coordinates). Returns its handle.
   // Needs a current GLES 3 context.
   size_t add_object(const TriangleMesh& mesh, const Fabric& fabric, std::vector<glm::dvec2> st);
-  // A knob edit: the factor follows the new colours and gloss.
-  void set_fabric(size_t handle, const Fabric& fabric);
+  // A knob edit: the factor follows the new colours and gloss, and a new preset's weave at its
+  // own size (`st`: the vertices' weave coordinates for that fabric, as add_object's).
+  void set_fabric(size_t handle, const Fabric& fabric, std::vector<glm::dvec2> st);
   // Whether object `handle` can show its weave in `view` (weave_reach.h): some vertex in view
   // with a footprint under kWeaveCoarseFootprint. Keeps each vertex's footprint for the next
   // draw, whose vertex passes skip the vertices at or above it.
