@@ -3,27 +3,17 @@
 #include <algorithm>
 
 #include "bench/bench_options.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
 const std::vector<LadderEntry>& ladder() {
-  static const std::vector<LadderEntry> l = {
-      {"iwasaki"},
-      {"iwasaki_mask"},
-      {"iwasaki_quadrature"},
-      {"iwasaki_mask_quadrature"},
-      {"iwasaki_vertex"},
-      {"iwasaki_vertex_mask"},
-      {"iwasaki_vertex_quadrature"},
-      {"iwasaki_vertex_mask_quadrature"},
-      {"mizutani"},
-      {"sgpoint"},
-      {"mdfrot"},
-      {"sheen"},
-      {"thin", {"curtain"}, true},
-      {"sheer", {"curtain"}, true},
-      {"sheer_vertex", {"curtain"}, true},
-  };
+  static const std::vector<LadderEntry> l = [] {
+    std::vector<LadderEntry> out;
+    for (const methods::RuntimeMethod& m : methods::registry())
+      out.push_back(m.see_through ? LadderEntry{m.name, {std::string(kSeeThroughScene)}, true} : LadderEntry{m.name, {}, false});
+    return out;
+  }();
   return l;
 }
 

@@ -1,15 +1,16 @@
 #pragma once
-// The ladder of docs/design.md §4: the bench's rows per runtime method, keyed by the method's registry
-// name (methods/registry.h). A method is benchmarked when the GPU runtime has it; the rest are
-// reported as missing, and a runtime method the ladder does not list runs after them, on every
-// scene against the opaque reference. `scenes` limits a method to the scenes it is for;
-// `thin_reference`: measured against the reference with cloth as a thin layer
-// (ReferenceRenderOptions::thin_cloth) instead of opaque cloth.
+// The ladder of docs/design.md §4: the bench's rows, one per runtime method, in the registry's
+// order (methods/registry.h). A see-through method is measured on the bench's see-through scene
+// alone, against the reference with cloth as a thin layer (ReferenceRenderOptions::thin_cloth);
+// every other method on every scene against the opaque reference. select_methods keeps the
+// ladder's rows a runtime has, then runs any method it has that the ladder lacks.
 #include <set>
 #include <string>
 #include <vector>
 
 namespace weft::bench {
+
+inline constexpr const char* kSeeThroughScene = "curtain";  // the bench's sheer before a window
 
 struct LadderEntry {
   std::string name;

@@ -1,5 +1,5 @@
-// The bench's ladder (render/bench/ladder.h), kept by method name beside the registry: each name
-// it lists is a runtime method, once, and the thin-layer reference is the see-through methods'.
+// The bench's ladder (render/bench/ladder.h), read off the registry: every runtime method once, in
+// the registry's order, and the thin-layer reference and the see-through scene the see-through methods'.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -15,6 +15,16 @@ TEST(Ladder, ListsRuntimeMethodsOnce) {
   for (const auto& e : bench::ladder()) {
     EXPECT_NE(methods::find_method(e.name), nullptr) << e.name;
     EXPECT_TRUE(seen.insert(e.name).second) << e.name;
+  }
+}
+
+TEST(Ladder, IsTheRegistryInItsOrder) {
+  const auto& l = bench::ladder();
+  const auto& r = methods::registry();
+  ASSERT_EQ(l.size(), r.size());
+  for (size_t i = 0; i < l.size(); ++i) {
+    EXPECT_EQ(l[i].name, r[i].name);
+    EXPECT_EQ(l[i].scenes.empty(), !r[i].see_through) << r[i].name;
   }
 }
 
