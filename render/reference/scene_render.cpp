@@ -87,8 +87,9 @@ dvec3 ReferenceRenderer::shade(const RayHit& hit, const dvec3& wo, int level) co
   int thread = -1;
   double tilt = 0.0;
   const auto& weave = weaves_[hit.object];
-  if (bsdf && weave) {
-    const auto& t = obj.mesh.triangles[hit.triangle];
+  const auto* corners = weave ? &obj.mesh.triangles[hit.triangle] : nullptr;
+  if (bsdf && weave && !weave_degenerate_uvs(weave->st[(*corners)[0]], weave->st[(*corners)[1]], weave->st[(*corners)[2]])) {
+    const auto& t = *corners;
     const glm::dvec2 st = (1.0 - hit.b1 - hit.b2) * weave->st[t[0]] + hit.b1 * weave->st[t[1]] + hit.b2 * weave->st[t[2]];
     const WeaveSample w = weave->layout.at(st.x, st.y);
     if (w.thread < 0) return dvec3(0.0);

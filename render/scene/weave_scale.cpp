@@ -1,5 +1,6 @@
 #include "scene/weave_scale.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -89,6 +90,13 @@ glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric) {
   if (object.weave_repeats_per_uv.x > 0.0 && object.weave_repeats_per_uv.y > 0.0) return object.weave_repeats_per_uv;
   const glm::dvec2 repeat_m = weave_repeat_cm(fabric) / 100.0;
   return uv_length(object.mesh) / repeat_m;
+}
+
+bool weave_degenerate_uvs(glm::dvec2 st0, glm::dvec2 st1, glm::dvec2 st2) {
+  const glm::dvec2 e1 = st1 - st0, e2 = st2 - st0, e3 = st2 - st1;
+  const double longest = std::max({glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3)});
+  const double area = std::abs(e1.x * e2.y - e1.y * e2.x);
+  return !(longest > 1e-18) || !(area > 1e-4 * longest);
 }
 
 glm::dvec2 weave_repeat_metres(const SceneObject& object, const Fabric& fabric) {

@@ -28,6 +28,11 @@ glm::dvec2 weave_tiles_per_uv(const SceneObject& object, const Fabric& fabric);
 // takes the object's mean. Empty for a mesh without UVs.
 std::vector<glm::dvec2> weave_coordinates(const SceneObject& object, const Fabric& fabric);
 
+// Whether a triangle's weave coordinates collapse to a point or a line (its area at most 10⁻⁴ of
+// its longest edge squared, or every edge under 10⁻⁹ of a repeat): no place for the threads, so
+// the resolved weave keeps the fabric level there, as the weave layer does.
+bool weave_degenerate_uvs(glm::dvec2 st0, glm::dvec2 st1, glm::dvec2 st2);
+
 // The repeat's size on the object in metres (along u, along v): the fabric's own repeat, or the
 // mesh's UV length over the object's weave_repeats_per_uv where it gives them.
 glm::dvec2 weave_repeat_metres(const SceneObject& object, const Fabric& fabric);

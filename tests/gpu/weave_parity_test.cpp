@@ -263,3 +263,27 @@ TEST(WeaveLayer, AveragedOverRepeatsEqualsTheMethodWithoutIt) {
     EXPECT_GT(c.pixels, 0.3) << name;
   }
 }
+
+// UVs collapsed to one point leave the threads no place: the layer leaves the method's shading as
+// it is there, pixel for pixel; the same swatch with its UVs draws the weave (the control).
+TEST(WeaveLayer, CollapsedUvsLeaveTheMethodsShading) {
+  constexpr int kSize = 96;
+  const std::string name = "linen_plain";
+  const std::string json = R"({"name": "top", "environment": "studio",
+    "camera": {"position": [0, 0, 1], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": )" +
+                           std::to_string(2.0 * std::atan(0.05) * 180.0 / M_PI) + R"(},
+    "objects": [{"name": "swatch", "material": "cloth", "fabric": ")" + name + R"(",
+                 "weave_repeats_per_uv": [20, 20], "mesh": {"generator": "swatch", "size": 1.0, "resolution": 8}}]})";
+  Scene scene = parse_scene(json, "top.json", kAssets / "scenes");
+  const std::map<std::string, Fabric> fabrics{{name, load_fabric_preset(name, kAssets / "fabrics")}};
+  auto differing = [&](const Scene& s) {
+    const GpuFrame plain = render_gpu_frame(s, fabrics, four_sgs(), "sgpoint", kSize, kSize, 0);
+    const GpuFrame woven = render_gpu_frame(s, fabrics, four_sgs(), "sgpoint", kSize, kSize, 0, nullptr, Backdrop::measure, true);
+    size_t n = 0;
+    for (size_t i = 0; i < plain.image.pixels.size(); ++i) n += plain.image.pixels[i] != woven.image.pixels[i];
+    return n;
+  };
+  EXPECT_GT(differing(scene), size_t(kSize * kSize / 4)) << "the layer did not draw the swatch with its UVs";
+  for (auto& uv : scene.objects[0].mesh.uvs) uv = glm::dvec2(0.37, 0.61);
+  EXPECT_EQ(differing(scene), 0u) << "pixels the layer changed where the UVs collapse";
+}

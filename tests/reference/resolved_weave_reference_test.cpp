@@ -63,3 +63,28 @@ TEST(ResolvedWeaveReference, AveragedOverRepeatsEqualsFabricLevelForEveryPreset)
     EXPECT_GT(c.pixels, 0.3) << name;
   }
 }
+
+// UVs collapsed to one point leave the threads no place: the resolved reference is the fabric
+// level there, pixel for pixel (as the weave layer keeps the method's shading).
+TEST(ResolvedWeaveReference, CollapsedUvsKeepTheFabricLevel) {
+  const std::string name = "polyester_satin_charmeuse";
+  const Fabric f = load_fabric_preset(name, kAssets / "fabrics");
+  Scene scene = top_down_swatch(name);
+  for (auto& uv : scene.objects[0].mesh.uvs) uv = glm::dvec2(0.37, 0.61);
+  ReferenceRenderOptions opt;
+  opt.width = opt.height = 8;
+  opt.tangent_samples = 16;
+  opt.check_convergence = false;
+  opt.supersample = 2;
+  const ReferenceRenderer fabric_level(scene, {{name, f}}, three_lights(), opt);
+  opt.resolved_weave = true;
+  const ReferenceRenderer resolved(scene, {{name, f}}, three_lights(), opt);
+  const Image a = fabric_level.render().image, b = resolved.render().image;
+  double worst = 0.0, level = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    worst = std::max(worst, glm::length(a.pixels[i] - b.pixels[i]));
+    level = std::max(level, glm::length(a.pixels[i]));
+  }
+  EXPECT_GT(level, 0.0);
+  EXPECT_LE(worst, 1e-12 * level);
+}

@@ -96,3 +96,12 @@ TEST(WeaveCoordinates, ACollapsedIslandTakesTheObjectsMeanAndNoUvsGiveNone) {
   bare.uvs.clear();
   EXPECT_TRUE(weave_coordinates(cloth(bare), f).empty());
 }
+
+TEST(WeaveDegenerateUvs, APointOrALineIsDegenerateAThinTriangleIsNot) {
+  EXPECT_TRUE(weave_degenerate_uvs({0.3, 0.3}, {0.3, 0.3}, {0.3, 0.3}));
+  EXPECT_TRUE(weave_degenerate_uvs({0.0, 0.0}, {1.0, 1.0}, {2.0, 2.0}));  // collinear
+  EXPECT_TRUE(weave_degenerate_uvs({0.0, 0.0}, {0.0, 0.0}, {5.0, 1.0}));  // two corners at one point
+  EXPECT_FALSE(weave_degenerate_uvs({0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}));
+  EXPECT_FALSE(weave_degenerate_uvs({0.0, 0.0}, {1.0, 0.0}, {0.5, 0.01}));  // 1 : 100, still a place for threads
+  EXPECT_FALSE(weave_degenerate_uvs({0.0, 0.0}, {1e-6, 0.0}, {0.0, 1e-6}));  // tiny in tile units, not collapsed
+}

@@ -30,6 +30,11 @@ void main() {
   highp vec2 dx = dFdx(st), dy = dFdy(st);
   float footprint = max(length(dx), length(dy)) * float(u_weave_rows);  // in threads: weave_thread_footprint
   float coarse = smoothstep(u_lod.x, u_lod.y, footprint);
+  // UVs collapsed to a point or a line leave the threads no place: the fabric level, as the
+  // resolved reference keeps there (weave_degenerate_uvs). A pixel's footprint 10⁵ times finer
+  // than a thread, or 10⁴ times longer than wide, is one.
+  float spread = abs(dx.x * dy.y - dx.y * dy.x), longest = max(dot(dx, dx), dot(dy, dy));
+  if (footprint < 1e-5 || spread <= 1e-4 * longest) coarse = 1.0;
   if (coarse >= 1.0) {
     o_factor = vec4(1.0);
     return;
