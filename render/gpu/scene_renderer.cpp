@@ -1,6 +1,5 @@
 #include "gpu/scene_renderer.h"
 
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <algorithm>

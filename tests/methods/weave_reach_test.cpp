@@ -22,6 +22,13 @@ namespace {
 constexpr int kW = 160, kH = 120, kRows = 5;
 const dvec2 kTilesPerUv{20.0, 20.0};
 
+// Each vertex's weave coordinates: its UV times kTilesPerUv (an object's authored repeats per UV unit).
+std::vector<dvec2> tiled(const TriangleMesh& m) {
+  std::vector<dvec2> st;
+  for (const dvec2& uv : m.uvs) st.push_back(uv * kTilesPerUv);
+  return st;
+}
+
 // A 1 m swatch at z = 0 whose u is stretched 3× (a repeat three times finer along x).
 TriangleMesh stretched_swatch() {
   TriangleMesh m = swatch_mesh(1.0, 16);
@@ -53,7 +60,7 @@ double measured_footprint(const Camera& camera) {
 
 TEST(WeaveReach, BoundsTheFootprintPixelsShow) {
   const TriangleMesh mesh = stretched_swatch();
-  const WeaveReach reach(mesh, kTilesPerUv, kRows);
+  const WeaveReach reach(mesh, tiled(mesh), kRows);
   struct Case {
     const char* name;
     dvec3 eye, target, up;
@@ -76,14 +83,16 @@ TEST(WeaveReach, BoundsTheFootprintPixelsShow) {
 }
 
 TEST(WeaveReach, NothingInViewIsOutOfReach) {
-  const WeaveReach reach(stretched_swatch(), kTilesPerUv, kRows);
+  const TriangleMesh mesh = stretched_swatch();
+  const WeaveReach reach(mesh, tiled(mesh), kRows);
   Camera away;
   away.position = {0.0, 0.0, 0.3}, away.target = {0.0, 0.0, 1.0}, away.up = {0, 1, 0};
   EXPECT_TRUE(std::isinf(reach.nearest_footprint(weave_view(away, kW, kH))));
 }
 
 TEST(WeaveReach, TheOrbitBoundsEveryCameraOnIt) {
-  const WeaveReach reach(stretched_swatch(), kTilesPerUv, kRows);
+  const TriangleMesh mesh = stretched_swatch();
+  const WeaveReach reach(mesh, tiled(mesh), kRows);
   Camera camera;
   camera.position = {0.9, -1.2, 0.6}, camera.target = {0.0, 0.0, 0.0};
   const dvec3 pivot{0.3, 0.1, 0.0};
@@ -107,7 +116,7 @@ TEST(WeaveReach, CollapsedUvsAreAlwaysInReachAndLooseVerticesNever) {
   for (auto& uv : mesh.uvs) uv = dvec2(0.5);  // every triangle's UVs one point: the layer's footprint is 0
   mesh.positions.push_back({5.0, 5.0, 5.0});  // a vertex in no triangle
   mesh.uvs.push_back({0.0, 0.0});
-  const WeaveReach reach(mesh, kTilesPerUv, kRows);
+  const WeaveReach reach(mesh, tiled(mesh), kRows);
   EXPECT_EQ(reach.vertices().front().threads_per_metre, 0.0f);
   EXPECT_TRUE(std::isinf(reach.vertices().back().threads_per_metre));
   Camera far;

@@ -20,10 +20,10 @@ namespace weft::gpu {
 namespace {
 constexpr GLuint kStAttribute = 4;  // weave_layer.vert's a_st
 
-// Each a whole vec4 in case the GL packs no tighter. Per-pixel terms: position, normal, warp, UV
-// and a vec4 per group of four lights for their visibility (and the fabric-level response over
-// the vertex level). Vertex table: UV, the fabric-level response and the per-float table's RGB
-// values packed four to a vec4, whatever the lights.
+// Each a whole vec4 in case the GL packs no tighter. Per-pixel terms: position, normal, warp,
+// weave coordinates and a vec4 per group of four lights for their visibility (and the
+// fabric-level response over the vertex level). Vertex table: weave coordinates, the fabric-level
+// response and the per-float table's RGB values packed four to a vec4, whatever the lights.
 constexpr int kTableVec4s = (3 * 2 * kWeaveTableArcs + 3) / 4;
 int weave_varying_components(int q_groups, WeaveLayer::Terms terms) {
   switch (terms) {
@@ -288,7 +288,9 @@ void WeaveLayer::draw(size_t handle, const glm::mat4& vp, const glm::vec3& eye, 
     upload_reach(o);
     set_up(*p.pass);
     mark(pass);
-    pass.run_share(*p.pass, 0, groups + 1, shares_);
+    // Block 0 the fabric level; the Qs' blocks only for the table, whose pass reads them (lit per
+    // pixel, the draw takes each pixel's own).
+    pass.run_share(*p.pass, 0, p.table ? groups + 1 : 1, shares_);
   }
   if (p.table) {
     VertexPass& pass = *o.pass;

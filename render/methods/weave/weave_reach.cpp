@@ -55,17 +55,6 @@ WeaveView weave_view(const Camera& camera, int width, int height) {
   return v;
 }
 
-namespace {
-std::vector<glm::dvec2> scaled_uvs(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv) {
-  std::vector<glm::dvec2> st(mesh.uvs.size());
-  for (size_t v = 0; v < st.size(); ++v) st[v] = mesh.uvs[v] * tiles_per_uv;
-  return st;
-}
-}  // namespace
-
-WeaveReach::WeaveReach(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv, int rows)
-    : WeaveReach(mesh, scaled_uvs(mesh, tiles_per_uv), rows) {}
-
 WeaveReach::WeaveReach(const TriangleMesh& mesh, std::span<const glm::dvec2> st, int rows)
     : positions_(mesh.positions), vertices_(mesh.positions.size()), first_triangle_(mesh.positions.size() + 1, 0) {
   if (st.size() != mesh.positions.size()) throw std::invalid_argument("weave reach: one weave coordinate per vertex needed");

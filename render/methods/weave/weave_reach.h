@@ -43,8 +43,6 @@ public:
   // `st`: each vertex's weave coordinates (scene/weave_scale.h's weave_coordinates), of a weave
   // of `rows` threads across a repeat.
   WeaveReach(const TriangleMesh& mesh, std::span<const glm::dvec2> st, int rows);
-  // The same with the mesh's UVs times `tiles_per_uv` repeats per UV unit.
-  WeaveReach(const TriangleMesh& mesh, glm::dvec2 tiles_per_uv, int rows);
   const std::vector<Vertex>& vertices() const { return vertices_; }
   // Vertex i's footprint from `view` (infinity where it is seen edge-on or from behind the eye).
   double vertex_footprint(size_t i, const WeaveView& view) const;
