@@ -244,6 +244,9 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     const ReferenceLighting lighting = frame_lighting(in, {"sg", "", 10, 128});
     const Camera far = in.scene.camera;
     const Camera close = accuracy_closeup(in.scene, in.fabrics, kH);
+    std::cerr << c.scene << "/" << c.fabric << ": close-up eye " << close.position.x << "," << close.position.y << ","
+              << close.position.z << " target " << close.target.x << "," << close.target.y << "," << close.target.z << " fov "
+              << close.fov_deg << "\n";
     in.scene.camera = close;
     // The repeat's size in pixels at the close-up's target, on the accuracy image.
     double repeat_px = 0.0;
