@@ -1,0 +1,238 @@
+#include "scene/vertex_pass_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <meshoptimizer.h>
+
+namespace weft {
+
+namespace {
+
+struct PassTriangles {
+  std::vector<uint32_t> vertices;                   // mesh indices, ascending
+  std::vector<std::array<uint32_t, 3>> triangles;   // mesh indices
+};
+
+// The simplifier's triangles at relative error `error`. With a finite `cell`, the triangles are
+// simplified in groups by the cube of that side their centroid lies in, each group's outline
+// locked as the whole's is: no pass edge then crosses more than a cube's neighbourhood, which the
+// simplifier alone would not keep on a flat panel (there every collapse costs nothing).
+PassTriangles simplified(const TriangleMesh& mesh, const std::vector<float>& positions, float error, double cell) {
+  std::unordered_map<int64_t, std::vector<uint32_t>> groups;
+  for (const auto& t : mesh.triangles) {
+    int64_t key = 0;
+    if (std::isfinite(cell)) {
+      const glm::dvec3 c = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+      const glm::ivec3 i(glm::floor(c / cell));
+      key = (int64_t(i.x) * 73856093) ^ (int64_t(i.y) * 19349663) ^ (int64_t(i.z) * 83492791);
+    }
+    auto& g = groups[key];
+    g.insert(g.end(), t.begin(), t.end());
+  }
+  PassTriangles p;
+  std::vector<uint32_t> out;
+  for (const auto& [key, indices] : groups) {
+    out.resize(indices.size());
+    const size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), positions.data(), mesh.positions.size(),
+                                      3 * sizeof(float), 0, error, meshopt_SimplifyLockBorder, nullptr);
+    for (size_t i = 0; i + 2 < n; i += 3) p.triangles.push_back({out[i], out[i + 1], out[i + 2]});
+    p.vertices.insert(p.vertices.end(), out.begin(), out.begin() + std::ptrdiff_t(n));
+  }
+  std::sort(p.vertices.begin(), p.vertices.end());
+  p.vertices.erase(std::unique(p.vertices.begin(), p.vertices.end()), p.vertices.end());
+  return p;
+}
+
+// The point of triangle abc closest to p, as barycentric weights (Ericson, Real-Time Collision
+// Detection §5.1.5).
+glm::dvec3 closest_barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1 - v - w, v, w};
+}
+
+double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
+  const double la = glm::length(a), lb = glm::length(b);
+  if (!(la > 0) || !(lb > 0)) return 180.0;
+  return glm::degrees(std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0)));
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  const auto k = std::ptrdiff_t(std::min(v.size() - 1, size_t(q * double(v.size()))));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[size_t(k)];
+}
+
+// Every mesh vertex's three pass corners and weights: a kept vertex is its own; any other takes
+// the pass triangle near it whose blended normal and warp are nearest its own (distance first:
+// a thin part's other side is near in space, not in normal), found on a grid of cells two median
+// edges wide.
+VertexPassMesh blend_map(const TriangleMesh& mesh, const PassTriangles& p) {
+  VertexPassMesh out;
+  out.vertices = p.vertices;
+  std::vector<uint32_t> pass_index(mesh.positions.size(), UINT32_MAX);
+  for (size_t k = 0; k < p.vertices.size(); ++k) pass_index[p.vertices[k]] = uint32_t(k);
+  std::vector<double> edges;
+  for (const auto& t : p.triangles)
+    for (int e = 0; e < 3; ++e) edges.push_back(glm::length(mesh.positions[t[e]] - mesh.positions[t[(e + 1) % 3]]));
+  const double h = std::max(percentile(edges, 0.5), 1e-9);
+  out.edge_p95 = percentile(edges, 0.95);
+  out.edge_median = h;
+  const double cell = 2.0 * h;
+  auto key = [&](const glm::ivec3& c) { return (int64_t(c.x) * 73856093) ^ (int64_t(c.y) * 19349663) ^ (int64_t(c.z) * 83492791); };
+  auto cell_of = [&](const glm::dvec3& x) { return glm::ivec3(glm::floor(x / cell)); };
+  std::unordered_map<int64_t, std::vector<uint32_t>> grid;
+  for (size_t t = 0; t < p.triangles.size(); ++t) {
+    const auto& tri = p.triangles[t];
+    glm::dvec3 lo = mesh.positions[tri[0]], hi = lo;
+    for (int c = 1; c < 3; ++c) {
+      lo = glm::min(lo, mesh.positions[tri[c]]);
+      hi = glm::max(hi, mesh.positions[tri[c]]);
+    }
+    const glm::ivec3 a = cell_of(lo), b = cell_of(hi);
+    for (int z = a.z; z <= b.z; ++z)
+      for (int y = a.y; y <= b.y; ++y)
+        for (int x = a.x; x <= b.x; ++x) grid[key({x, y, z})].push_back(uint32_t(t));
+  }
+  const size_t n = mesh.positions.size();
+  out.corners.resize(n);
+  out.weights.resize(n);
+  std::vector<double> normal_err(n, 0.0), warp_err(n, 0.0), gap(n, 0.0);
+  std::vector<uint32_t> candidates;
+  for (size_t v = 0; v < n; ++v) {
+    if (pass_index[v] != UINT32_MAX) {
+      out.corners[v] = {pass_index[v], pass_index[v], pass_index[v]};
+      out.weights[v] = {1, 0, 0};
+      continue;
+    }
+    const glm::dvec3 x = mesh.positions[v];
+    double best = std::numeric_limits<double>::infinity();
+    glm::dvec3 best_w(1, 0, 0);
+    std::array<uint32_t, 3> best_t{0, 0, 0};
+    for (int reach = 1; reach <= 8 && !std::isfinite(best); reach *= 2) {
+      candidates.clear();
+      const glm::ivec3 c = cell_of(x);
+      for (int z = -reach; z <= reach; ++z)
+        for (int y = -reach; y <= reach; ++y)
+          for (int xx = -reach; xx <= reach; ++xx) {
+            auto it = grid.find(key(c + glm::ivec3(xx, y, z)));
+            if (it != grid.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+          }
+      std::sort(candidates.begin(), candidates.end());
+      candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+      for (uint32_t t : candidates) {
+        const auto& tri = p.triangles[t];
+        const glm::dvec3 w = closest_barycentric(x, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
+        const glm::dvec3 q = w.x * mesh.positions[tri[0]] + w.y * mesh.positions[tri[1]] + w.z * mesh.positions[tri[2]];
+        const glm::dvec3 nb = w.x * mesh.normals[tri[0]] + w.y * mesh.normals[tri[1]] + w.z * mesh.normals[tri[2]];
+        const glm::dvec3 ub = w.x * mesh.warps[tri[0]] + w.y * mesh.warps[tri[1]] + w.z * mesh.warps[tri[2]];
+        const double ln = glm::length(nb), lu = glm::length(ub);
+        const double cn = ln > 0 ? glm::dot(nb / ln, mesh.normals[v]) : -1.0, cu = lu > 0 ? glm::dot(ub / lu, mesh.warps[v]) : -1.0;
+        const double score = glm::dot(x - q, x - q) / (h * h) + 4.0 * (1.0 - cn) + 2.0 * (1.0 - cu);
+        if (score < best) {
+          best = score;
+          best_w = w;
+          best_t = tri;
+        }
+      }
+    }
+    if (!std::isfinite(best)) throw std::runtime_error("vertex pass mesh: a vertex with no pass triangle near it");
+    out.corners[v] = {pass_index[best_t[0]], pass_index[best_t[1]], pass_index[best_t[2]]};
+    out.weights[v] = glm::vec3(best_w);
+    gap[v] = glm::length(x - (best_w.x * mesh.positions[best_t[0]] + best_w.y * mesh.positions[best_t[1]] +
+                              best_w.z * mesh.positions[best_t[2]]));
+    const glm::dvec3 nb = best_w.x * mesh.normals[best_t[0]] + best_w.y * mesh.normals[best_t[1]] + best_w.z * mesh.normals[best_t[2]];
+    const glm::dvec3 ub = best_w.x * mesh.warps[best_t[0]] + best_w.y * mesh.warps[best_t[1]] + best_w.z * mesh.warps[best_t[2]];
+    normal_err[v] = angle_deg(nb, mesh.normals[v]);
+    warp_err[v] = angle_deg(ub, mesh.warps[v]);
+  }
+  out.normal_p95_deg = percentile(normal_err, 0.95);
+  out.normal_max_deg = n ? *std::max_element(normal_err.begin(), normal_err.end()) : 0.0;
+  out.warp_p95_deg = percentile(warp_err, 0.95);
+  out.warp_max_deg = n ? *std::max_element(warp_err.begin(), warp_err.end()) : 0.0;
+  out.gap_max = n ? *std::max_element(gap.begin(), gap.end()) : 0.0;
+  return out;
+}
+
+// Within the budget: the angles, and every vertex within a quarter of the pass's median
+// edge of its blend point (no part of the surface left to a far triangle's corners).
+bool within(const VertexPassMesh& m, const VertexPassMeshOptions& o, double normal_p99) {
+  return m.gap_max <= 0.25 * m.edge_median && m.normal_p95_deg <= o.normal_p95_deg && m.warp_p95_deg <= o.warp_p95_deg && normal_p99 <= o.normal_p99_deg;
+}
+
+}  // namespace
+
+VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOptions& options) {
+  VertexPassMesh whole;
+  const size_t n = mesh.positions.size();
+  if (n < options.keep_all_below || mesh.triangles.empty()) return whole;
+  if (mesh.normals.size() != n || mesh.warps.size() != n)
+    throw std::invalid_argument("vertex pass mesh: the mesh needs a normal and a warp per vertex");
+  std::vector<float> positions;
+  positions.reserve(3 * n);
+  for (const auto& p : mesh.positions) positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
+  VertexPassMesh chosen;
+  // Each step doubles the simplifier's error (relative to the mesh's extent): 0.1 % … 6.4 %.
+  for (float error = 0.001f; error <= 0.0641f; error *= 2.0f) {
+    // Cubes of the edge bound's side: a pass triangle stays within one (edges up to its diagonal).
+    const PassTriangles p = simplified(mesh, positions, error, options.max_edge);
+    if (p.vertices.size() >= n || p.triangles.empty()) continue;
+    if (!chosen.whole() && p.vertices == chosen.vertices) continue;  // this step removed nothing more
+    VertexPassMesh m = blend_map(mesh, p);
+    m.simplifier_error = error;
+    // The 99th percentile of the normals' angles, from the blend (not kept in the result).
+    std::vector<double> errs(n);
+    for (size_t v = 0; v < n; ++v) {
+      const auto& c = m.corners[v];
+      const glm::vec3 w = m.weights[v];
+      const glm::dvec3 nb = double(w.x) * mesh.normals[m.vertices[c[0]]] + double(w.y) * mesh.normals[m.vertices[c[1]]] +
+                            double(w.z) * mesh.normals[m.vertices[c[2]]];
+      errs[v] = angle_deg(nb, mesh.normals[v]);
+    }
+    if (!within(m, options, percentile(errs, 0.99))) break;  // coarser steps only lose more
+    chosen = std::move(m);
+  }
+  return chosen;
+}
+
+std::vector<glm::dvec3> blend_pass_values(const VertexPassMesh& pass, const std::vector<glm::dvec3>& pass_values) {
+  if (pass.whole()) return pass_values;
+  if (pass_values.size() != pass.vertices.size()) throw std::invalid_argument("blend_pass_values: a value per pass vertex");
+  std::vector<glm::dvec3> out(pass.corners.size());
+  for (size_t v = 0; v < out.size(); ++v) {
+    const auto& c = pass.corners[v];
+    const glm::vec3 w = pass.weights[v];
+    out[v] = double(w.x) * pass_values[c[0]] + double(w.y) * pass_values[c[1]] + double(w.z) * pass_values[c[2]];
+  }
+  return out;
+}
+
+}  // namespace weft

@@ -1,0 +1,65 @@
+#pragma once
+// The vertices a per-vertex pass shades (methods/iwasaki/vertex_pass.h), for a mesh denser than its
+// shading needs. A product export carries the density its modelling tool left (a 100k-vertex
+// sofa whose panels are nearly flat); the per-vertex rungs and the weave layer's vertex level only
+// need enough vertices for their interpolated shading to follow the surface. The pass mesh keeps a
+// subset of the mesh's own vertices (meshoptimizer's simplifier: every kept vertex is a vertex of
+// the mesh, with its position, normal and warp, so what is baked per vertex stays exact there) and
+// gives every mesh vertex three of them and weights: the draw reads each vertex's value blended
+// from those, as the rasteriser blends a coarse triangle's corners. The full mesh is still what is
+// drawn: its silhouette and per-pixel terms are untouched.
+//
+// How coarse: the coarsest of a ladder of the simplifier's geometric errors whose blended normals
+// and warps stay within an angle budget at the mesh's vertices (the shading's inputs: a per-vertex
+// value is a function of them), and whose edges stay within a length (the screen's: the kiosk's
+// view of the object at its closest zoom), every vertex near its blend point. The outline is locked
+// (a border vertex moves only along the border). Meshes up to kKeepAllVertices keep every vertex.
+//
+// In weft_scene_files (it links meshoptimizer).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/mesh.h"
+
+namespace weft {
+
+struct VertexPassMesh {
+  // The pass's vertices: indices into the mesh's, ascending (the bake's spatial order kept). Empty:
+  // every vertex of the mesh, each its own (no blending).
+  std::vector<uint32_t> vertices;
+  // Per mesh vertex: three pass vertices (indices into `vertices`) and their weights (sum 1).
+  std::vector<std::array<uint32_t, 3>> corners;
+  std::vector<glm::vec3> weights;
+  bool whole() const { return vertices.empty(); }
+  // Measured on the mesh's vertices: blended against own, degrees (95th percentile, largest).
+  double normal_p95_deg = 0, normal_max_deg = 0, warp_p95_deg = 0, warp_max_deg = 0;
+  double edge_p95 = 0, edge_median = 0;  // the pass triangles' edges, metres
+  double gap_max = 0;         // the farthest a mesh vertex lies from its blend point, metres
+  float simplifier_error = 0;  // the ladder's step taken (relative to the mesh's extent)
+};
+
+struct VertexPassMeshOptions {
+  static constexpr size_t kKeepAllVertices = 4096;  // below: the pass costs less than blending it
+  size_t keep_all_below = kKeepAllVertices;
+  double normal_p95_deg = 4.0;  // the budget: 95 % of the mesh's vertices within these
+  double warp_p95_deg = 8.0;
+  double normal_p99_deg = 15.0;  // and 99 %: creases and seams stay on their own side
+  // Metres: the pass is simplified in cubes of this side, each outline locked, so its triangles
+  // stay within one (edges up to the cube's diagonal). Infinite: one piece.
+  double max_edge = std::numeric_limits<double>::infinity();
+};
+
+// The pass mesh for `mesh` (normals and warps per vertex, as finish_mesh leaves them). Whole where
+// the mesh is small or no step of the ladder keeps the budget.
+VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOptions& options = {});
+
+// Per mesh vertex: the three corners' values blended by the weights (whole: `pass_values` itself),
+// for values given per pass vertex. What the GPU's expansion does; for tests and CPU twins.
+std::vector<glm::dvec3> blend_pass_values(const VertexPassMesh& pass, const std::vector<glm::dvec3>& pass_values);
+
+}  // namespace weft
