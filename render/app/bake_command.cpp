@@ -21,6 +21,7 @@
 #include "scene/mesh_subdivision.h"
 #include "scene/mesh_vertex_order.h"
 #include "scene/scene_file.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 namespace {
@@ -36,6 +37,15 @@ struct BakeArgs {
   int subdivide = -1;  // ≥ 0: midpoint subdivision levels of the cloth meshes (the search's choice when < 0)
   SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --table-grid
 };
+
+// Each cloth mesh's per-vertex passes, where they shade fewer vertices than the mesh has.
+void log_pass_meshes(const Scene& scene) {
+  for (const auto& o : scene.objects)
+    if (o.mesh.pass && !o.mesh.pass->whole())
+      std::fprintf(stderr, "  %s: per-vertex passes on %zu of %zu vertices (blended normals within %.2f° and warps within %.2f° at 95 %%)\n",
+                   o.name.c_str(), o.mesh.pass->vertices.size(), o.mesh.positions.size(), o.mesh.pass->normal_p95_deg,
+                   o.mesh.pass->warp_p95_deg);
+}
 
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
 
@@ -75,7 +85,11 @@ int run_bake(const BakeArgs& a) {
   }
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
-  if (!search) add_scene_sections(writer, in);
+  if (!search) {
+    set_pass_meshes(in.scene);  // on the meshes as stored (ordered, refined)
+    log_pass_meshes(in.scene);
+    add_scene_sections(writer, in);
+  }
   if (!a.no_tables) {
     progress(4, kSteps, "weighting tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;

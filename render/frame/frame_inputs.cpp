@@ -10,6 +10,7 @@
 #include "lighting/sg_set_io.h"
 #include "reference/environment_samples.h"
 #include "scene/scene_file.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -42,6 +43,15 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   }
   if (!a.fabric.empty())
     for (auto& obj : in.scene.cloth_objects()) obj.fabric = a.fabric;
+  {  // the per-vertex passes' vertices of each dense cloth mesh
+    set_pass_meshes(in.scene);
+    for (const auto& obj : in.scene.objects)
+      if (obj.mesh.pass && !obj.mesh.pass->whole())
+        std::cerr << "weft render: mesh " << in.scene.name << "/" << obj.name << ": per-vertex passes on "
+                  << obj.mesh.pass->vertices.size() << " of " << obj.mesh.positions.size() << " vertices (blended normals within "
+                  << obj.mesh.pass->normal_p95_deg << "° and warps within " << obj.mesh.pass->warp_p95_deg
+                  << "° at 95 % of them)\n";
+  }
   try {
     for (const auto& obj : in.scene.objects)
       if (obj.is_cloth() && !in.fabrics.count(obj.fabric))

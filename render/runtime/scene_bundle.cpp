@@ -6,6 +6,7 @@
 
 #include "lighting/sg_set_io.h"
 #include "scene/thread_maps.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -66,6 +67,39 @@ std::vector<V> read_rows(const bundle::BundleReader& r, const std::string& name,
       out[i][k] = x;
     }
   return out;
+}
+
+// Object i's per-vertex passes' vertices (scene/vertex_pass_mesh.h) for its n mesh vertices: pass
+// vertices ascending and below n, three corners per mesh vertex below the pass's count, weights
+// finite, not negative, summing to 1.
+std::shared_ptr<const VertexPassMesh> read_pass_mesh(const bundle::BundleReader& r, size_t i, size_t n) {
+  VertexPassMesh p;
+  const std::string vs = scene_section::mesh(i, "pass_vertices"), cs = scene_section::mesh(i, "pass_corners"),
+                    ws = scene_section::mesh(i, "pass_weights");
+  const auto& vinfo = r.section(vs);
+  if (vinfo.shape.size() != 1 || vinfo.shape[0] == 0) throw bad(r, vs, "expected shape [p], p > 0");
+  const auto vertices = r.array<uint32_t>(vs);
+  p.vertices.assign(vertices.begin(), vertices.end());
+  for (size_t k = 0; k < p.vertices.size(); ++k)
+    if (p.vertices[k] >= n || (k > 0 && p.vertices[k] <= p.vertices[k - 1]))
+      throw bad(r, vs, "pass vertex " + std::to_string(k) + " is not a mesh vertex in ascending order");
+  const auto& cinfo = r.section(cs);
+  if (cinfo.shape.size() != 2 || cinfo.shape[0] != n || cinfo.shape[1] != 3) throw bad(r, cs, "expected shape [n, 3], n the mesh's vertices");
+  const auto corners = r.array<uint32_t>(cs);
+  const std::vector<glm::dvec3> weights = read_rows<glm::dvec3>(r, ws, 3, n);
+  p.corners.resize(n);
+  p.weights.resize(n);
+  for (size_t v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      p.corners[v][k] = corners[v * 3 + k];
+      if (p.corners[v][k] >= p.vertices.size()) throw bad(r, cs, "vertex " + std::to_string(v) + " blends a corner past the pass vertices");
+    }
+    const glm::dvec3 w = weights[v];
+    if (!(w.x >= -1e-4 && w.y >= -1e-4 && w.z >= -1e-4) || !(std::abs(w.x + w.y + w.z - 1.0) <= 1e-3))
+      throw bad(r, ws, "vertex " + std::to_string(v) + ": weights that are not a blend");
+    p.weights[v] = glm::vec3(w);
+  }
+  return std::make_shared<const VertexPassMesh>(std::move(p));
 }
 
 // The scene's "textures": each decoded from its section's PNG, its size as the list says.
@@ -239,6 +273,7 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
                                            " of " + std::to_string(n));
           m.triangles[t][k] = v;
         }
+      if (r.has(scene_section::mesh(i, "pass_vertices"))) m.pass = read_pass_mesh(r, i, n);
       s.objects.push_back(std::move(o));
     }
     if (j.contains("colourways")) {

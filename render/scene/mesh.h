@@ -3,6 +3,7 @@
 // warp direction field derived from the UVs (docs/design.md §2: thread 1 runs along u).
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,12 +12,17 @@
 
 namespace weft {
 
+struct VertexPassMesh;  // scene/vertex_pass_mesh.h
+
 struct TriangleMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // per vertex, unit; filled by finish_mesh when empty
   std::vector<glm::dvec2> uvs;      // per vertex; required for cloth
   std::vector<glm::dvec3> warps;    // per vertex, unit, ⟂ normal; filled by finish_mesh
   std::vector<std::array<uint32_t, 3>> triangles;
+  // The vertices the per-vertex passes shade, where the mesh is denser than its shading needs
+  // (vertex_pass_mesh.h); set on the finished mesh by its loader, null: every vertex.
+  std::shared_ptr<const VertexPassMesh> pass;
 };
 
 // A mesh that cannot be used; what() names the mesh and the problem.

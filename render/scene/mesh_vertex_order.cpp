@@ -89,6 +89,7 @@ void permute(std::vector<T>& values, std::span<const uint32_t> new_index) {
 void permute_vertices(TriangleMesh& mesh, std::span<const uint32_t> new_index) {
   const size_t count = mesh.positions.size();
   if (new_index.size() != count) throw std::invalid_argument("permute_vertices: one new index per vertex needed");
+  mesh.pass.reset();  // of the old numbering
   std::vector<bool> taken(count, false);
   for (uint32_t n : new_index) {
     if (n >= count || taken[n]) throw std::invalid_argument("permute_vertices: not a permutation");

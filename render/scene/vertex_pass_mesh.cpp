@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <cstdlib>
+#include <string>
 #include <unordered_map>
 
 #include <meshoptimizer.h>
@@ -17,9 +19,10 @@ struct PassTriangles {
 };
 
 // The simplifier's triangles at relative error `error`. With a finite `cell`, the triangles are
-// simplified in groups by the cube of that side their centroid lies in, each group's outline
-// locked as the whole's is: no pass edge then crosses more than a cube's neighbourhood, which the
-// simplifier alone would not keep on a flat panel (there every collapse costs nothing).
+// simplified in groups by the cube of that side their centroid lies in, so no pass triangle
+// leaves its cube's neighbourhood, which the simplifier alone would not keep on a flat panel
+// (there every collapse costs nothing). A group's cut edges collapse only along themselves, as
+// any border does; the groups need not join up: a pass triangle only serves the vertices near it.
 PassTriangles simplified(const TriangleMesh& mesh, const std::vector<float>& positions, float error, double cell) {
   std::unordered_map<int64_t, std::vector<uint32_t>> groups;
   for (const auto& t : mesh.triangles) {
@@ -37,7 +40,7 @@ PassTriangles simplified(const TriangleMesh& mesh, const std::vector<float>& pos
   for (const auto& [key, indices] : groups) {
     out.resize(indices.size());
     const size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), positions.data(), mesh.positions.size(),
-                                      3 * sizeof(float), 0, error, meshopt_SimplifyLockBorder, nullptr);
+                                      3 * sizeof(float), 0, error, 0, nullptr);
     for (size_t i = 0; i + 2 < n; i += 3) p.triangles.push_back({out[i], out[i + 1], out[i + 2]});
     p.vertices.insert(p.vertices.end(), out.begin(), out.begin() + std::ptrdiff_t(n));
   }
@@ -182,10 +185,10 @@ VertexPassMesh blend_map(const TriangleMesh& mesh, const PassTriangles& p) {
   return out;
 }
 
-// Within the budget: the angles, and every vertex within a quarter of the pass's median
+// Within the budget: the angles, and every vertex within a quarter of the pass's long (95th percentile)
 // edge of its blend point (no part of the surface left to a far triangle's corners).
 bool within(const VertexPassMesh& m, const VertexPassMeshOptions& o, double normal_p99) {
-  return m.gap_max <= 0.25 * m.edge_median && m.normal_p95_deg <= o.normal_p95_deg && m.warp_p95_deg <= o.warp_p95_deg && normal_p99 <= o.normal_p99_deg;
+  return m.gap_max <= 0.25 * m.edge_p95 && m.normal_p95_deg <= o.normal_p95_deg && m.warp_p95_deg <= o.warp_p95_deg && normal_p99 <= o.normal_p99_deg;
 }
 
 }  // namespace
@@ -202,7 +205,6 @@ VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOp
   VertexPassMesh chosen;
   // Each step doubles the simplifier's error (relative to the mesh's extent): 0.1 % … 6.4 %.
   for (float error = 0.001f; error <= 0.0641f; error *= 2.0f) {
-    // Cubes of the edge bound's side: a pass triangle stays within one (edges up to its diagonal).
     const PassTriangles p = simplified(mesh, positions, error, options.max_edge);
     if (p.vertices.size() >= n || p.triangles.empty()) continue;
     if (!chosen.whole() && p.vertices == chosen.vertices) continue;  // this step removed nothing more
@@ -221,6 +223,28 @@ VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOp
     chosen = std::move(m);
   }
   return chosen;
+}
+
+void set_pass_meshes(Scene& scene) {
+  const char* every = std::getenv("WEFT_PASS_MESH");
+  if (every && std::string(every) == "whole") return;  // every vertex: for comparing
+  for (auto& o : scene.objects) {
+    if (!o.is_cloth() || o.mesh.positions.empty()) continue;
+    glm::dvec3 lo = o.mesh.positions[0], hi = lo;
+    for (const auto& p : o.mesh.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    double nearest = std::numeric_limits<double>::infinity();
+    auto view_from = [&](const glm::dvec3& eye) { nearest = std::min(nearest, glm::length(eye - glm::clamp(eye, lo, hi))); };
+    view_from(scene.camera.position);
+    if (scene.closeup) view_from(scene.closeup->position);
+    VertexPassMeshOptions options;
+    // An eye inside the box: the box's smallest side stands for the distance.
+    const double d = nearest > 0 ? nearest : std::max(1e-3, std::min({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}));
+    options.max_edge = d * std::tan(glm::radians(kPassEdgeDegrees));
+    o.mesh.pass = std::make_shared<const VertexPassMesh>(vertex_pass_mesh(o.mesh, options));
+  }
 }
 
 std::vector<glm::dvec3> blend_pass_values(const VertexPassMesh& pass, const std::vector<glm::dvec3>& pass_values) {

@@ -12,8 +12,8 @@
 // How coarse: the coarsest of a ladder of the simplifier's geometric errors whose blended normals
 // and warps stay within an angle budget at the mesh's vertices (the shading's inputs: a per-vertex
 // value is a function of them), and whose edges stay within a length (the screen's: the kiosk's
-// view of the object at its closest zoom), every vertex near its blend point. The outline is locked
-// (a border vertex moves only along the border). Meshes up to kKeepAllVertices keep every vertex.
+// view of the object at its closest zoom), every vertex near its blend point. A border vertex (the cloth's
+// outline, a cube's cut) moves only along the border. Meshes up to kKeepAllVertices keep every vertex.
 //
 // In weft_scene_files (it links meshoptimizer).
 #include <array>
@@ -25,6 +25,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/mesh.h"
+#include "scene/scene.h"
 
 namespace weft {
 
@@ -49,14 +50,27 @@ struct VertexPassMeshOptions {
   double normal_p95_deg = 4.0;  // the budget: 95 % of the mesh's vertices within these
   double warp_p95_deg = 8.0;
   double normal_p99_deg = 15.0;  // and 99 %: creases and seams stay on their own side
-  // Metres: the pass is simplified in cubes of this side, each outline locked, so its triangles
-  // stay within one (edges up to the cube's diagonal). Infinite: one piece.
+  // Metres: the mesh is simplified in cubes of this side, so no pass triangle leaves a cube's
+  // neighbourhood (its edges within about twice the side). Infinite: one piece.
   double max_edge = std::numeric_limits<double>::infinity();
 };
 
 // The pass mesh for `mesh` (normals and warps per vertex, as finish_mesh leaves them). Whole where
 // the mesh is small or no step of the ladder keeps the budget.
 VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOptions& options = {});
+
+// The pass mesh `mesh` carries where it fits the mesh (a corner per vertex), else whole: what a
+// per-vertex pass shades. Inline: the kiosk's passes read it without the simplifier's library.
+inline const VertexPassMesh& pass_of(const TriangleMesh& mesh) {
+  static const VertexPassMesh whole;
+  return mesh.pass && mesh.pass->corners.size() == mesh.positions.size() ? *mesh.pass : whole;
+}
+
+// Every cloth object's pass mesh (TriangleMesh::pass), its edges bounded by the nearest view the
+// scene's cameras (its camera, its close-up) have of the object: an edge subtends at most
+// kPassEdgeDegrees there. WEFT_PASS_MESH=whole in the environment: none (every vertex), to compare.
+inline constexpr double kPassEdgeDegrees = 3.0;
+void set_pass_meshes(Scene& scene);
 
 // Per mesh vertex: the three corners' values blended by the weights (whole: `pass_values` itself),
 // for values given per pass vertex. What the GPU's expansion does; for tests and CPU twins.

@@ -3,7 +3,8 @@
 // which its block's share last covered it — every vertex once per `shares` calls, no vertex twice,
 // none skipped — with a rate per block, and a whole pass after invalidate(); with a program per
 // block, each block drawn by its own. With history, kept values carried along their chords to the
-// frame's time reproduce a value linear in time exactly.
+// frame's time reproduce a value linear in time exactly. Over a subset of a dense mesh's vertices,
+// every mesh vertex's value is its three pass vertices' blend.
 #include <GLES3/gl31.h>
 #include <gtest/gtest.h>
 
@@ -16,6 +17,8 @@
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "methods/iwasaki/vertex_pass.h"
+#include "scene/procedural_meshes.h"
+#include "scene/vertex_pass_mesh.h"
 #include "shaders/embedded_shaders.h"
 
 using namespace weft;
@@ -283,4 +286,47 @@ void main() {
   EXPECT_EQ(last[size_t(n - 1)], 8);  // an edge-on vertex: the last run's
   EXPECT_LT(last[150], 8);            // one seen from above, out of the last run's share: its share's
   glDeleteBuffers(1, &marks);
+}
+
+// Over a subset of a dense sheet's vertices (scene/vertex_pass_mesh.h), a program writing each
+// pass vertex's own position plus its block lands, blended, on every mesh vertex's own position
+// plus the block (the sheet is flat: its blend of a linear function is exact), in the layout the
+// draws read (mesh vertex i at (i mod 256, i div 256) of each block); the kept pass vertices
+// carry their own mesh index.
+TEST(VertexPass, SubsetPassBlendsEveryMeshVertexFromItsCorners) {
+  gpu::EglContext ctx = gpu::EglContext::headless();
+  const std::string fs = std::string("#version 300 es\nprecision highp float;\nprecision highp int;\n") +
+                         std::string(shaders::source("vertex_pass.glsl")) + R"(
+out vec4 o_value;
+void main() {
+  PassTexel t = pass_texel();
+  if (t.past) {
+    o_value = vec4(0.0);
+    return;
+  }
+  o_value = vec4(texelFetch(u_vertex_position, t.p, 0).xyz + vec3(float(t.k)), float(t.i));
+}
+)";
+  TriangleMesh sheet = parametric_grid(90, 90, [](double s, double t) { return glm::dvec3(0.5 * s, 0.3 * t, 0.0); });
+  finish_mesh(sheet, true, "sheet");
+  const VertexPassMesh subset = vertex_pass_mesh(sheet);
+  ASSERT_FALSE(subset.whole());
+  gpu::VertexPass pass(sheet, subset);
+  EXPECT_EQ(pass.pass_vertices(), int(subset.vertices.size()));
+  const int n = int(sheet.positions.size()), width = 256, rows = (n + width - 1) / width;
+  EXPECT_EQ(pass.texels(), width * rows);
+  gpu::GlProgram program(gpu::fullscreen_triangle_vs(), fs);
+  const int blocks = 3;
+  pass.run(program, 0, blocks);
+  const std::vector<float> texels = pass.read_values();
+  ASSERT_GE(texels.size(), size_t(width) * rows * blocks * 4);
+  std::vector<bool> kept(size_t(n), false);
+  for (uint32_t v : subset.vertices) kept[v] = true;
+  for (int b = 0; b < blocks; ++b)
+    for (int i = 0; i < n; ++i) {
+      const size_t t = (size_t(b) * rows * width + size_t(i)) * 4;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(texels[t + c], float(sheet.positions[size_t(i)][c] + b), 1e-4) << "vertex " << i << " block " << b;
+      if (kept[size_t(i)]) ASSERT_EQ(texels[t + 3], float(i)) << "pass vertex " << i;
+    }
 }

@@ -8,6 +8,7 @@
 #include "bake/writers/scene_bundle_writer.h"
 #include "bundle/bundle_error.h"
 #include "scene/scene_file.h"
+#include "scene/vertex_pass_mesh.h"
 #include "support/file_text.h"
 
 using namespace weft;
@@ -291,4 +292,52 @@ TEST(SceneBundle, CarriesANormalMapAsAVerifiedSection) {
   add_scene_sections(shared, in);
   const auto shared_bytes = shared.to_bytes();
   EXPECT_FALSE(bundle::BundleReader::view(shared_bytes, "memory").has("texture/1"));
+}
+
+TEST(SceneBundle, CarriesTheVertexPassMeshAndRefusesABadOne) {
+  // A hand-made pass (three pass vertices blended everywhere) on the pillow's cloth: the format
+  // carries it exactly, and a blend that is not one, or a corner past the pass, is refused.
+  SceneBundleInput in = pillow_input();
+  TriangleMesh& m = in.scene.objects[0].mesh;
+  ASSERT_EQ(in.scene.objects[0].material, Material::cloth);
+  const size_t n = m.positions.size();
+  auto pass = std::make_shared<VertexPassMesh>();
+  pass->vertices = {0, 5, uint32_t(n - 1)};
+  pass->corners.assign(n, {0, 1, 2});
+  pass->weights.assign(n, glm::vec3(0.25f, 0.25f, 0.5f));
+  pass->corners[5] = {1, 1, 1};
+  pass->weights[5] = glm::vec3(1, 0, 0);
+  m.pass = pass;
+  bundle::BundleWriter w;
+  add_scene_sections(w, in);
+  const auto bytes = w.to_bytes();
+  const SceneBundle out = read_scene_bundle(bundle::BundleReader::view(bytes, "memory"));
+  const auto& got = out.scene.objects[0].mesh.pass;
+  ASSERT_TRUE(got);
+  EXPECT_EQ(got->vertices, pass->vertices);
+  EXPECT_EQ(got->corners, pass->corners);
+  EXPECT_EQ(got->weights, pass->weights);
+  EXPECT_FALSE(out.scene.objects[1].mesh.pass);  // the floor: every vertex
+  auto refused = [&](const VertexPassMesh& bad, const std::string& section) {
+    SceneBundleInput b = in;
+    b.scene.objects[0].mesh.pass = std::make_shared<VertexPassMesh>(bad);
+    bundle::BundleWriter bw;
+    add_scene_sections(bw, b);
+    const auto bb = bw.to_bytes();
+    try {
+      read_scene_bundle(bundle::BundleReader::view(bb, "memory"));
+      ADD_FAILURE() << "accepted a bad " << section;
+    } catch (const bundle::BundleError& e) {
+      EXPECT_EQ(e.section(), "mesh/0/" + section) << e.what();
+    }
+  };
+  VertexPassMesh not_a_blend = *pass;
+  not_a_blend.weights[3] = glm::vec3(0.5f, 0.2f, 0.2f);
+  refused(not_a_blend, "pass_weights");
+  VertexPassMesh past = *pass;
+  past.corners[7] = {0, 1, 3};
+  refused(past, "pass_corners");
+  VertexPassMesh unordered = *pass;
+  unordered.vertices = {5, 0, uint32_t(n - 1)};
+  refused(unordered, "pass_vertices");
 }

@@ -3,7 +3,8 @@
 separate .bin, a baseColorTexture PNG under KHR_texture_transform, materials named as Blender names
 copies ("linen_plain.001"), and two colourways as KHR_materials_variants.
 
-Usage: make_product_gltf.py OUT_DIR   (writes OUT_DIR/cushion.gltf, cushion.bin, cushion_weave.png)
+Usage: make_product_gltf.py OUT_DIR [--grid N]   (writes OUT_DIR/cushion.gltf, cushion.bin, cushion_weave.png)
+  --grid N: each sheet an N×N grid (default 16: 578 vertices; 160: 51 842, as a product tool's dense export)
 Python 3 standard library only.
 """
 import json
@@ -48,15 +49,16 @@ def png(width, height, pixel):
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b"")
 
 
-def main(out_dir):
+def main(out_dir, grid=16):
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    positions, uvs, indices = cushion()
+    positions, uvs, indices = cushion(grid)
+    wide = len(positions) > 65535  # 32-bit indices past what 16 bits can name
     blob = b"".join(struct.pack("<3f", *p) for p in positions)
     uv_offset = len(blob)
     blob += b"".join(struct.pack("<2f", *uv) for uv in uvs)
     index_offset = len(blob)
-    blob += b"".join(struct.pack("<H", i) for i in indices)
+    blob += b"".join(struct.pack("<I" if wide else "<H", i) for i in indices)
     while len(blob) % 4:
         blob += b"\0"
     (out / "cushion.bin").write_bytes(blob)
@@ -108,12 +110,12 @@ def main(out_dir):
         "accessors": [
             {"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3", "min": lo, "max": hi},
             {"bufferView": 1, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
-            {"bufferView": 2, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5125 if wide else 5123, "count": len(indices), "type": "SCALAR"},
         ],
         "bufferViews": [
             {"buffer": 0, "byteOffset": 0, "byteLength": uv_offset, "target": 34962},
             {"buffer": 0, "byteOffset": uv_offset, "byteLength": index_offset - uv_offset, "target": 34962},
-            {"buffer": 0, "byteOffset": index_offset, "byteLength": 2 * len(indices), "target": 34963},
+            {"buffer": 0, "byteOffset": index_offset, "byteLength": (4 if wide else 2) * len(indices), "target": 34963},
         ],
         "buffers": [{"byteLength": len(blob), "uri": "cushion.bin"}],
     }
@@ -121,6 +123,9 @@ def main(out_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) == 2:
+        main(sys.argv[1])
+    elif len(sys.argv) == 4 and sys.argv[2] == "--grid" and sys.argv[3].isdigit() and int(sys.argv[3]) >= 1:
+        main(sys.argv[1], int(sys.argv[3]))
+    else:
         sys.exit(__doc__)
-    main(sys.argv[1])

@@ -7,6 +7,7 @@
 
 #include "bake/visibility/visibility_sdf.h"
 #include "reference/ray_scene.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -22,10 +23,16 @@ std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_
   const double eps = rays.ray_epsilon();
   const int n = opt.resolution, cells = n * n;
   const size_t vertices = mesh.positions.size();
-  Eigen::MatrixXf sdfs(cells, Eigen::Index(vertices));
+  // Where the per-vertex passes shade a subset (scene/vertex_pass_mesh.h), only those vertices are
+  // cast; the others take their corners' blend of the PCA coefficients (the SDF is linear in them).
+  const VertexPassMesh& pass = pass_of(mesh);
+  const size_t cast_vertices = pass.whole() ? vertices : pass.vertices.size();
+  auto cast_vertex = [&](size_t k) { return pass.whole() ? k : size_t(pass.vertices[k]); };
+  Eigen::MatrixXf sdfs(cells, Eigen::Index(cast_vertices));
   std::atomic<size_t> cast{0}, blocked{0}, done{0};
 #pragma omp parallel for schedule(dynamic, 16)
-  for (long v = 0; v < long(vertices); ++v) {
+  for (long k = 0; k < long(cast_vertices); ++k) {
+    const size_t v = cast_vertex(size_t(k));
     const SurfaceFrame frame = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     const dvec3 origin = mesh.positions[v] + eps * frame.n;
     size_t c = 0, b = 0;
@@ -35,14 +42,14 @@ std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_
       b += hit;
       return hit;
     });
-    for (int k = 0; k < cells; ++k) sdfs(k, v) = float(s.d.values[k]);
+    for (int cell = 0; cell < cells; ++cell) sdfs(cell, k) = float(s.d.values[cell]);
     cast += c;
     blocked += b;
     const size_t now = ++done;
-    if (progress && omp_get_thread_num() == 0) progress(now, vertices);  // the callback need not be thread-safe
+    if (progress && omp_get_thread_num() == 0) progress(now, cast_vertices);  // the callback need not be thread-safe
   }
   if (stats) {
-    stats->vertices = vertices;
+    stats->vertices = cast_vertices;
     stats->blocked_share = cast ? double(blocked) / double(cast) : 0.0;
   }
   std::optional<ObjectVisibility> out;
@@ -57,7 +64,17 @@ std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_
       for (int k = 0; k < cells; ++k) o.basis[size_t(t) * cells + k] = pca.basis(k, t);
     o.coefficients.resize(vertices * o.terms);
     for (size_t v = 0; v < vertices; ++v)
-      for (int t = 0; t < o.terms; ++t) o.coefficients[v * o.terms + t] = pca.coefficients(t, Eigen::Index(v));
+      for (int t = 0; t < o.terms; ++t) {
+        if (pass.whole()) {
+          o.coefficients[v * o.terms + t] = pca.coefficients(t, Eigen::Index(v));
+          continue;
+        }
+        const auto& c = pass.corners[v];
+        const glm::vec3 w = pass.weights[v];
+        o.coefficients[v * o.terms + t] = w.x * pca.coefficients(t, Eigen::Index(c[0])) +
+                                          w.y * pca.coefficients(t, Eigen::Index(c[1])) +
+                                          w.z * pca.coefficients(t, Eigen::Index(c[2]));
+      }
     o.rms_error = pca.rms_error;
     o.max_error = pca.max_error;
     out = std::move(o);

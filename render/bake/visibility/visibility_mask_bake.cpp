@@ -1,10 +1,12 @@
 #include "bake/visibility/visibility_mask_bake.h"
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
 #include "core/microcylinder.h"
 #include "reference/ray_scene.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -22,8 +24,13 @@ std::optional<VisibilityMask> bake_visibility_mask(const Scene& scene, size_t ob
   for (int y = 0; y < resolution; ++y)
     for (int x = 0; x < resolution; ++x) local[size_t(y) * resolution + x] = hemisphere_cell_direction(resolution, x, y);
   std::atomic<size_t> blocked{0};
+  // Where the per-vertex passes shade a subset (scene/vertex_pass_mesh.h), only those vertices are
+  // cast; each other vertex takes the mask of its heaviest corner (bits do not blend).
+  const VertexPassMesh& pass = pass_of(mesh);
+  const size_t cast_vertices = pass.whole() ? vertices : pass.vertices.size();
 #pragma omp parallel for schedule(dynamic, 16)
-  for (long v = 0; v < long(vertices); ++v) {
+  for (long k = 0; k < long(cast_vertices); ++k) {
+    const long v = pass.whole() ? k : long(pass.vertices[size_t(k)]);
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     const glm::dvec3 origin = mesh.positions[v] + rays.ray_epsilon() * f.n;
     size_t b = 0;
@@ -36,6 +43,18 @@ std::optional<VisibilityMask> bake_visibility_mask(const Scene& scene, size_t ob
     blocked += b;
   }
   if (blocked == 0) return std::nullopt;
+  if (!pass.whole()) {
+    std::vector<bool> cast(vertices, false);
+    for (uint32_t v : pass.vertices) cast[v] = true;
+    const size_t words = size_t(m.blocks());
+    for (size_t v = 0; v < vertices; ++v) {
+      if (cast[v]) continue;
+      const glm::vec3 w = pass.weights[v];
+      const int heaviest = w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2);
+      const size_t from = pass.vertices[pass.corners[v][size_t(heaviest)]];
+      std::copy_n(m.words.begin() + std::ptrdiff_t(from * words), words, m.words.begin() + std::ptrdiff_t(v * words));
+    }
+  }
   return m;
 }
 

@@ -1,5 +1,7 @@
 #include "bake/writers/scene_bundle_writer.h"
 
+#include "scene/vertex_pass_mesh.h"
+
 #include <nlohmann/json.hpp>
 
 #include "lighting/sg_set_io.h"
@@ -101,6 +103,18 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
     idx.reserve(m.triangles.size() * 3);
     for (const auto& t : m.triangles) idx.insert(idx.end(), t.begin(), t.end());
     writer.add_array<uint32_t>(scene_section::mesh(i, "indices"), idx, {m.triangles.size(), 3});
+    if (m.pass && !m.pass->whole() && m.pass->corners.size() == n) {  // the per-vertex passes' vertices
+      const VertexPassMesh& p = *m.pass;
+      writer.add_array<uint32_t>(scene_section::mesh(i, "pass_vertices"), p.vertices, {p.vertices.size()});
+      std::vector<uint32_t> corners;
+      std::vector<float> weights;
+      for (size_t v = 0; v < n; ++v) {
+        corners.insert(corners.end(), p.corners[v].begin(), p.corners[v].end());
+        weights.insert(weights.end(), {p.weights[v].x, p.weights[v].y, p.weights[v].z});
+      }
+      writer.add_array<uint32_t>(scene_section::mesh(i, "pass_corners"), corners, {n, 3});
+      writer.add_array<float>(scene_section::mesh(i, "pass_weights"), weights, {n, 3});
+    }
   }
   scene["objects"] = objects;
   if (!s.colourways.empty()) {

@@ -180,7 +180,7 @@ size_t IwasakiCloth::add_object(size_t scene_index, const TriangleMesh& mesh, co
     if (!mesh.uvs.empty()) o->mesh.add_attribute(6, uv_attribute(mesh));
   }
   // Each vertex reads its own SDF values; per pixel, the pass computes the broad lobes' part.
-  if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh);
+  if (per_vertex || quadrature) o->pass = std::make_unique<VertexPass>(mesh, pass_of(mesh));
   // Per SG per vertex, the blocks' RGB hold the values: their fourth channel can hold the time.
   if (per_vertex && shaders_.facet_per_sg) o->pass->set_history(true);
   o->vertices = mesh.positions.size();

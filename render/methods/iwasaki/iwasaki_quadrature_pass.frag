@@ -13,7 +13,7 @@ void main() {
   PassTexel t = pass_texel();
   int i = t.i, k = t.k;
   if (pass_keeps_turn(t, u_eye)) discard;  // no visible triangle uses it, or it is not its turn
-  if (i >= u_vertex_count || (u_pass_narrow ? k >= u_sg_count : k >= 3)) {
+  if (t.past || (u_pass_narrow ? k >= u_sg_count : k >= 3)) {
     o_radiance = vec4(0.0);
     return;
   }

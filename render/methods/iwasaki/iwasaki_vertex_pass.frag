@@ -9,7 +9,7 @@ out vec4 o_radiance;
 void main() {
   PassTexel t = pass_texel();
   if (pass_keeps_turn(t, u_eye)) discard;  // no visible triangle uses it, or it is not its turn
-  if (t.i >= u_vertex_count || t.k >= u_sg_count) {
+  if (t.past || t.k >= u_sg_count) {
     o_radiance = vec4(0.0);
     return;
   }

@@ -8,6 +8,7 @@
 
 #include "gl/frame_profile.h"
 #include "gl/gl_error.h"
+#include "methods/program_cloth.h"
 #include "scene/vertex_texels.h"
 
 namespace weft::gpu {
@@ -16,6 +17,7 @@ namespace {
 constexpr int kWidth = kVertexTexelRow;  // the bake orders vertices for this layout
 constexpr int kMaxBlocks = 40;  // MAX_PASS_BLOCKS in vertex_pass.glsl
 constexpr int kMarkUnit = 14;   // the marks' two samplers: above every pass's own units
+constexpr int kBlendUnit = 11;  // the blend's three samplers (their bindings restored after)
 
 void allocate_marks(const GlTexture& t, int width, int height) {
   std::vector<GLuint> zero(size_t(width) * height, 0u);
@@ -42,10 +44,14 @@ void range_rectangles(int begin, int end, int width, Rect rect) {
   }
 }
 
-void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height) {
+// Per texel: values[i] in .xyz, fourth[i] in .w where given.
+void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height,
+            const std::vector<float>& fourth = {}) {
   std::vector<float> texels(size_t(width) * height * 4, 0.0f);
-  for (size_t i = 0; i < values.size(); ++i)
+  for (size_t i = 0; i < values.size(); ++i) {
     for (int c = 0; c < 3; ++c) texels[i * 4 + c] = float(values[i][c]);
+    if (i < fourth.size()) texels[i * 4 + 3] = fourth[i];
+  }
   glBindTexture(GL_TEXTURE_2D, t.id());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -53,25 +59,58 @@ void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width
 }
 }  // namespace
 
-VertexPass::VertexPass(const TriangleMesh& mesh)
-    : count_(int(mesh.positions.size())),
+VertexPass::VertexPass(const TriangleMesh& mesh) : VertexPass(mesh, VertexPassMesh{}) {}
+
+VertexPass::VertexPass(const TriangleMesh& mesh, const VertexPassMesh& pass)
+    : count_(pass.whole() ? int(mesh.positions.size()) : int(pass.vertices.size())),
       width_(std::clamp(count_, 1, kWidth)),
-      height_(std::max(1, (count_ + kWidth - 1) / kWidth)) {
+      height_(std::max(1, (count_ + kWidth - 1) / kWidth)),
+      mesh_count_(int(mesh.positions.size())),
+      mesh_width_(std::clamp(mesh_count_, 1, kWidth)),
+      mesh_height_(std::max(1, (mesh_count_ + kWidth - 1) / kWidth)),
+      subset_(!pass.whole()) {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  if (height_ > max_size)
-    throw GpuError("per-vertex pass: " + std::to_string(count_) + " vertices do not fit a " + std::to_string(kWidth) + "×" +
+  if (mesh_height_ > max_size)
+    throw GpuError("per-vertex pass: " + std::to_string(mesh_count_) + " vertices do not fit a " + std::to_string(kWidth) + "×" +
                    std::to_string(max_size) + " texture");
   if (mesh.normals.size() != mesh.positions.size() || mesh.warps.size() != mesh.positions.size())
     throw GpuError("per-vertex pass: the mesh needs a normal and a warp per vertex");
-  upload(position_, mesh.positions, width_, height_);
-  upload(normal_, mesh.normals, width_, height_);
-  upload(warp_, mesh.warps, width_, height_);
-  for (const auto& m : marks_) allocate_marks(m, width_, height_);
+  if (subset_ && (pass.corners.size() != mesh.positions.size() || pass.weights.size() != mesh.positions.size() ||
+                  std::any_of(pass.vertices.begin(), pass.vertices.end(), [&](uint32_t v) { return v >= mesh.positions.size(); })))
+    throw GpuError("per-vertex pass: its pass vertices do not fit the mesh");
+  // The pass vertices' inputs, each with its mesh vertex in the position's .w (exact below 2^24).
+  std::vector<uint32_t> source(static_cast<size_t>(count_));
+  for (int n = 0; n < count_; ++n) source[size_t(n)] = subset_ ? pass.vertices[size_t(n)] : uint32_t(n);
+  std::vector<glm::dvec3> positions, normals, warps;
+  std::vector<float> index;
+  for (uint32_t v : source) {
+    positions.push_back(mesh.positions[v]);
+    normals.push_back(mesh.normals[v]);
+    warps.push_back(mesh.warps[v]);
+    index.push_back(float(v));
+  }
+  upload(position_, positions, width_, height_, index);
+  upload(normal_, normals, width_, height_);
+  upload(warp_, warps, width_, height_);
+  for (const auto& m : marks_) allocate_marks(m, mesh_width_, mesh_height_);
+  if (subset_) {
+    std::vector<glm::dvec3> corners, weights;
+    for (size_t v = 0; v < pass.corners.size(); ++v) {
+      for (uint32_t c : pass.corners[v])
+        if (c >= pass.vertices.size()) throw GpuError("per-vertex pass: a blend corner past the pass vertices");
+      corners.emplace_back(pass.corners[v][0], pass.corners[v][1], pass.corners[v][2]);
+      weights.emplace_back(pass.weights[v]);
+    }
+    upload(blend_corners_, corners, mesh_width_, mesh_height_);
+    upload(blend_weights_, weights, mesh_width_, mesh_height_);
+    blend_ = std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source({"vertex_pass_blend.frag"}));
+  }
   check_gl("uploading the per-vertex pass inputs");
 }
 
 void VertexPass::set_marks(GLuint marks, unsigned stamp) {
+  if (subset_) return;  // every pass vertex: a hidden one may serve a visible mesh vertex
   if (!marked_) valid_blocks_ = 0;  // values kept from before were not kept by marks: all visible ones anew
   current_marks_ = 1 - current_marks_;
   previous_stamp_ = stamp_;
@@ -82,7 +121,7 @@ void VertexPass::set_marks(GLuint marks, unsigned stamp) {
   glActiveTexture(GL_TEXTURE0 + kMarkUnit);
   glBindTexture(GL_TEXTURE_2D, marks_[current_marks_].id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, mesh_width_, mesh_height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
@@ -101,6 +140,57 @@ void VertexPass::run_shares(const GlProgram& program, int first_unit, std::span<
 }
 
 void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares) {
+  run_blocks(block_programs, first_unit, block_shares);
+  if (subset_) blend(int(block_shares.size()));
+}
+
+void VertexPass::blend(int blocks) {
+  const StageScope stage(Stage::vertex_pass);
+  GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0}, program = 0, active = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  if (blocks > blended_blocks_) {
+    blended_ = std::make_unique<OffscreenTarget>(mesh_width_, mesh_height_ * blocks, /*full_float=*/true);
+    blended_blocks_ = blocks;
+  }
+  const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blending = glIsEnabled(GL_BLEND), scissor = glIsEnabled(GL_SCISSOR_TEST);
+  blended_->bind();
+  glViewport(0, 0, mesh_width_, mesh_height_ * blocks);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  blend_->use();
+  const GLuint textures[3] = {target_->colour_texture(), blend_corners_.id(), blend_weights_.id()};
+  const char* names[3] = {"u_pass_values", "u_blend_corners", "u_blend_weights"};
+  GLint kept[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    glActiveTexture(GL_TEXTURE0 + kBlendUnit + i);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &kept[i]);
+    glBindTexture(GL_TEXTURE_2D, textures[i]);
+    glUniform1i(blend_->uniform(names[i]), kBlendUnit + i);
+  }
+  glUniform1i(blend_->uniform("u_pass_width"), width_);
+  glUniform1i(blend_->uniform("u_pass_rows"), height_);
+  glUniform1i(blend_->uniform("u_mesh_width"), mesh_width_);
+  glUniform1i(blend_->uniform("u_mesh_rows"), mesh_height_);
+  glUniform1i(blend_->uniform("u_mesh_count"), mesh_count_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  for (int i = 0; i < 3; ++i) {
+    glActiveTexture(GL_TEXTURE0 + kBlendUnit + i);
+    glBindTexture(GL_TEXTURE_2D, GLuint(kept[i]));
+  }
+  glActiveTexture(GLenum(active));
+  glUseProgram(GLuint(program));
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  if (depth) glEnable(GL_DEPTH_TEST);
+  if (blending) glEnable(GL_BLEND);
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+}
+
+void VertexPass::run_blocks(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares) {
   if (block_programs.size() != block_shares.size() || block_programs.empty())
     throw GpuError("per-vertex pass: a program and a share per block");
   const int blocks = int(block_shares.size());
@@ -140,7 +230,7 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
 }
 
 void VertexPass::set_history(bool on) {
-  history_ = on;
+  history_ = on && !subset_;  // a blend has no chord of its own
   if (!on) previous_.reset();
   valid_blocks_ = 0;  // the first run with history is whole: it starts the chords
 }
@@ -199,7 +289,7 @@ void VertexPass::copy_to_history(const std::vector<std::pair<int, int>>& ranges)
 
 void VertexPass::bind_history(const GlProgram& program, int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D, previous_ ? previous_->colour_texture() : target_->colour_texture());
+  glBindTexture(GL_TEXTURE_2D, previous_ ? previous_->colour_texture() : results()->colour_texture());
   glUniform1i(program.uniform("u_vertex_history"), unit);
   glUniform1f(program.uniform("u_history_now"), now_);
   glUniform1f(program.uniform("u_history_floor"), floor_);
@@ -266,6 +356,8 @@ void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, c
   glUniform1i(program.uniform("u_vertex_width"), width_);
   glUniform1i(program.uniform("u_vertex_rows"), height_);
   glUniform1i(program.uniform("u_vertex_count"), count_);
+  glUniform1i(program.uniform("u_vertex_mesh_width"), mesh_width_);
+  glUniform1i(program.uniform("u_vertex_mesh_rows"), mesh_height_);
   glUniform1f(program.uniform("u_pass_time"), now_);
   const GlTexture* marks[2] = {&marks_[current_marks_], &marks_[1 - current_marks_]};
   const char* mark_names[2] = {"u_vertex_mark", "u_vertex_mark_before"};
@@ -315,10 +407,10 @@ void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, c
 
 void VertexPass::bind_result(const GlProgram& program, int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D, target_->colour_texture());
+  glBindTexture(GL_TEXTURE_2D, results()->colour_texture());
   glUniform1i(program.uniform("u_vertex_radiance"), unit);
-  glUniform1i(program.uniform("u_vertex_width"), width_);
-  glUniform1i(program.uniform("u_vertex_rows"), height_);
+  glUniform1i(program.uniform("u_vertex_width"), mesh_width_);
+  glUniform1i(program.uniform("u_vertex_rows"), mesh_height_);
 }
 
 }  // namespace weft::gpu

@@ -14,12 +14,19 @@
 #include "methods/iwasaki/iwasaki_textures.h"
 #include "gl/offscreen_target.h"
 #include "scene/mesh.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft::gpu {
 
 class VertexPass {
 public:
   explicit VertexPass(const TriangleMesh& mesh);
+  // Over a subset of the mesh's vertices (scene/vertex_pass_mesh.h; whole: every vertex): the
+  // programs shade the pass vertices, and after each run every mesh vertex's value is blended
+  // from its three (vertex_pass_blend.frag) into the layout above, which is what the draws read.
+  // Such a pass keeps no history and culls no vertex (a hidden pass vertex may serve a visible
+  // mesh vertex): set_history and set_marks are then ignored.
+  VertexPass(const TriangleMesh& mesh, const VertexPassMesh& pass);
   // Draws `program` (in use; built on fullscreen_triangle_vs()) over `blocks` blocks of the vertex
   // texels with the inputs on units first_unit .. first_unit + 2 (u_vertex_position,
   // u_vertex_normal, u_vertex_warp, plus u_vertex_width, u_vertex_rows and u_vertex_count). The
@@ -69,14 +76,27 @@ public:
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
   // The results' texture, for a program that reads them under its own name (no results yet: 0).
-  GLuint result_texture() const { return target_ ? target_->colour_texture() : 0; }
-  int texels() const { return width_ * height_; }  // of an input or a block
-  int width() const { return width_; }             // texels a row: vertex i at (i mod width, i div width)
-  // The result target's texels (RGBA float, row-major, blocks one above the other), for tests.
-  std::vector<float> read_values() const { return target_ ? target_->read_rgba() : std::vector<float>{}; }
+  GLuint result_texture() const {
+    const OffscreenTarget* r = results();
+    return r ? r->colour_texture() : 0;
+  }
+  int texels() const { return mesh_width_ * mesh_height_; }  // of a block of the results (per mesh vertex)
+  int width() const { return mesh_width_; }  // texels a row: mesh vertex i at (i mod width, i div width)
+  int pass_vertices() const { return count_; }
+  // The results' texels (RGBA float, row-major, blocks one above the other), for tests.
+  std::vector<float> read_values() const { return results() ? results()->read_rgba() : std::vector<float>{}; }
 
 private:
-  int count_, width_, height_;  // height_: rows per block
+  int count_, width_, height_;  // the pass vertices' layout; height_: rows per block
+  int mesh_count_, mesh_width_, mesh_height_;  // the mesh's (the same where every vertex is a pass vertex)
+  bool subset_ = false;
+  GlTexture blend_corners_, blend_weights_;  // per mesh vertex, where subset_
+  std::unique_ptr<OffscreenTarget> blended_;
+  int blended_blocks_ = 0;
+  std::unique_ptr<GlProgram> blend_;
+  const OffscreenTarget* results() const { return subset_ ? blended_.get() : target_.get(); }
+  void blend(int blocks);  // the mesh vertices' values from the pass's, every block
+  void run_blocks(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares);
   GlTexture position_, normal_, warp_;
   std::unique_ptr<OffscreenTarget> target_;
   int target_blocks_ = 0;

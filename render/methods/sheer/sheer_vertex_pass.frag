@@ -6,7 +6,7 @@ void main() {
   PassTexel t = pass_texel();  // one block
   ivec2 p = t.p;
   int i = t.i;
-  if (i >= u_vertex_count) {
+  if (t.past) {
     o_radiance = vec4(0.0);
     return;
   }

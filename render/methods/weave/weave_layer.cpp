@@ -191,8 +191,9 @@ void upload_weave_tilt_spreads(const GlProgram& program, const ClothBsdf& bsdf) 
 
 VertexPass& WeaveLayer::vertex_pass(Object& o) {
   if (!o.pass) {
-    o.pass = std::make_unique<VertexPass>(*o.source);
-    o.table = std::make_unique<VertexPass>(*o.source);
+    // The method's pass vertices (pass_of), so the layer's vertex level blends as its shading does.
+    o.pass = std::make_unique<VertexPass>(*o.source, pass_of(*o.source));
+    o.table = std::make_unique<VertexPass>(*o.source, pass_of(*o.source));
     if (!visible_ && VisibleVertices::supported()) visible_ = std::make_unique<VisibleVertices>();
     if (visible_) o.marks = visible_->add_mesh(*o.source, *o.mesh, o.pass->texels());  // for a method that marks none
   }

@@ -8,11 +8,11 @@ uniform highp sampler2D u_weave_terms;
 out vec4 o_value;
 void main() {
   PassTexel t = pass_texel();
-  if (weave_vertex_unresolved(t.p)) discard;  // no pixel near it shows the weave
+  if (weave_vertex_unresolved(t.m)) discard;  // no pixel near it shows the weave
   // Kept where no visible triangle uses it or another share is due; computed where it was out of reach.
-  if (!weave_vertex_newly_resolved(t.p) && pass_keeps(t)) discard;
+  if (!weave_vertex_newly_resolved(t.m) && pass_keeps(t)) discard;
   vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
-  if (t.i >= u_vertex_count || t.k >= WEAVE_TABLE_NODES) {
+  if (t.past || t.k >= WEAVE_TABLE_NODES) {
     o_value = vec4(0.0);
     return;
   }
@@ -24,7 +24,7 @@ void main() {
   vec4 vis[Q_GROUPS], q[Q_GROUPS], weight[Q_GROUPS];
   for (int g = 0; g < Q_GROUPS; ++g) {
     vis[g] = weave_visibility(t.i, g);
-    q[g] = texelFetch(u_weave_terms, t.p + ivec2(0, (g + 1) * u_vertex_rows), 0);
+    q[g] = texelFetch(u_weave_terms, t.m + ivec2(0, (g + 1) * u_vertex_mesh_rows), 0);  // the terms' result
   }
   weave_weights(vis, q, weight);
   int j = t.k / WEAVE_TABLE_ARCS;

@@ -9,11 +9,11 @@ uniform vec3 u_eye;
 out vec4 o_value;
 void main() {
   PassTexel t = pass_texel();
-  if (weave_vertex_unresolved(t.p)) discard;  // no pixel near it shows the weave
+  if (weave_vertex_unresolved(t.m)) discard;  // no pixel near it shows the weave
   // Kept where no visible triangle uses it or another share is due; computed where it was out of reach.
-  if (!weave_vertex_newly_resolved(t.p) && pass_keeps(t)) discard;
+  if (!weave_vertex_newly_resolved(t.m) && pass_keeps(t)) discard;
   vec3 p = texelFetch(u_vertex_position, t.p, 0).xyz;
-  if (t.i >= u_vertex_count || t.k > Q_GROUPS) {
+  if (t.past || t.k > Q_GROUPS) {
     o_value = vec4(0.0);
     return;
   }
