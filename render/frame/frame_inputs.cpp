@@ -31,11 +31,9 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
     try {
       const auto reader = bundle::BundleReader::open(a.bundle);
       SceneBundle sb = read_scene_bundle(reader);
-      std::map<size_t, size_t> vertices;
-      for (size_t i = 0; i < sb.scene.objects.size(); ++i) vertices[i] = sb.scene.objects[i].mesh.positions.size();
       if (!has_iwasaki_sections(reader))
         throw FrameInputError("--bundle: " + a.bundle + " has no weighting tables (weft bake without --no-tables)");
-      in.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+      in.iwasaki = std::make_shared<IwasakiBundleData>(read_scene_iwasaki_sections(reader, sb.scene));
       in.scene = std::move(sb.scene);
     } catch (const bundle::BundleError& e) {
       throw FrameInputError(std::string("--bundle: ") + e.what());
@@ -43,7 +41,7 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   }
   if (!a.fabric.empty())
     for (auto& obj : in.scene.cloth_objects()) obj.fabric = a.fabric;
-  {  // the per-vertex passes' vertices of each dense cloth mesh
+  if (a.bundle.empty()) {  // the per-vertex passes' vertices of each dense cloth mesh (a bundle carries its bake's)
     set_pass_meshes(in.scene);
     for (const auto& obj : in.scene.objects)
       if (obj.mesh.pass && !obj.mesh.pass->whole())

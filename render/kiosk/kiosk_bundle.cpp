@@ -85,9 +85,7 @@ KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::str
   KioskBundle b;
   b.scene = read_scene_bundle(reader);
   if (has_iwasaki_sections(reader) && method != tableless_rung().name) {
-    std::map<size_t, size_t> vertices;
-    for (size_t i = 0; i < b.scene.scene.objects.size(); ++i) vertices[i] = b.scene.scene.objects[i].mesh.positions.size();
-    b.iwasaki = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+    b.iwasaki = std::make_shared<IwasakiBundleData>(read_scene_iwasaki_sections(reader, b.scene.scene));
   }
   if (reader.has("bake/selection")) b.baked_for = selected_method(reader.json("bake/selection"));
   b.fingerprint = bundle_fingerprint(reader);

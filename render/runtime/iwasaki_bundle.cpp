@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/vertex_pass_rows.h"
+
 namespace weft {
 
 namespace iwasaki_section {
@@ -43,6 +45,27 @@ std::vector<float> floats(const bundle::BundleReader& r, const std::string& name
 bool has_iwasaki_sections(const bundle::BundleReader& r) { return r.has(iwasaki_section::kTablesIndex); }
 
 IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
+  return read_iwasaki_sections(r, vertex_counts, {});
+}
+
+IwasakiBundleData read_scene_iwasaki_sections(const bundle::BundleReader& r, const Scene& scene) {
+  std::map<size_t, size_t> counts;
+  std::map<size_t, const VertexPassMesh*> passes;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const TriangleMesh& m = scene.objects[i].mesh;
+    counts[i] = m.positions.size();
+    if (!pass_of(m).whole()) passes[i] = &pass_of(m);
+  }
+  return read_iwasaki_sections(r, counts, passes);
+}
+
+IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
+                                        const std::map<size_t, const VertexPassMesh*>& passes) {
+  // Rows stored at an object's pass vertices only: how many, where it has a pass subset.
+  auto pass_rows = [&](size_t object) -> const VertexPassMesh* {
+    const auto p = passes.find(object);
+    return p == passes.end() ? nullptr : p->second;
+  };
   IwasakiBundleData out;
   const std::string TI = iwasaki_section::kTablesIndex;
   const json index = parse(r, TI);
@@ -123,7 +146,12 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     const size_t cells = size_t(o.resolution) * o.resolution;
     o.mean = floats(r, iwasaki_section::vis(object, "pca_mean"), cells);
     o.basis = floats(r, iwasaki_section::vis(object, "pca_basis"), cells * o.terms);
-    o.coefficients = floats(r, iwasaki_section::vis(object, "pca_coeffs"), vc->second * o.terms);
+    const std::string cs = iwasaki_section::vis(object, "pca_coeffs");
+    const VertexPassMesh* pass = pass_rows(object);
+    if (pass && r.array<float>(cs).size() == pass->vertices.size() * size_t(o.terms))  // at the pass vertices
+      o.coefficients = blended_rows(*pass, floats(r, cs, pass->vertices.size() * o.terms), size_t(o.terms));
+    else
+      o.coefficients = floats(r, cs, vc->second * o.terms);
     out.visibility.emplace(object, std::move(o));
   }
 
@@ -165,11 +193,14 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
       if (vc == vertex_counts.end()) throw bad(r, MI, "entry '" + key + "': no such object in the scene");
       const std::string name = iwasaki_section::mask(object);
       const auto bits = r.array<std::uint32_t>(name);
-      const size_t words = vc->second * size_t(m.blocks());
+      const VertexPassMesh* pass = pass_rows(object);
+      const bool at_pass = pass && bits.size() == 2 * pass->vertices.size() * size_t(m.blocks());
+      const size_t words = (at_pass ? pass->vertices.size() : vc->second) * size_t(m.blocks());
       if (bits.size() != 2 * words)
         throw bad(r, name, "expected " + std::to_string(2 * words) + " values, found " + std::to_string(bits.size()));
       m.words.resize(words);
       for (size_t i = 0; i < words; ++i) m.words[i] = std::uint64_t(bits[2 * i]) | std::uint64_t(bits[2 * i + 1]) << 32;
+      if (at_pass) m.words = heaviest_corner_rows(*pass, m.words, size_t(m.blocks()));
       out.masks.emplace(object, std::move(m));
     }
   }

@@ -15,6 +15,8 @@
 #include "runtime/sigmoid_gain_table.h"
 #include "runtime/visibility_mask.h"
 #include "runtime/weighting_tables.h"
+#include "scene/scene.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -44,5 +46,12 @@ bool has_iwasaki_sections(const bundle::BundleReader& reader);
 // wrong type or shape, or holds invalid values; `vertex_counts[i]` (object i's vertices) checks
 // the coefficients.
 IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts);
+// The same where an object may carry a pass subset (scene/vertex_pass_mesh.h): its per-vertex rows
+// (PCA coefficients, mask bits) may then be stored at the pass vertices only, and are spread back
+// to every vertex (coefficients blended, bits of the heaviest corner), as the bake made them.
+IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts,
+                                        const std::map<size_t, const VertexPassMesh*>& passes);
+// The scene's objects' vertex counts and pass subsets (the scene as read from the same bundle).
+IwasakiBundleData read_scene_iwasaki_sections(const bundle::BundleReader& reader, const Scene& scene);
 
 }  // namespace weft

@@ -13,7 +13,7 @@
 // and warps stay within an angle budget at the mesh's vertices (the shading's inputs: a per-vertex
 // value is a function of them), and whose edges stay within a length (the screen's: the kiosk's
 // view of the object at its closest zoom), every vertex near its blend point. A border vertex (the cloth's
-// outline, a cube's cut) moves only along the border. Meshes up to kKeepAllVertices keep every vertex.
+// outline) moves only along the border. Meshes up to kKeepAllVertices keep every vertex.
 //
 // In weft_scene_files (it links meshoptimizer).
 #include <array>
@@ -50,8 +50,9 @@ struct VertexPassMeshOptions {
   double normal_p95_deg = 4.0;  // the budget: 95 % of the mesh's vertices within these
   double warp_p95_deg = 8.0;
   double normal_p99_deg = 15.0;  // and 99 %: creases and seams stay on their own side
-  // Metres: the mesh is simplified in cubes of this side, so no pass triangle leaves a cube's
-  // neighbourhood (its edges within about twice the side). Infinite: one piece.
+  // Metres: the simplifier is steered to triangles near this edge (a ripple of twice it along the
+  // normals, vertex_pass_mesh.cpp), and a step whose edges exceed 1.5 times it at the 95th
+  // percentile is refused. Infinite: no bound.
   double max_edge = std::numeric_limits<double>::infinity();
 };
 

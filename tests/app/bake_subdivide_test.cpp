@@ -58,10 +58,11 @@ TEST(BakeSubdivide, BundleHoldsTheRefinedClothMeshes) {
     else
       EXPECT_EQ(m.triangles, given.objects[i].mesh.triangles);
   }
-  // Visibility coefficients for every refined vertex (the reader checks them against the counts).
+  // Visibility coefficients for every refined vertex (the reader checks them against the counts;
+  // the refined pillow's are stored at its pass vertices and spread back).
   std::map<size_t, size_t> counts;
   for (size_t i = 0; i < b.scene.objects.size(); ++i) counts[i] = b.scene.objects[i].mesh.positions.size();
-  const IwasakiBundleData d = read_iwasaki_sections(reader, counts);
+  const IwasakiBundleData d = read_scene_iwasaki_sections(reader, b.scene);
   ASSERT_TRUE(d.visibility.count(0));  // the pillow
   EXPECT_EQ(d.visibility.at(0).coefficients.size(), counts[0] * size_t(d.visibility.at(0).terms));
   fs::remove(out);

@@ -6,7 +6,7 @@
 //  - a dense sphere: the blended normals, recomputed here, are within the budget asked for, and a
 //    tighter budget keeps more vertices;
 //  - a thin two-sided sheet: each side's vertices blend their own side's corners only;
-//  - an edge bound keeps 95 % of the pass's edges within twice it.
+//  - an edge bound keeps 95 % of the pass's edges within 1.5 times it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -126,6 +126,6 @@ TEST(VertexPassMesh, EdgeBoundIsKept) {
   o.max_edge = 0.05;  // of a 1 m sheet
   const VertexPassMesh p = vertex_pass_mesh(m, o);
   ASSERT_FALSE(p.whole());
-  EXPECT_LE(p.edge_p95, 2.0 * 0.05);
+  EXPECT_LE(p.edge_p95, 1.5 * 0.05);
   EXPECT_GT(p.vertices.size(), vertex_pass_mesh(m).vertices.size());
 }

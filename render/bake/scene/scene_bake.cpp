@@ -125,7 +125,7 @@ std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
                                IwasakiBundleData* baked) {
   IwasakiBakeReport report;
   IwasakiBundleData data = bake_iwasaki(scene, cloth_fabrics(scene, fabric_texts), opt, &report);
-  add_iwasaki_sections(writer, data);
+  add_iwasaki_sections(writer, data, &scene);
   char buf[256];
   std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
                 data.tables.size(), report.tables_s, data.visibility.size(), report.visibility_s, report.kappa_s);

@@ -1,12 +1,20 @@
 #include "bake/writers/iwasaki_bundle_writer.h"
 
+#include "scene/vertex_pass_rows.h"
+
 #include <nlohmann/json.hpp>
 
 namespace weft {
 
 using nlohmann::json;
 
-void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
+void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d, const Scene* scene) {
+  // The object's pass subset, where its rows are stored at the pass vertices only.
+  auto subset = [&](size_t object, size_t vertices) -> const VertexPassMesh* {
+    if (!scene || object >= scene->objects.size()) return nullptr;
+    const VertexPassMesh& p = pass_of(scene->objects[object].mesh);
+    return !p.whole() && p.corners.size() == vertices ? &p : nullptr;
+  };
   json index = json::object();
   int id = 0;
   for (const auto& [preset, t] : d.tables) {
@@ -40,8 +48,12 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
                                    {"rms_error", o.rms_error}, {"max_error", o.max_error}};
     w.add_array<float>(iwasaki_section::vis(object, "pca_mean"), o.mean, {cells});
     w.add_array<float>(iwasaki_section::vis(object, "pca_basis"), o.basis, {uint64_t(o.terms), cells});
-    w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), o.coefficients,
-                       {uint64_t(o.vertex_count()), uint64_t(o.terms)});
+    if (const VertexPassMesh* p = subset(object, o.vertex_count()))
+      w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), pass_vertex_rows(*p, o.coefficients, size_t(o.terms)),
+                         {uint64_t(p->vertices.size()), uint64_t(o.terms)});
+    else
+      w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), o.coefficients,
+                         {uint64_t(o.vertex_count()), uint64_t(o.terms)});
   }
   w.add_json(iwasaki_section::kVisIndex, vis.dump());
   if (d.kappa) {
@@ -56,11 +68,13 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d) {
     json masks = json::object();
     for (const auto& [object, m] : d.masks) {
       masks[std::to_string(object)] = {{"resolution", m.resolution}};
+      const VertexPassMesh* p = subset(object, m.vertex_count());
+      const std::vector<std::uint64_t> words = p ? pass_vertex_rows(*p, m.words, size_t(m.blocks())) : m.words;
       std::vector<std::uint32_t> bits;
-      bits.reserve(2 * m.words.size());
-      for (const std::uint64_t word : m.words) bits.insert(bits.end(), {std::uint32_t(word), std::uint32_t(word >> 32)});
+      bits.reserve(2 * words.size());
+      for (const std::uint64_t word : words) bits.insert(bits.end(), {std::uint32_t(word), std::uint32_t(word >> 32)});
       w.add_array<std::uint32_t>(iwasaki_section::mask(object), bits,
-                                 {uint64_t(m.vertex_count()), uint64_t(m.blocks()), 2});
+                                 {uint64_t(words.size() / size_t(m.blocks())), uint64_t(m.blocks()), 2});
     }
     w.add_json(iwasaki_section::kMaskIndex, masks.dump());
   }

@@ -2,10 +2,13 @@
 // Writes the weighting-table sections (runtime/iwasaki_bundle.h: names, data, reader) into a bundle.
 #include "bundle/bundle_writer.h"
 #include "runtime/iwasaki_bundle.h"
+#include "scene/scene.h"
 
 namespace weft {
 
-// Adds the sections.
-void add_iwasaki_sections(bundle::BundleWriter& writer, const IwasakiBundleData& data);
+// Adds the sections. Where `scene` is given, an object whose mesh has a pass subset
+// (scene/vertex_pass_mesh.h) stores its visibility's per-vertex rows (PCA coefficients, mask bits)
+// at the pass vertices only; the reader spreads them back (the bake made the others so).
+void add_iwasaki_sections(bundle::BundleWriter& writer, const IwasakiBundleData& data, const Scene* scene = nullptr);
 
 }  // namespace weft

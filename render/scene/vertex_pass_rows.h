@@ -1,0 +1,47 @@
+#pragma once
+// Per-vertex rows kept only at a pass mesh's vertices (scene/vertex_pass_mesh.h) and spread back
+// to every mesh vertex: what the bundle stores of the visibility baked at the pass vertices alone.
+// Rows that blend (an SDF's PCA coefficients) take their corners' blend; rows that do not (a
+// mask's bits) take their heaviest corner's. Header-only: the kiosk's bundle reader uses it.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "scene/vertex_pass_mesh.h"
+
+namespace weft {
+
+// The rows of the pass vertices (row k: mesh vertex pass.vertices[k]), `width` values each.
+template <class T>
+std::vector<T> pass_vertex_rows(const VertexPassMesh& pass, const std::vector<T>& rows, size_t width) {
+  std::vector<T> out;
+  out.reserve(pass.vertices.size() * width);
+  for (uint32_t v : pass.vertices) out.insert(out.end(), rows.begin() + std::ptrdiff_t(v * width), rows.begin() + std::ptrdiff_t((v + 1) * width));
+  return out;
+}
+
+// Every mesh vertex's row blended from its corners' (pass-vertex rows in).
+inline std::vector<float> blended_rows(const VertexPassMesh& pass, const std::vector<float>& rows, size_t width) {
+  std::vector<float> out(pass.corners.size() * width);
+  for (size_t v = 0; v < pass.corners.size(); ++v) {
+    const auto& c = pass.corners[v];
+    const glm::vec3 w = pass.weights[v];
+    for (size_t i = 0; i < width; ++i)
+      out[v * width + i] = w.x * rows[c[0] * width + i] + w.y * rows[c[1] * width + i] + w.z * rows[c[2] * width + i];
+  }
+  return out;
+}
+
+// Every mesh vertex's row as its heaviest corner's (pass-vertex rows in).
+template <class T>
+std::vector<T> heaviest_corner_rows(const VertexPassMesh& pass, const std::vector<T>& rows, size_t width) {
+  std::vector<T> out(pass.corners.size() * width);
+  for (size_t v = 0; v < pass.corners.size(); ++v) {
+    const glm::vec3 w = pass.weights[v];
+    const size_t from = pass.corners[v][w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2)];
+    std::copy_n(rows.begin() + std::ptrdiff_t(from * width), width, out.begin() + std::ptrdiff_t(v * width));
+  }
+  return out;
+}
+
+}  // namespace weft
