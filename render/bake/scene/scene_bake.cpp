@@ -1,5 +1,7 @@
 #include "bake/scene/scene_bake.h"
 
+#include "scene/vertex_pass_mesh.h"
+
 #include <chrono>
 #include <cstdio>
 
@@ -97,8 +99,10 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     if (opt.mask_resolution > 0 && scene.objects[i].is_cloth() && out.visibility.count(i))
       if (auto m = bake_visibility_mask(scene, i, opt.mask_resolution)) {
         if (!opt.quiet)
-          std::fprintf(stderr, "  %s: visibility mask %d² per vertex, %.2f MB\n", scene.objects[i].name.c_str(),
-                       opt.mask_resolution, 8e-6 * double(m->words.size()));
+          std::fprintf(stderr, "  %s: visibility mask %d² per vertex, %.2f MB stored\n", scene.objects[i].name.c_str(),
+                       opt.mask_resolution,  // at the pass vertices only where the passes shade a subset
+                       8e-6 * double(m->blocks()) * double(pass_of(scene.objects[i].mesh).whole() ? m->vertex_count()
+                                                                                       : pass_of(scene.objects[i].mesh).vertices.size()));
         out.masks.emplace(i, std::move(*m));
       }
   }
