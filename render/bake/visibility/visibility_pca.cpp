@@ -15,6 +15,22 @@ namespace {
 // is then approximate, but every error this file reports is measured for the basis it returns.
 void leading_singular(const Eigen::MatrixXf& x, int rank, int exact_limit, Eigen::MatrixXf& u,
                       Eigen::VectorXd& s) {
+  if (x.rows() <= exact_limit && x.cols() > 4 * x.rows()) {
+    // Few cells, many vertices (a floor's 32² grids): the eigenvectors of X·Xᵀ, a cells² symmetric
+    // problem, are X's left singular vectors. Jacobi on X itself costs a minute there (cells³
+    // rotations a sweep); the squared condition number only blurs singular values far below
+    // the ones kept, and every error reported is measured for the basis returned.
+    const Eigen::MatrixXd xd = x.cast<double>();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(xd * xd.transpose());
+    const Eigen::Index n = x.rows();
+    u.resize(n, rank);
+    s.resize(rank);
+    for (int k = 0; k < rank; ++k) {  // eigenvalues ascend: the leading ones last
+      u.col(k) = eig.eigenvectors().col(n - 1 - k).cast<float>();
+      s[k] = std::sqrt(std::max(0.0, eig.eigenvalues()[n - 1 - k]));
+    }
+    return;
+  }
   if (std::min(x.rows(), x.cols()) <= exact_limit) {
     // Jacobi (after a QR to the small side) rather than BDCSVD: as exact, and far cheaper to compile.
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(x.cast<double>(), Eigen::ComputeThinU);
