@@ -38,22 +38,13 @@ struct BakeArgs {
   SceneSelectionOptions select;  // --target-error > 0: the scene-level search (bake/selection/scene_selection.h); holds --table-grid
 };
 
-// Each cloth mesh's per-vertex passes, where they shade fewer vertices than the mesh has.
-void log_pass_meshes(const Scene& scene) {
-  for (const auto& o : scene.objects)
-    if (o.mesh.pass && !o.mesh.pass->whole())
-      std::fprintf(stderr, "  %s: per-vertex passes on %zu of %zu vertices (blended normals within %.2f° and warps within %.2f° at 95 %%)\n",
-                   o.name.c_str(), o.mesh.pass->vertices.size(), o.mesh.positions.size(), o.mesh.pass->normal_p95_deg,
-                   o.mesh.pass->warp_p95_deg);
-}
-
 void progress(int step, int steps, const std::string& what) { std::fprintf(stderr, "bake [%d/%d] %s\n", step, steps, what.c_str()); }
 
 int run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   constexpr int kSteps = 5;
-  if (a.sdf_resolution % 2) throw UsageError("--sdf-resolution: must be even");
-  if (a.lambertian_sdf_resolution % 2) throw UsageError("--floor-sdf-resolution: must be even");
+  if (a.sdf_resolution % 2 || a.lambertian_sdf_resolution % 2)
+    throw UsageError(std::string(a.sdf_resolution % 2 ? "--sdf-resolution" : "--floor-sdf-resolution") + ": must be even");
   SceneBundleInput in;
   progress(1, kSteps, "scene '" + a.scene + "'");
   in.scene = as_usage("--scene", [&] { return load_scene_named(a.scene, assets_dir(), a.fabric); });
@@ -64,6 +55,7 @@ int run_bake(const BakeArgs& a) {
   // Spatial vertex order before anything per vertex is baked; the search orders its densities itself.
   in.scene = order_scene_meshes(std::move(in.scene));
   if (a.subdivide > 0 && !search) in.scene = refine_and_order_meshes(std::move(in.scene), a.subdivide);
+  if (!search) std::fputs(set_pass_meshes(in.scene, "  ").c_str(), stderr);  // the search's: after it refines
   progress(2, kSteps, "fabrics");
   try {
     in.fabrics = bundle_fabric_texts(in.scene, assets_dir() / "fabrics", a.only_scene_fabrics);
@@ -85,11 +77,7 @@ int run_bake(const BakeArgs& a) {
   }
   if (in.sgs.empty()) throw UsageError("no SG lighting: the fit gave none; give --sgs FILE");
   bundle::BundleWriter writer;
-  if (!search) {
-    set_pass_meshes(in.scene);  // on the meshes as stored (ordered, refined)
-    log_pass_meshes(in.scene);
-    add_scene_sections(writer, in);
-  }
+  if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
     progress(4, kSteps, "weighting tables (T, visibility, kappa)");
     IwasakiBakeOptions opt;
@@ -123,12 +111,10 @@ int run_bake(const BakeArgs& a) {
   size_t triangles = 0;
   for (const auto& o : in.scene.objects) triangles += o.mesh.triangles.size();
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::fprintf(stderr,
-               "baked %s: scene '%s', %zu objects, %zu triangles, %zu fabrics, %zu SGs (%s); %zu sections, %zu bytes, "
+  std::fprintf(stderr, "baked %s: scene '%s', %zu objects, %zu triangles, %zu fabrics, %zu SGs (%s); %zu sections, %zu bytes, "
                "%.2f s\n  %s; bundle %.2f MB\n",
-               a.out.c_str(), in.scene.name.c_str(), in.scene.objects.size(), triangles, in.fabrics.size(),
-               in.sgs.size(), lighting.c_str(), writer.section_count(), bytes.size(), s, tables_line.c_str(),
-               bytes.size() / 1e6);
+               a.out.c_str(), in.scene.name.c_str(), in.scene.objects.size(), triangles, in.fabrics.size(), in.sgs.size(),
+               lighting.c_str(), writer.section_count(), bytes.size(), s, tables_line.c_str(), bytes.size() / 1e6);
   return 0;
 }
 

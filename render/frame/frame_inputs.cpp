@@ -42,13 +42,7 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
   if (!a.fabric.empty())
     for (auto& obj : in.scene.cloth_objects()) obj.fabric = a.fabric;
   if (a.bundle.empty()) {  // the per-vertex passes' vertices of each dense cloth mesh (a bundle carries its bake's)
-    set_pass_meshes(in.scene);
-    for (const auto& obj : in.scene.objects)
-      if (obj.mesh.pass && !obj.mesh.pass->whole())
-        std::cerr << "weft render: mesh " << in.scene.name << "/" << obj.name << ": per-vertex passes on "
-                  << obj.mesh.pass->vertices.size() << " of " << obj.mesh.positions.size() << " vertices (blended normals within "
-                  << obj.mesh.pass->normal_p95_deg << "° and warps within " << obj.mesh.pass->warp_p95_deg
-                  << "° at 95 % of them)\n";
+    std::cerr << set_pass_meshes(in.scene, "weft render: mesh " + in.scene.name + "/");
   }
   try {
     for (const auto& obj : in.scene.objects)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <unordered_map>
@@ -237,9 +238,9 @@ VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOp
   return chosen;
 }
 
-void set_pass_meshes(Scene& scene) {
+std::string set_pass_meshes(Scene& scene, const std::string& report_prefix) {
   const char* every = std::getenv("WEFT_PASS_MESH");
-  if (every && std::string(every) == "whole") return;  // every vertex: for comparing
+  if (every && std::string(every) == "whole") return "";  // every vertex: for comparing
   for (auto& o : scene.objects) {
     if (!o.is_cloth() || o.mesh.positions.empty()) continue;
     glm::dvec3 lo = o.mesh.positions[0], hi = lo;
@@ -257,6 +258,19 @@ void set_pass_meshes(Scene& scene) {
     options.max_edge = d * std::tan(glm::radians(kPassEdgeDegrees));
     o.mesh.pass = std::make_shared<const VertexPassMesh>(vertex_pass_mesh(o.mesh, options));
   }
+  return pass_mesh_report(scene, report_prefix);
+}
+
+std::string pass_mesh_report(const Scene& scene, const std::string& prefix) {
+  std::string out;
+  char line[160];
+  for (const auto& o : scene.objects)
+    if (o.mesh.pass && !o.mesh.pass->whole()) {
+      std::snprintf(line, sizeof line, ": per-vertex passes on %zu of %zu vertices (blended normals within %.2f° and warps within %.2f° at 95 %%)\n",
+                    o.mesh.pass->vertices.size(), o.mesh.positions.size(), o.mesh.pass->normal_p95_deg, o.mesh.pass->warp_p95_deg);
+      out += prefix + o.name + line;
+    }
+  return out;
 }
 
 std::vector<glm::dvec3> blend_pass_values(const VertexPassMesh& pass, const std::vector<glm::dvec3>& pass_values) {

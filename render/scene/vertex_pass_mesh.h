@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -71,7 +72,12 @@ inline const VertexPassMesh& pass_of(const TriangleMesh& mesh) {
 // scene's cameras (its camera, its close-up) have of the object: an edge subtends at most
 // kPassEdgeDegrees there. WEFT_PASS_MESH=whole in the environment: none (every vertex), to compare.
 inline constexpr double kPassEdgeDegrees = 3.0;
-void set_pass_meshes(Scene& scene);
+// Returns pass_mesh_report(scene, report_prefix).
+std::string set_pass_meshes(Scene& scene, const std::string& report_prefix = "");
+
+// A line per object whose passes shade a subset ("<prefix><object>: per-vertex passes on N of M
+// vertices (…)"), for the bake's and the renderer's logs; empty when none does.
+std::string pass_mesh_report(const Scene& scene, const std::string& prefix);
 
 // Per mesh vertex: the three corners' values blended by the weights (whole: `pass_values` itself),
 // for values given per pass vertex. What the GPU's expansion does; for tests and CPU twins.

@@ -110,7 +110,7 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
   const SceneSelection s = select_for_bundle(in.scene, in.fabrics, in.sgs, o, sg_map);
   in.sgs = s.sgs;
   in.scene = refine_and_order_meshes(std::move(in.scene), s.subdivision);  // the mesh the visibility was baked on
-  set_pass_meshes(in.scene);
+  std::fputs(set_pass_meshes(in.scene, "  ").c_str(), stderr);
   add_scene_sections(writer, in);
   add_selection_sections(writer, s, o);
   char buf[300];
