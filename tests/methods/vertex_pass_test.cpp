@@ -4,7 +4,8 @@
 // none skipped — with a rate per block, and a whole pass after invalidate(); with a program per
 // block, each block drawn by its own. With history, kept values carried along their chords to the
 // frame's time reproduce a value linear in time exactly. Over a subset of a dense mesh's vertices,
-// every mesh vertex's value is its three pass vertices' blend.
+// every mesh vertex's value is its three pass vertices' blend, and with marks only the marked ones
+// are blended anew.
 #include <GLES3/gl31.h>
 #include <gtest/gtest.h>
 
@@ -329,4 +330,33 @@ void main() {
         ASSERT_NEAR(texels[t + c], float(sheet.positions[size_t(i)][c] + b), 1e-4) << "vertex " << i << " block " << b;
       if (kept[size_t(i)]) ASSERT_EQ(texels[t + 3], float(i)) << "pass vertex " << i;
     }
+  // With the view's marks, only the marked mesh vertices are blended anew (here: the first third,
+  // after the pass writes its positions shifted by 10); the others keep their last blend.
+  const GLuint stamp = 7;
+  std::vector<GLuint> stamps(size_t(pass.texels()), 0u);
+  for (int i = 0; i < n / 3; ++i) stamps[size_t(i)] = stamp;
+  GLuint marks = 0;
+  glGenBuffers(1, &marks);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
+  glBufferData(GL_PIXEL_UNPACK_BUFFER, GLsizeiptr(stamps.size() * sizeof(GLuint)), stamps.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  const std::string shifted = std::string("#version 300 es\nprecision highp float;\nprecision highp int;\n") +
+                              std::string(shaders::source("vertex_pass.glsl")) + R"(
+out vec4 o_value;
+void main() {
+  PassTexel t = pass_texel();
+  o_value = t.past ? vec4(0.0) : vec4(texelFetch(u_vertex_position, t.p, 0).xyz + vec3(10.0 + float(t.k)), float(t.i));
+}
+)";
+  gpu::GlProgram again(gpu::fullscreen_triangle_vs(), shifted);
+  pass.set_marks(marks, stamp);
+  pass.run(again, 0, blocks);
+  const std::vector<float> after = pass.read_values();
+  for (int b = 0; b < blocks; ++b)
+    for (int i = 0; i < n; ++i) {
+      const size_t t = (size_t(b) * rows * width + size_t(i)) * 4;
+      const double shift = i < n / 3 ? 10.0 : 0.0;
+      ASSERT_NEAR(after[t], float(sheet.positions[size_t(i)].x + b + shift), 1e-4) << "vertex " << i << " block " << b;
+    }
+  glDeleteBuffers(1, &marks);
 }

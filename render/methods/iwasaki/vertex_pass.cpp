@@ -17,7 +17,7 @@ namespace {
 constexpr int kWidth = kVertexTexelRow;  // the bake orders vertices for this layout
 constexpr int kMaxBlocks = 40;  // MAX_PASS_BLOCKS in vertex_pass.glsl
 constexpr int kMarkUnit = 14;   // the marks' two samplers: above every pass's own units
-constexpr int kBlendUnit = 11;  // the blend's three samplers (their bindings restored after)
+constexpr int kBlendUnit = 11;  // the blend's four samplers, 11–14 (their bindings restored after)
 
 void allocate_marks(const GlTexture& t, int width, int height) {
   std::vector<GLuint> zero(size_t(width) * height, 0u);
@@ -110,7 +110,18 @@ VertexPass::VertexPass(const TriangleMesh& mesh, const VertexPassMesh& pass)
 }
 
 void VertexPass::set_marks(GLuint marks, unsigned stamp) {
-  if (subset_) return;  // every pass vertex: a hidden one may serve a visible mesh vertex
+  if (subset_) {  // every pass vertex (a hidden one may serve a visible mesh vertex); the blend only the shown
+    blend_marked_ = true;
+    blend_stamp_ = stamp;
+    glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
+    glActiveTexture(GL_TEXTURE0 + kMarkUnit);
+    glBindTexture(GL_TEXTURE_2D, marks_[0].id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, mesh_width_, mesh_height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    return;
+  }
   if (!marked_) valid_blocks_ = 0;  // values kept from before were not kept by marks: all visible ones anew
   current_marks_ = 1 - current_marks_;
   previous_stamp_ = stamp_;
@@ -151,9 +162,11 @@ void VertexPass::blend(int blocks) {
   glGetIntegerv(GL_VIEWPORT, viewport);
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  bool whole = !blend_marked_;  // a new target holds nothing to keep: every vertex then
   if (blocks > blended_blocks_) {
     blended_ = std::make_unique<OffscreenTarget>(mesh_width_, mesh_height_ * blocks, /*full_float=*/true);
     blended_blocks_ = blocks;
+    whole = true;
   }
   const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blending = glIsEnabled(GL_BLEND), scissor = glIsEnabled(GL_SCISSOR_TEST);
   blended_->bind();
@@ -162,10 +175,12 @@ void VertexPass::blend(int blocks) {
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
   blend_->use();
-  const GLuint textures[3] = {target_->colour_texture(), blend_corners_.id(), blend_weights_.id()};
-  const char* names[3] = {"u_pass_values", "u_blend_corners", "u_blend_weights"};
-  GLint kept[3] = {0, 0, 0};
-  for (int i = 0; i < 3; ++i) {
+  // The mesh vertices a visible triangle uses (the marks of set_marks), where the view marked them:
+  // the others keep their last blend, which no visible triangle interpolates.
+  const GLuint textures[4] = {target_->colour_texture(), blend_corners_.id(), blend_weights_.id(), marks_[0].id()};
+  const char* names[4] = {"u_pass_values", "u_blend_corners", "u_blend_weights", "u_blend_marks"};
+  GLint kept[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) {
     glActiveTexture(GL_TEXTURE0 + kBlendUnit + i);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &kept[i]);
     glBindTexture(GL_TEXTURE_2D, textures[i]);
@@ -176,8 +191,10 @@ void VertexPass::blend(int blocks) {
   glUniform1i(blend_->uniform("u_mesh_width"), mesh_width_);
   glUniform1i(blend_->uniform("u_mesh_rows"), mesh_height_);
   glUniform1i(blend_->uniform("u_mesh_count"), mesh_count_);
+  glUniform1i(blend_->uniform("u_blend_cull"), whole ? 0 : 1);
+  glUniform1ui(blend_->uniform("u_blend_stamp"), blend_stamp_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     glActiveTexture(GL_TEXTURE0 + kBlendUnit + i);
     glBindTexture(GL_TEXTURE_2D, GLuint(kept[i]));
   }

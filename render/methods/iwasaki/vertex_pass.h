@@ -24,8 +24,9 @@ public:
   // Over a subset of the mesh's vertices (scene/vertex_pass_mesh.h; whole: every vertex): the
   // programs shade the pass vertices, and after each run every mesh vertex's value is blended
   // from its three (vertex_pass_blend.frag) into the layout above, which is what the draws read.
-  // Such a pass keeps no history and culls no vertex (a hidden pass vertex may serve a visible
-  // mesh vertex): set_history and set_marks are then ignored.
+  // Such a pass keeps no history and shades every pass vertex (a hidden one may serve a visible
+  // mesh vertex): set_history is ignored, and set_marks limits only the blend to the mesh vertices
+  // the view shows.
   VertexPass(const TriangleMesh& mesh, const VertexPassMesh& pass);
   // Draws `program` (in use; built on fullscreen_triangle_vs()) over `blocks` blocks of the vertex
   // texels with the inputs on units first_unit .. first_unit + 2 (u_vertex_position,
@@ -72,6 +73,7 @@ public:
   void clear_marks() {
     if (marked_) valid_blocks_ = 0;
     marked_ = false;
+    blend_marked_ = false;
   }
   // The results for the mesh's draw: u_vertex_radiance on `unit`, u_vertex_width, u_vertex_rows.
   void bind_result(const GlProgram& program, int unit) const;
@@ -93,6 +95,8 @@ private:
   GlTexture blend_corners_, blend_weights_;  // per mesh vertex, where subset_
   std::unique_ptr<OffscreenTarget> blended_;
   int blended_blocks_ = 0;
+  bool blend_marked_ = false;  // set_marks on a subset: the blend only for the marked mesh vertices
+  unsigned blend_stamp_ = 0;
   std::unique_ptr<GlProgram> blend_;
   const OffscreenTarget* results() const { return subset_ ? blended_.get() : target_.get(); }
   void blend(int blocks);  // the mesh vertices' values from the pass's, every block

@@ -10,6 +10,9 @@ uniform int u_pass_rows;
 uniform int u_mesh_width;
 uniform int u_mesh_rows;
 uniform int u_mesh_count;
+uniform bool u_blend_cull;               // only the marked mesh vertices (VertexPass::set_marks)
+uniform highp usampler2D u_blend_marks;  // per mesh vertex: the stamp of the view that shows it
+uniform uint u_blend_stamp;
 out vec4 o_value;
 vec4 pass_value(int n, int k) { return texelFetch(u_pass_values, ivec2(n % u_pass_width, n / u_pass_width + k * u_pass_rows), 0); }
 void main() {
@@ -20,6 +23,7 @@ void main() {
     o_value = vec4(0.0);
     return;
   }
+  if (u_blend_cull && texelFetch(u_blend_marks, q, 0).r != u_blend_stamp) discard;  // keeps its last blend
   ivec3 c = ivec3(texelFetch(u_blend_corners, q, 0).xyz + 0.5);
   vec3 w = texelFetch(u_blend_weights, q, 0).xyz;
   o_value = w.x * pass_value(c.x, k) + w.y * pass_value(c.y, k) + w.z * pass_value(c.z, k);
