@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include <meshoptimizer.h>
 
@@ -173,20 +174,18 @@ VertexPassMesh blend_map(const TriangleMesh& mesh, const PassTriangles& p) {
           best = score;
           best_w = w;
           best_t = tri;
+          gap[v] = glm::length(x - q);
+          normal_err[v] = angle_deg(nb, mesh.normals[v]);
+          warp_err[v] = angle_deg(ub, mesh.warps[v]);
         }
       }
     }
     if (!std::isfinite(best)) throw std::runtime_error("vertex pass mesh: a vertex with no pass triangle near it");
     out.corners[v] = {pass_index[best_t[0]], pass_index[best_t[1]], pass_index[best_t[2]]};
     out.weights[v] = glm::vec3(best_w);
-    gap[v] = glm::length(x - (best_w.x * mesh.positions[best_t[0]] + best_w.y * mesh.positions[best_t[1]] +
-                              best_w.z * mesh.positions[best_t[2]]));
-    const glm::dvec3 nb = best_w.x * mesh.normals[best_t[0]] + best_w.y * mesh.normals[best_t[1]] + best_w.z * mesh.normals[best_t[2]];
-    const glm::dvec3 ub = best_w.x * mesh.warps[best_t[0]] + best_w.y * mesh.warps[best_t[1]] + best_w.z * mesh.warps[best_t[2]];
-    normal_err[v] = angle_deg(nb, mesh.normals[v]);
-    warp_err[v] = angle_deg(ub, mesh.warps[v]);
   }
   out.normal_p95_deg = percentile(normal_err, 0.95);
+  out.normal_p99_deg = percentile(normal_err, 0.99);
   out.normal_max_deg = n ? *std::max_element(normal_err.begin(), normal_err.end()) : 0.0;
   out.warp_p95_deg = percentile(warp_err, 0.95);
   out.warp_max_deg = n ? *std::max_element(warp_err.begin(), warp_err.end()) : 0.0;
@@ -194,10 +193,22 @@ VertexPassMesh blend_map(const TriangleMesh& mesh, const PassTriangles& p) {
   return out;
 }
 
-// Within the budget: the angles, 95 % of the edges within 1.5 times the bound, and every vertex within a quarter of the pass's long (95th percentile)
-// edge of its blend point (no part of the surface left to a far triangle's corners).
-bool within(const VertexPassMesh& m, const VertexPassMeshOptions& o, double normal_p99) {
-  return m.edge_p95 <= 1.5 * o.max_edge && m.gap_max <= 0.25 * m.edge_p95 && m.normal_p95_deg <= o.normal_p95_deg && m.warp_p95_deg <= o.warp_p95_deg && normal_p99 <= o.normal_p99_deg;
+// Within the budget: the angles, 95 % of the edges within 1.5 times the bound, and every vertex
+// within a quarter of the pass's long (95th percentile) edge of its blend point (no part of the
+// surface left to a far triangle's corners).
+bool within(const VertexPassMesh& m, const VertexPassMeshOptions& o) {
+  return m.edge_p95 <= 1.5 * o.max_edge && m.gap_max <= 0.25 * m.edge_p95 && m.normal_p95_deg <= o.normal_p95_deg &&
+         m.warp_p95_deg <= o.warp_p95_deg && m.normal_p99_deg <= o.normal_p99_deg;
+}
+
+// The mesh's bounding box (lo, hi); the mesh has a vertex.
+std::pair<glm::dvec3, glm::dvec3> bounds(const TriangleMesh& mesh) {
+  glm::dvec3 lo = mesh.positions[0], hi = lo;
+  for (const auto& q : mesh.positions) {
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  return {lo, hi};
 }
 
 }  // namespace
@@ -209,11 +220,7 @@ VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOp
   if (mesh.normals.size() != n || mesh.warps.size() != n)
     throw std::invalid_argument("vertex pass mesh: the mesh needs a normal and a warp per vertex");
   // The simplifier's error is relative to the mesh's extent: its bounding box's largest side.
-  glm::dvec3 lo = mesh.positions[0], hi = lo;
-  for (const auto& q : mesh.positions) {
-    lo = glm::min(lo, q);
-    hi = glm::max(hi, q);
-  }
+  const auto [lo, hi] = bounds(mesh);
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   VertexPassMesh chosen;
   // Each step doubles the simplifier's error (relative to the mesh's extent): 0.0125 % … 6.4 %.
@@ -223,16 +230,7 @@ VertexPassMesh vertex_pass_mesh(const TriangleMesh& mesh, const VertexPassMeshOp
     if (!chosen.whole() && p.vertices == chosen.vertices) continue;  // this step removed nothing more
     VertexPassMesh m = blend_map(mesh, p);
     m.simplifier_error = error;
-    // The 99th percentile of the normals' angles, from the blend (not kept in the result).
-    std::vector<double> errs(n);
-    for (size_t v = 0; v < n; ++v) {
-      const auto& c = m.corners[v];
-      const glm::vec3 w = m.weights[v];
-      const glm::dvec3 nb = double(w.x) * mesh.normals[m.vertices[c[0]]] + double(w.y) * mesh.normals[m.vertices[c[1]]] +
-                            double(w.z) * mesh.normals[m.vertices[c[2]]];
-      errs[v] = angle_deg(nb, mesh.normals[v]);
-    }
-    if (!within(m, options, percentile(errs, 0.99))) break;  // coarser steps only lose more
+    if (!within(m, options)) break;  // coarser steps only lose more
     chosen = std::move(m);
   }
   return chosen;
@@ -243,11 +241,7 @@ std::string set_pass_meshes(Scene& scene, const std::string& report_prefix) {
   if (every && std::string(every) == "whole") return "";  // every vertex: for comparing
   for (auto& o : scene.objects) {
     if (!o.is_cloth() || o.mesh.positions.empty()) continue;
-    glm::dvec3 lo = o.mesh.positions[0], hi = lo;
-    for (const auto& p : o.mesh.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
+    const auto [lo, hi] = bounds(o.mesh);
     double nearest = std::numeric_limits<double>::infinity();
     auto view_from = [&](const glm::dvec3& eye) { nearest = std::min(nearest, glm::length(eye - glm::clamp(eye, lo, hi))); };
     view_from(scene.camera.position);

@@ -39,7 +39,7 @@ struct VertexPassMesh {
   std::vector<glm::vec3> weights;
   bool whole() const { return vertices.empty(); }
   // Measured on the mesh's vertices: blended against own, degrees (95th percentile, largest).
-  double normal_p95_deg = 0, normal_max_deg = 0, warp_p95_deg = 0, warp_max_deg = 0;
+  double normal_p95_deg = 0, normal_p99_deg = 0, normal_max_deg = 0, warp_p95_deg = 0, warp_max_deg = 0;
   double edge_p95 = 0, edge_median = 0;  // the pass triangles' edges, metres
   double gap_max = 0;         // the farthest a mesh vertex lies from its blend point, metres
   float simplifier_error = 0;  // the ladder's step taken (relative to the mesh's extent)

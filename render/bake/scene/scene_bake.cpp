@@ -98,11 +98,11 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
     // Occluded cloth also gets a bit mask (iwasaki_vertex_mask's exact V_k per vertex and SG).
     if (opt.mask_resolution > 0 && scene.objects[i].is_cloth() && out.visibility.count(i))
       if (auto m = bake_visibility_mask(scene, i, opt.mask_resolution)) {
+        const VertexPassMesh& pass = pass_of(scene.objects[i].mesh);  // a subset's rows are stored at its vertices
+        const size_t stored = pass.whole() ? m->vertex_count() : pass.vertices.size();
         if (!opt.quiet)
           std::fprintf(stderr, "  %s: visibility mask %d² per vertex, %.2f MB stored\n", scene.objects[i].name.c_str(),
-                       opt.mask_resolution,  // at the pass vertices only where the passes shade a subset
-                       8e-6 * double(m->blocks()) * double(pass_of(scene.objects[i].mesh).whole() ? m->vertex_count()
-                                                                                       : pass_of(scene.objects[i].mesh).vertices.size()));
+                       opt.mask_resolution, 8e-6 * double(m->blocks()) * double(stored));
         out.masks.emplace(i, std::move(*m));
       }
   }

@@ -7,7 +7,7 @@
 
 #include "bake/visibility/visibility_sdf.h"
 #include "reference/ray_scene.h"
-#include "scene/vertex_pass_mesh.h"
+#include "scene/vertex_pass_rows.h"
 
 namespace weft {
 
@@ -62,19 +62,9 @@ std::optional<ObjectVisibility> bake_object_visibility(const Scene& scene, size_
     o.basis.resize(size_t(o.terms) * cells);
     for (int t = 0; t < o.terms; ++t)
       for (int k = 0; k < cells; ++k) o.basis[size_t(t) * cells + k] = pca.basis(k, t);
-    o.coefficients.resize(vertices * o.terms);
-    for (size_t v = 0; v < vertices; ++v)
-      for (int t = 0; t < o.terms; ++t) {
-        if (pass.whole()) {
-          o.coefficients[v * o.terms + t] = pca.coefficients(t, Eigen::Index(v));
-          continue;
-        }
-        const auto& c = pass.corners[v];
-        const glm::vec3 w = pass.weights[v];
-        o.coefficients[v * o.terms + t] = w.x * pca.coefficients(t, Eigen::Index(c[0])) +
-                                          w.y * pca.coefficients(t, Eigen::Index(c[1])) +
-                                          w.z * pca.coefficients(t, Eigen::Index(c[2]));
-      }
+    // A column of coefficients per cast vertex (column-major: the rows, one after the other).
+    o.coefficients.assign(pca.coefficients.data(), pca.coefficients.data() + cast_vertices * o.terms);
+    if (!pass.whole()) o.coefficients = blended_rows(pass, o.coefficients, size_t(o.terms));
     o.rms_error = pca.rms_error;
     o.max_error = pca.max_error;
     out = std::move(o);

@@ -1,12 +1,11 @@
 #include "bake/visibility/visibility_mask_bake.h"
 
-#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
 #include "core/microcylinder.h"
 #include "reference/ray_scene.h"
-#include "scene/vertex_pass_mesh.h"
+#include "scene/vertex_pass_rows.h"
 
 namespace weft {
 
@@ -19,7 +18,6 @@ std::optional<VisibilityMask> bake_visibility_mask(const Scene& scene, size_t ob
   VisibilityMask m;
   m.resolution = resolution;
   const size_t vertices = mesh.positions.size();
-  m.words.assign(vertices * size_t(m.blocks()), 0);
   std::vector<glm::dvec3> local(size_t(resolution) * resolution);
   for (int y = 0; y < resolution; ++y)
     for (int x = 0; x < resolution; ++x) local[size_t(y) * resolution + x] = hemisphere_cell_direction(resolution, x, y);
@@ -28,6 +26,7 @@ std::optional<VisibilityMask> bake_visibility_mask(const Scene& scene, size_t ob
   // cast; each other vertex takes the mask of its heaviest corner (bits do not blend).
   const VertexPassMesh& pass = pass_of(mesh);
   const size_t cast_vertices = pass.whole() ? vertices : pass.vertices.size();
+  m.words.assign(cast_vertices * size_t(m.blocks()), 0);  // a row per cast vertex
 #pragma omp parallel for schedule(dynamic, 16)
   for (long k = 0; k < long(cast_vertices); ++k) {
     const long v = pass.whole() ? k : long(pass.vertices[size_t(k)]);
@@ -37,24 +36,13 @@ std::optional<VisibilityMask> bake_visibility_mask(const Scene& scene, size_t ob
     for (int y = 0; y < resolution; ++y)
       for (int x = 0; x < resolution; ++x) {
         const glm::dvec3 l = local[size_t(y) * resolution + x];
-        if (rays.unoccluded(origin, l.x * f.u + l.y * f.v + l.z * f.n)) m.set_open(size_t(v), x, y);
+        if (rays.unoccluded(origin, l.x * f.u + l.y * f.v + l.z * f.n)) m.set_open(size_t(k), x, y);
         else ++b;
       }
     blocked += b;
   }
   if (blocked == 0) return std::nullopt;
-  if (!pass.whole()) {
-    std::vector<bool> cast(vertices, false);
-    for (uint32_t v : pass.vertices) cast[v] = true;
-    const size_t words = size_t(m.blocks());
-    for (size_t v = 0; v < vertices; ++v) {
-      if (cast[v]) continue;
-      const glm::vec3 w = pass.weights[v];
-      const int heaviest = w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2);
-      const size_t from = pass.vertices[pass.corners[v][size_t(heaviest)]];
-      std::copy_n(m.words.begin() + std::ptrdiff_t(from * words), words, m.words.begin() + std::ptrdiff_t(v * words));
-    }
-  }
+  if (!pass.whole()) m.words = heaviest_corner_rows(pass, m.words, size_t(m.blocks()));
   return m;
 }
 

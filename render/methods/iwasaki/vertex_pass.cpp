@@ -44,6 +44,38 @@ void range_rectangles(int begin, int end, int width, Rect rect) {
   }
 }
 
+// The caller's framebuffer, viewport and the tests a pass turns off (depth, blending, scissor),
+// taken when a pass starts (before a new target binds its own) and given back when it ends.
+class CallerState {
+public:
+  CallerState() {
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_);
+  }
+  CallerState(const CallerState&) = delete;
+  ~CallerState() {
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    for (int i = 0; i < 3; ++i) (tests_[i] ? glEnable : glDisable)(kTests[i]);
+  }
+
+private:
+  static constexpr GLenum kTests[3] = {GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST};
+  GLint framebuffer_ = 0, viewport_[4] = {0, 0, 0, 0};
+  const GLboolean tests_[3] = {glIsEnabled(kTests[0]), glIsEnabled(kTests[1]), glIsEnabled(kTests[2])};
+};
+
+// Marks (a uint per mesh vertex in the buffer `marks`, written by shaders) into the texture `t`.
+void upload_marks(const GlTexture& t, GLuint marks, int width, int height) {
+  glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
+  glActiveTexture(GL_TEXTURE0 + kMarkUnit);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+}
+
 // Per texel: values[i] in .xyz, fourth[i] in .w where given.
 void upload(const GlTexture& t, const std::vector<glm::dvec3>& values, int width, int height,
             const std::vector<float>& fourth = {}) {
@@ -113,13 +145,7 @@ void VertexPass::set_marks(GLuint marks, unsigned stamp) {
   if (subset_) {  // every pass vertex (a hidden one may serve a visible mesh vertex); the blend only the shown
     blend_marked_ = true;
     blend_stamp_ = stamp;
-    glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
-    glActiveTexture(GL_TEXTURE0 + kMarkUnit);
-    glBindTexture(GL_TEXTURE_2D, marks_[0].id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, mesh_width_, mesh_height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    upload_marks(marks_[0], marks, mesh_width_, mesh_height_);
     return;
   }
   if (!marked_) valid_blocks_ = 0;  // values kept from before were not kept by marks: all visible ones anew
@@ -127,13 +153,7 @@ void VertexPass::set_marks(GLuint marks, unsigned stamp) {
   previous_stamp_ = stamp_;
   stamp_ = stamp;
   marked_ = true;
-  glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);  // the marks were written by shaders
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, marks);
-  glActiveTexture(GL_TEXTURE0 + kMarkUnit);
-  glBindTexture(GL_TEXTURE_2D, marks_[current_marks_].id());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, mesh_width_, mesh_height_, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  upload_marks(marks_[current_marks_], marks, mesh_width_, mesh_height_);
 }
 
 void VertexPass::run(const GlProgram& program, int first_unit, int blocks) {
@@ -157,9 +177,8 @@ void VertexPass::run_shares(std::span<const GlProgram* const> block_programs, in
 
 void VertexPass::blend(int blocks) {
   const StageScope stage(Stage::vertex_pass);
-  GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0}, program = 0, active = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
+  const CallerState caller;
+  GLint program = 0, active = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
   bool whole = !blend_marked_;  // a new target holds nothing to keep: every vertex then
@@ -168,7 +187,6 @@ void VertexPass::blend(int blocks) {
     blended_blocks_ = blocks;
     whole = true;
   }
-  const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blending = glIsEnabled(GL_BLEND), scissor = glIsEnabled(GL_SCISSOR_TEST);
   blended_->bind();
   glViewport(0, 0, mesh_width_, mesh_height_ * blocks);
   glDisable(GL_DEPTH_TEST);
@@ -200,11 +218,6 @@ void VertexPass::blend(int blocks) {
   }
   glActiveTexture(GLenum(active));
   glUseProgram(GLuint(program));
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  if (depth) glEnable(GL_DEPTH_TEST);
-  if (blending) glEnable(GL_BLEND);
-  if (scissor) glEnable(GL_SCISSOR_TEST);
 }
 
 void VertexPass::run_blocks(std::span<const GlProgram* const> block_programs, int first_unit, std::span<const int> block_shares) {
@@ -319,10 +332,7 @@ void VertexPass::bind_history(const GlProgram& program, int unit) const {
 void VertexPass::draw_blocks(std::span<const GlProgram* const> programs, int first_unit,
                              const std::vector<std::pair<int, int>>& ranges) {
   const StageScope stage(Stage::vertex_pass);
-  // Saved before a larger target is made: making one binds its framebuffer.
-  GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
+  const CallerState caller;  // before a larger target is made: making one binds its framebuffer
   const int blocks = int(ranges.size());
   bool whole = std::all_of(ranges.begin(), ranges.end(), [&](const auto& r) { return r.first == 0 && r.second >= count_; });
   if (blocks > target_blocks_) {  // the target grows to the most blocks asked for
@@ -337,13 +347,11 @@ void VertexPass::draw_blocks(std::span<const GlProgram* const> programs, int fir
     valid_blocks_ = 0;
     whole = true;  // a new target holds nothing to keep
   }
-  const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
   if (blocks > kMaxBlocks) throw GpuError("per-vertex pass: at most " + std::to_string(kMaxBlocks) + " blocks");
   target_->bind();
   glViewport(0, 0, width_, height_ * blocks);  // the blocks asked for; a larger target's others go unread
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
   std::vector<const GlProgram*> done;
   for (const GlProgram* program : programs) {
     if (std::find(done.begin(), done.end(), program) != done.end()) continue;
@@ -352,11 +360,6 @@ void VertexPass::draw_blocks(std::span<const GlProgram* const> programs, int fir
     for (int b = 0; b < blocks; ++b) mine[size_t(b)] = programs[size_t(b)] == program;
     draw_program_blocks(*program, first_unit, ranges, mine, whole);
   }
-  if (scissor) glEnable(GL_SCISSOR_TEST); else glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  if (depth) glEnable(GL_DEPTH_TEST);
-  if (blend) glEnable(GL_BLEND);
 }
 
 void VertexPass::draw_program_blocks(const GlProgram& program, int first_unit, const std::vector<std::pair<int, int>>& ranges,
