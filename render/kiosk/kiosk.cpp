@@ -52,12 +52,16 @@ Kiosk::~Kiosk() = default;
 
 int Kiosk::run(const std::atomic<bool>& stop) {
   boot_ = Clock::now();
+  Clock::time_point stage = boot_;
   check_config();
   watch_bundle();
   load_bundle();
+  boot_stage("bundle", stage);
   if (!open_display()) return 1;
+  boot_stage("display", stage);
   start_knobs();
   start_renderer();
+  boot_stage("renderer", stage);
   start_probe();
   show_first_frame();
   knobs_->listen();
@@ -179,24 +183,35 @@ void Kiosk::start_probe() {
   lighting_ = std::make_unique<KioskLighting>();
 }
 
+void Kiosk::boot_stage(const char* name, Clock::time_point& since) {
+  const Clock::time_point now = Clock::now();
+  const long ms = std::lround(std::chrono::duration<double, std::milli>(now - since).count());
+  boot_stages_ += (boot_stages_.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(ms);
+  since = now;
+}
+
 void Kiosk::show_first_frame() {
+  Clock::time_point stage = Clock::now();
   // The exposure is metered first on the bundle as baked (its own fabrics under its own light,
   // a quarter-size frame), so that a knob state restored at boot shows the picture it showed
   // when the knobs were turned (knob edits never re-meter).
   renderer_->set_lighting(scene_->sgs);
+  boot_stage("lighting", stage);
   meter_as_baked();
+  boot_stage("metering", stage);
   poll_knobs();
   idle_.touched(Clock::now());  // a look restored at boot goes home after the idle time too
   if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
   zoom_shown_ = zoom_drawn_ = zoom_target_;  // a kiosk started zoomed in (--zoom) shows it at once
   draw_frame(0);
+  boot_stage("frame", stage);
   drawn_ = 1;
   first_frame_shown_ = true;
   const double boot_ms = std::chrono::duration<double, std::milli>(Clock::now() - boot_).count();
   const std::string where = display_->description();
-  char line[256];
-  std::snprintf(line, sizeof line, "first frame after %.0f ms (%dx%d, %s, %s)", boot_ms, width_, height_, where.c_str(),
-                method_->name.c_str());
+  char line[512];
+  std::snprintf(line, sizeof line, "first frame after %.0f ms (%dx%d, %s, %s; ms: %s)", boot_ms, width_, height_,
+                where.c_str(), method_->name.c_str(), boot_stages_.c_str());
   kiosk_log_info(line);
   notifier_.ready(std::string("showing '") + scene_->scene.name + "'" +
                   (shown_.is_last_good ? " from the LAST GOOD bundle" : "") + " on " + where);

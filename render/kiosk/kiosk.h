@@ -139,6 +139,8 @@ private:
   KioskConfig config_;
   ServiceNotifier notifier_;
   Clock::time_point boot_;
+  std::string boot_stages_;  // "bundle 120, display 30, ..." ms: where the first frame's wait went
+  void boot_stage(const char* name, Clock::time_point& since);
   bool state_dir_ok_ = true;
 
   // The bundle shown.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "methods/parallel_for.h"
+#include "scene/vertex_pass_rows.h"
 
 namespace weft {
 
@@ -45,7 +46,11 @@ BroadLobeBits BroadLobeBits::compute(const VisibilityMask& mask, const TriangleM
     cells.emplace_back(slots[k], std::move(dirs));
   }
   const int n = mask.resolution;
-  parallel_for(out.vertices, [&](size_t v) {
+  // On a dense mesh only the pass vertices (scene/vertex_pass_mesh.h) are looked up; the others
+  // take their heaviest corner's bits, as the bundle's mask rows there are.
+  const VertexPassMesh& pass = pass_of(mesh);
+  parallel_for(pass.vertices.empty() ? out.vertices : pass.vertices.size(), [&](size_t k) {
+    const size_t v = pass.vertices.empty() ? k : pass.vertices[k];
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     std::uint32_t* words = &out.words[v * kBroadLobeWordsPerVertex];
     for (const auto& [slot, dirs] : cells)
@@ -57,6 +62,7 @@ BroadLobeBits BroadLobeBits::compute(const VisibilityMask& mask, const TriangleM
           words[slot * kBroadLobeWordsPerSg + int(c) / 32] &= ~(std::uint32_t(1) << (c % 32));
       }
   });
+  spread_from_pass_vertices(pass, out.words, kBroadLobeWordsPerVertex, false);
   return out;
 }
 

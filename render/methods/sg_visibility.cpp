@@ -7,6 +7,7 @@
 #include <string>
 
 #include "methods/parallel_for.h"
+#include "scene/vertex_pass_rows.h"
 
 namespace weft {
 
@@ -37,7 +38,11 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
   std::vector<float> by_cell(size_t(cells) * o.terms);
   for (int t = 0; t < o.terms; ++t)
     for (int k = 0; k < cells; ++k) by_cell[size_t(k) * o.terms + t] = o.basis[size_t(t) * cells + k];
-  parallel_for(out.vertices, [&](size_t v) {
+  // On a dense mesh only the pass vertices (scene/vertex_pass_mesh.h) are reconstructed; the
+  // others take their corners' blend, as the pass's shading is blended (header).
+  const VertexPassMesh& pass = pass_of(mesh);
+  parallel_for(pass.vertices.empty() ? out.vertices : pass.vertices.size(), [&](size_t pk) {
+    const size_t v = pass.vertices.empty() ? pk : pass.vertices[pk];
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     const float* c = &o.coefficients[v * o.terms];
     // d at one node, from the PCA (clamped into the grid).
@@ -75,13 +80,16 @@ SgVisibility SgVisibility::compute(const ObjectVisibility& o, const TriangleMesh
       p[0] = float(g.x), p[1] = float(g.y), p[2] = float(g.z);
     }
   });
+  spread_from_pass_vertices(pass, out.values, sgs.size() * 3, true);
   return out;
 }
 
 SgVisibility SgVisibility::from_mask(const VisibilityMask& mask, const TriangleMesh& mesh, const SgLighting& sgs) {
   SgVisibility out = sized_for("visibility mask", mask.vertex_count(), mesh, sgs);
   const MaskDirections directions(mask.resolution);
-  parallel_for(out.vertices, [&](size_t v) {
+  const VertexPassMesh& pass = pass_of(mesh);
+  parallel_for(pass.vertices.empty() ? out.vertices : pass.vertices.size(), [&](size_t pk) {
+    const size_t v = pass.vertices.empty() ? pk : pass.vertices[pk];
     const SurfaceFrame f = SurfaceFrame::from_normal_warp(mesh.normals[v], mesh.warps[v]);
     for (size_t k = 0; k < sgs.size(); ++k) {
       const dvec3 a = glm::normalize(sgs[k].axis);
@@ -89,6 +97,7 @@ SgVisibility SgVisibility::from_mask(const VisibilityMask& mask, const TriangleM
           float(directions.sg_open_share(mask, v, dvec3(glm::dot(a, f.u), glm::dot(a, f.v), glm::dot(a, f.n)), sgs[k].sharpness));
     }
   });
+  spread_from_pass_vertices(pass, out.values, sgs.size() * 3, true);
   return out;
 }
 

@@ -16,7 +16,9 @@
 namespace weft {
 
 // Every vertex of an object and every SG of a lighting: the SDF d and its gradient at the SG
-// axis (step 1 of methods/iwasaki/iwasaki_visibility.h), or the mask's open share.
+// axis (step 1 of methods/iwasaki/iwasaki_visibility.h), or the mask's open share. On a mesh
+// with a pass subset (scene/vertex_pass_mesh.h) these are looked up at the pass vertices and
+// blended from them elsewhere (the mask's bits: the heaviest corner's), as the shading is.
 struct SgVisibility {
   size_t vertices = 0;
   int sgs = 0;

@@ -44,4 +44,27 @@ std::vector<T> heaviest_corner_rows(const VertexPassMesh& pass, const std::vecto
   return out;
 }
 
+// Rows computed at the pass vertices alone, in place among every mesh vertex's (row v: mesh vertex
+// v): each other vertex takes its corners' blend (`blend`: values that interpolate) or its
+// heaviest corner's row (bits). What a lighting change does on a dense mesh: its per-vertex
+// work at the pass vertices, the rest spread as the pass's values are.
+template <class T>
+void spread_from_pass_vertices(const VertexPassMesh& pass, std::vector<T>& rows, size_t width, bool blend) {
+  if (pass.vertices.empty()) return;
+  std::vector<bool> cast(pass.corners.size(), false);
+  for (uint32_t v : pass.vertices) cast[v] = true;
+  for (size_t v = 0; v < pass.corners.size(); ++v) {
+    if (cast[v]) continue;
+    const auto& c = pass.corners[v];
+    const glm::vec3 w = pass.weights[v];
+    const size_t a = pass.vertices[c[0]] * width, b = pass.vertices[c[1]] * width, d = pass.vertices[c[2]] * width;
+    if (blend) {
+      for (size_t i = 0; i < width; ++i) rows[v * width + i] = T(w.x * rows[a + i] + w.y * rows[b + i] + w.z * rows[d + i]);
+    } else {
+      const size_t from = w.x >= w.y && w.x >= w.z ? a : (w.y >= w.z ? b : d);
+      std::copy_n(rows.begin() + std::ptrdiff_t(from), width, rows.begin() + std::ptrdiff_t(v * width));
+    }
+  }
+}
+
 }  // namespace weft

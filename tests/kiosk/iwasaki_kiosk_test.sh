@@ -12,7 +12,7 @@ grep -q "PCA" "$dir/bake.log" || { cat "$dir/bake.log"; echo "no visibility bake
 grep -q "bundle .* MB" "$dir/bake.log" || { cat "$dir/bake.log"; exit 1; }
 "$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
   --width 48 --height 36 --screenshot "$dir/shot.png" 2> "$dir/run.log"
-grep -q "first frame after .* iwasaki_vertex_quadrature)" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki_vertex_quadrature"; exit 1; }
+grep -q "first frame after .* iwasaki_vertex_quadrature;" "$dir/run.log" || { cat "$dir/run.log"; echo "weft run did not use iwasaki_vertex_quadrature"; exit 1; }
 test -s "$dir/shot.png"
 grep -q "visibility mask" "$dir/bake.log" || { cat "$dir/bake.log"; echo "the default bake wrote no visibility mask"; exit 1; }
 "$weft" bake --scene pillow --fabric linen_plain --table-grid 8 --tangent-samples 1 1 --sdf-resolution 8 --no-masks --out "$dir/n.weft" 2> "$dir/bake_n.log"
@@ -20,10 +20,10 @@ grep -q "visibility mask" "$dir/bake.log" || { cat "$dir/bake.log"; echo "the de
 [ "$(stat -c %s "$dir/n.weft")" -lt "$(stat -c %s "$dir/p.weft")" ] || { echo "--no-masks: the bundle is not smaller"; exit 1; }
 "$weft" run --bundle "$dir/n.weft" --state-dir "$dir/state_n" --display headless --panel none --frames 2 --turntable 0 \
   --width 48 --height 36 2> "$dir/run_n.log"
-grep -q "first frame after .* iwasaki_vertex)" "$dir/run_n.log" || { cat "$dir/run_n.log"; echo "weft run on a --no-masks bundle did not use iwasaki_vertex"; exit 1; }
+grep -q "first frame after .* iwasaki_vertex;" "$dir/run_n.log" || { cat "$dir/run_n.log"; echo "weft run on a --no-masks bundle did not use iwasaki_vertex"; exit 1; }
 "$weft" run --bundle "$dir/p.weft" --state-dir "$dir/state" --display headless --panel none --frames 2 --turntable 0 \
   --width 48 --height 36 --method iwasaki 2> "$dir/run_pixel.log"
-grep -q "first frame after .* iwasaki)" "$dir/run_pixel.log" || { cat "$dir/run_pixel.log"; echo "weft run --method iwasaki did not use it"; exit 1; }
+grep -q "first frame after .* iwasaki;" "$dir/run_pixel.log" || { cat "$dir/run_pixel.log"; echo "weft run --method iwasaki did not use it"; exit 1; }
 "$weft" render --method iwasaki --bundle "$dir/p.weft" --width 48 --height 36 --frames 1 --out "$dir/f.exr" > "$dir/render.json"
 grep -q '"method":"iwasaki"' "$dir/render.json"
 test -s "$dir/f.exr"
@@ -36,7 +36,7 @@ chosen=$(sed -n 's/.*; rung \(iwasaki_vertex[a-z_]*_quadrature\) (.*/\1/p' "$dir
 grep -q "iwasaki_vertex_mask_quadrature: error 0\." "$dir/bake_c.log" || { cat "$dir/bake_c.log"; echo "--choose-rung did not measure the masks' rung"; exit 1; }
 "$weft" run --bundle "$dir/c.weft" --state-dir "$dir/state_c" --display headless --panel none --frames 2 --turntable 0 \
   --width 48 --height 36 2> "$dir/run_c.log"
-grep -q "first frame after .* $chosen)" "$dir/run_c.log" || { cat "$dir/run_c.log"; echo "weft run did not draw the chosen $chosen"; exit 1; }
+grep -q "first frame after .* $chosen;" "$dir/run_c.log" || { cat "$dir/run_c.log"; echo "weft run did not draw the chosen $chosen"; exit 1; }
 "$weft" bake --scene swatch --table-grid 8 --tangent-samples 1 1 --choose-rung --choose-width 24 --choose-height 18 --reference-cache "$dir/refs" \
   --out "$dir/sw.weft" 2> "$dir/bake_sw.log"
 grep -q "no occluded cloth: no rung to choose" "$dir/bake_sw.log" || { cat "$dir/bake_sw.log"; exit 1; }

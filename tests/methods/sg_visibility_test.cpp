@@ -11,6 +11,7 @@
 #include "bake/visibility/visibility_sdf.h"
 #include "methods/iwasaki/iwasaki_visibility.h"
 #include "scene/scene_file.h"
+#include "scene/vertex_pass_mesh.h"
 
 using namespace weft;
 
@@ -64,6 +65,51 @@ TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
   }
   EXPECT_LT(worst, 1e-5);  // float storage
   EXPECT_GT(spread, 0.1);  // the lookups saw real distances, not a flat grid
+}
+
+// A mesh with a pass subset is looked up at its pass vertices alone: there the values are those of
+// the whole mesh's lookup, and every other vertex holds its corners' blend of them — the same blend
+// the pass's shading gets, so the per-pixel rungs read what the per-vertex ones shade.
+TEST(SgVisibility, OnAPassSubsetLooksUpPassVerticesAndBlendsTheRest) {
+  const Scene scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
+  size_t cloth = 0;
+  for (size_t i = 0; i < scene.objects.size(); ++i)
+    if (scene.objects[i].material == Material::cloth) cloth = i;
+  SceneVisibilityOptions vo;
+  vo.resolution = 16;
+  const auto vis = bake_object_visibility(scene, cloth, vo);
+  ASSERT_TRUE(vis.has_value());
+  TriangleMesh mesh = scene.objects[cloth].mesh;
+  VertexPassMeshOptions po;
+  po.keep_all_below = 0;  // the pillow is under the size at which a mesh keeps every vertex
+  auto pass = std::make_shared<VertexPassMesh>(vertex_pass_mesh(mesh, po));
+  ASSERT_FALSE(pass->whole());
+  ASSERT_LT(pass->vertices.size(), mesh.positions.size() / 2);  // the pillow's sheets coarsen far
+  SgLighting sgs;
+  for (const dvec3& a : {dvec3(0, 0, 1), dvec3(0.3, -0.5, 0.8), dvec3(-0.9, 0.1, 0.05)})
+    sgs.push_back({glm::normalize(a), 30.0, dvec3(1.0)});
+  const SgVisibility whole = SgVisibility::compute(*vis, mesh, sgs);
+  mesh.pass = pass;
+  const SgVisibility subset = SgVisibility::compute(*vis, mesh, sgs);
+  ASSERT_EQ(subset.vertices, mesh.positions.size());
+  std::vector<bool> is_pass(mesh.positions.size(), false);
+  for (uint32_t v : pass->vertices) is_pass[v] = true;
+  double worst = 0.0;
+  size_t blended = 0;
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    for (int k = 0; k < int(sgs.size()); ++k) {
+      dvec3 want = whole.at(v, k);
+      if (!is_pass[v]) {
+        const auto& c = pass->corners[v];
+        const glm::vec3 w = pass->weights[v];
+        want = double(w.x) * whole.at(pass->vertices[c[0]], k) + double(w.y) * whole.at(pass->vertices[c[1]], k) +
+               double(w.z) * whole.at(pass->vertices[c[2]], k);
+        ++blended;
+      }
+      for (int i = 0; i < 3; ++i) worst = std::max(worst, std::abs(want[i] - subset.at(v, k)[i]) / (1.0 + std::abs(want[i])));
+    }
+  EXPECT_LT(worst, 1e-5);  // float storage
+  EXPECT_GT(blended, mesh.positions.size() / 2);
 }
 
 TEST(SgVisibility, RefusesAMeshOfAnotherSize) {
