@@ -4,6 +4,7 @@
 // (77 with --smoke, ctest's skip); 2 on bad input; 1 when a step fails.
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <sstream>
@@ -149,6 +150,31 @@ std::vector<FilamentCloth> cloth_looks(const bench::Case& c) {
   return out;
 }
 
+// --speed-only: each case's frame time (linear and shipping) and its linear frame, no reference,
+// so that a product file's row costs seconds; the content bench compares the frame itself.
+int speed_rows(const bench::BenchOptions& o, const std::filesystem::path& out, int cube_size) {
+  std::filesystem::create_directories(out / "images");
+  peer::FilamentPeer filament;
+  std::ofstream csv(out / "speed.csv");
+  csv << "scene,fabric,env,speed_width,speed_height,frames,ms,shipping_ms,image\n";
+  for (const auto& scene : o.scenes)
+    for (const auto& fabric : o.fabrics)
+      for (const auto& env : o.envs) {
+        const bench::Case c = bench::make_case(o, scene, fabric, env);
+        filament.set_scene(c.scene, cloth_looks(c));
+        filament.set_ibl(peer::make_ibl_ktx(c.sgs, out / "ibl" / c.tag, cube_size));
+        const peer::FilamentFrame speed = filament.linear(c.scene.camera, o.speed_width, o.speed_height, o.speed_frames);
+        const double shipping = filament.shipping_ms(c.scene.camera, o.speed_width, o.speed_height, o.speed_frames);
+        const std::string image = "images/" + c.tag + "_filament.exr";
+        write_exr(filament.linear(c.scene.camera, o.width, o.height, 0).image, out / image);
+        csv << c.scene_name << "," << c.fabric_label << "," << c.env << "," << o.speed_width << "," << o.speed_height
+            << "," << speed.frames << "," << speed.median_ms << "," << shipping << "," << image << "\n";
+        std::cout << "filament_peer: " << c.tag << ": " << bench::fmt(speed.median_ms) << " ms/frame at "
+                  << o.speed_width << "x" << o.speed_height << " (shipping " << bench::fmt(shipping) << " ms)\n";
+      }
+  return csv ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -157,10 +183,13 @@ int main(int argc, char** argv) {
   bench::BenchOptions o;
   o.scenes = {"pillow", "swatch", "drape", "teapot", "curtain"};
   o.speed_frames = 3, o.tangent_samples = 16;
-  bool smoke_run = false;
+  bool smoke_run = false, speed_only = false;
   std::string weft_results;
   int cube_size = 256;
   app.add_flag("--smoke", smoke_run, "CI check: tiny frames against closed forms (exit 77 where Filament cannot run)");
+  app.add_flag("--speed-only", speed_only,
+               "Frame times and frames only, no reference: OUT/speed.csv (scene, ms, shipping ms) and "
+               "OUT/images/TAG_filament.exr (linear radiance at --width x --height), for the content bench");
   app.add_option("--out", o.out, "Output folder (README.md, results.csv, chart.png, images/)")->capture_default_str();
   app.add_option("--reference-cache", o.cache, "Reference cache folder, shared with weft bench (default: OUT/reference-cache)");
   app.add_option("--scenes", o.scenes, "Scenes: preset names or .json/.gltf/.glb paths")->delimiter(',')->capture_default_str();
@@ -212,6 +241,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::filesystem::path out = o.out;
+  if (speed_only) {
+    try {
+      return speed_rows(o, out, cube_size);
+    } catch (const std::exception& e) {
+      std::cerr << "filament_peer: " << e.what() << "\n";
+      return 1;
+    }
+  }
   std::ostringstream command;
   command << "filament_peer --scenes " << CLI::detail::join(o.scenes) << " --fabrics " << CLI::detail::join(o.fabrics)
           << " --maps " << CLI::detail::join(o.envs) << " --speed-width " << o.speed_width << " --speed-height "
