@@ -13,10 +13,6 @@
 #include <iostream>
 #include <functional>
 
-#include <draco/compression/decode.h>
-#include <draco/compression/encode.h>
-#include <draco/mesh/triangle_soup_mesh_builder.h>
-#include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 // As render/scene/gltf_scene.cpp builds tinygltf (which holds its implementation).
 #define TINYGLTF_NO_STB_IMAGE
@@ -25,12 +21,12 @@
 #include <tiny_gltf.h>
 
 #include "scene/gltf_draco.h"
+#include "scene/gltf_encode.h"
 #include "scene/gltf_loadable.h"
 #include "scene/gltf_scene.h"
 #include "scene/mesh.h"
 #include "scene/procedural_meshes.h"
 #include "scene/scene.h"
-#include "support/base64_text.h"
 #include "support/scene_refusal.h"
 
 using namespace weft;
@@ -40,15 +36,11 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path kDracoEngine = "/usr/share/assimp/models/glTF2/draco/2CylinderEngine.gltf";
-constexpr int kFloat = 5126, kByte = 5120, kShort = 5122, kUnsignedShort = 5123, kUnsignedInt = 5125;
+using test::GltfFile;
+using test::SourceMesh;
+using test::kByte, test::kFloat, test::kShort, test::kUnsignedInt, test::kUnsignedShort;
 
-// The cushion every encoding below starts from, as float arrays.
-struct SourceMesh {
-  std::vector<float> positions, normals, uvs;  // 3, 3, 2 per vertex
-  std::vector<uint32_t> indices;
-  size_t vertices() const { return positions.size() / 3; }
-};
-
+// The cushion every encoding below starts from.
 SourceMesh cushion() {
   TriangleMesh m = pillow_mesh(0.5, 0.4, 0.12, 0.01, 6);
   if (m.normals.empty()) compute_vertex_normals(m);
@@ -63,34 +55,8 @@ SourceMesh cushion() {
   return s;
 }
 
-using test::base64;
-
-// A glTF with one mesh of one primitive (material 'Cushion'), its buffer 0 built view by view.
-struct File {
-  json j = {{"asset", {{"version", "2.0"}}}, {"bufferViews", json::array()}, {"accessors", json::array()},
-            {"buffers", json::array({json::object()})}};
-  std::string data;  // buffer 0
-
-  // Appends `bytes` to buffer 0 (4-byte aligned); returns their offset.
-  size_t append(const void* bytes, size_t n) {
-    while (data.size() % 4) data.push_back('\0');
-    const size_t at = data.size();
-    data.append(static_cast<const char*>(bytes), n);
-    return at;
-  }
-  int view(const void* bytes, size_t n, size_t stride = 0) {
-    json v = {{"buffer", 0}, {"byteOffset", append(bytes, n)}, {"byteLength", n}};
-    if (stride) v["byteStride"] = stride;
-    j["bufferViews"].push_back(v);
-    return int(j["bufferViews"].size() - 1);
-  }
-  int accessor(int view, int component, size_t count, const char* type, bool normalized = false) {
-    json a = {{"componentType", component}, {"count", count}, {"type", type}};
-    if (view >= 0) a["bufferView"] = view;
-    if (normalized) a["normalized"] = true;
-    j["accessors"].push_back(a);
-    return int(j["accessors"].size() - 1);
-  }
+// A glTF with one mesh of one primitive (material 'Cushion').
+struct File : GltfFile {
   void mesh(json primitive, json node = json::object()) {
     primitive["material"] = 0;
     j["meshes"] = json::array({{{"primitives", json::array({primitive})}}});
@@ -99,42 +65,11 @@ struct File {
     j["nodes"] = json::array({node});
     j["scenes"] = json::array({{{"nodes", {0}}}});
   }
-  void require(std::initializer_list<const char*> extensions) {
-    j["extensionsUsed"] = extensions;
-    j["extensionsRequired"] = extensions;
-  }
-  std::string text() {
-    j["buffers"][0]["byteLength"] = data.size();
-    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(data);
-    return j.dump();
-  }
-  // The same as a .glb: buffer 0 is the BIN chunk.
-  std::string glb() {
-    j["buffers"][0]["byteLength"] = data.size();
-    j["buffers"][0].erase("uri");
-    std::string text = j.dump(), bin = data;
-    while (text.size() % 4) text.push_back(' ');
-    while (bin.size() % 4) bin.push_back('\0');
-    std::string out = "glTF";
-    auto u32 = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    u32(2);
-    u32(uint32_t(12 + 8 + text.size() + 8 + bin.size()));
-    u32(uint32_t(text.size()));
-    out += "JSON" + text;
-    u32(uint32_t(bin.size()));
-    out += std::string("BIN\0", 4) + bin;
-    return out;
-  }
 };
 
 std::string plain_file(const SourceMesh& m) {
   File f;
-  const size_t n = m.vertices();
-  f.mesh({{"attributes",
-           {{"POSITION", f.accessor(f.view(m.positions.data(), n * 12), kFloat, n, "VEC3")},
-            {"NORMAL", f.accessor(f.view(m.normals.data(), n * 12), kFloat, n, "VEC3")},
-            {"TEXCOORD_0", f.accessor(f.view(m.uvs.data(), n * 8), kFloat, n, "VEC2")}}},
-          {"indices", f.accessor(f.view(m.indices.data(), m.indices.size() * 4), kUnsignedInt, m.indices.size(), "SCALAR")}});
+  f.mesh(test::plain_primitive(f, m));
   return f.text();
 }
 
@@ -171,93 +106,18 @@ std::string quantized_file(const SourceMesh& m, int normal_component = kShort, b
 }
 
 // EXT_meshopt_compression as gltfpack writes it: compressed views in buffer 0, their decoded
-// bytes declared in a fallback buffer 1 that holds no data. Positions as floats, normals
-// octahedral (8 bits), UVs exponential (15-bit mantissa), indices as TRIANGLES.
+// bytes declared in a fallback buffer 1 that holds no data.
 File meshopt_file(const SourceMesh& m) {
   File f;
-  const size_t n = m.vertices();
-  size_t fallback_size = 0;
-  auto compressed = [&](const void* raw, size_t count, size_t stride, const char* mode, const char* filter) {
-    std::vector<unsigned char> encoded;
-    if (std::string(mode) == "ATTRIBUTES") {
-      encoded.resize(meshopt_encodeVertexBufferBound(count, stride));
-      encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), raw, count, stride));
-    } else {
-      encoded.resize(meshopt_encodeIndexBufferBound(count, n));
-      encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), static_cast<const unsigned int*>(raw), count));
-    }
-    json v = {{"buffer", 1}, {"byteOffset", fallback_size}, {"byteLength", count * stride}};
-    if (std::string(mode) == "ATTRIBUTES") v["byteStride"] = stride;
-    json e = {{"buffer", 0}, {"byteOffset", f.append(encoded.data(), encoded.size())}, {"byteLength", encoded.size()},
-              {"byteStride", stride}, {"count", count}, {"mode", mode}};
-    if (std::string(filter) != "NONE") e["filter"] = filter;
-    v["extensions"]["EXT_meshopt_compression"] = e;
-    fallback_size += (count * stride + 3) / 4 * 4;
-    f.j["bufferViews"].push_back(v);
-    return int(f.j["bufferViews"].size() - 1);
-  };
-  std::vector<float> normals4(4 * n, 0.f), uvs(m.uvs);
-  for (size_t v = 0; v < n; ++v)
-    for (int k = 0; k < 3; ++k) normals4[4 * v + k] = m.normals[3 * v + k];
-  std::vector<int8_t> oct(4 * n);
-  meshopt_encodeFilterOct(oct.data(), n, 4, 8, normals4.data());
-  std::vector<uint32_t> exp(2 * n);
-  meshopt_encodeFilterExp(exp.data(), n, 8, 15, uvs.data());
-  f.mesh({{"attributes",
-           {{"POSITION", f.accessor(compressed(m.positions.data(), n, 12, "ATTRIBUTES", "NONE"), kFloat, n, "VEC3")},
-            {"NORMAL", f.accessor(compressed(oct.data(), n, 4, "ATTRIBUTES", "OCTAHEDRAL"), kByte, n, "VEC3", true)},
-            {"TEXCOORD_0", f.accessor(compressed(exp.data(), n, 8, "ATTRIBUTES", "EXPONENTIAL"), kFloat, n, "VEC2")}}},
-          {"indices", f.accessor(compressed(m.indices.data(), m.indices.size(), 4, "TRIANGLES", "NONE"), kUnsignedInt,
-                                 m.indices.size(), "SCALAR")}});
-  f.j["buffers"].push_back({{"byteLength", fallback_size}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
-  f.require({"EXT_meshopt_compression", "KHR_mesh_quantization"});
+  f.mesh(test::meshopt_primitive(f, m));
   return f;
 }
 
 // KHR_draco_mesh_compression as Blender writes it: the Draco bitstream in a buffer view, the
-// accessors with counts only. Quantization: positions 14 bits, normals 10, UVs 12.
+// accessors with counts only.
 File draco_file(const SourceMesh& m) {
-  const size_t faces = m.indices.size() / 3;
-  draco::TriangleSoupMeshBuilder builder;
-  builder.Start(int(faces));
-  const int pos = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-  const int nrm = builder.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
-  const int tex = builder.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
-  for (size_t t = 0; t < faces; ++t) {
-    const uint32_t* c = &m.indices[3 * t];
-    const draco::FaceIndex face(static_cast<uint32_t>(t));
-    builder.SetAttributeValuesForFace(pos, face, &m.positions[3 * c[0]], &m.positions[3 * c[1]], &m.positions[3 * c[2]]);
-    builder.SetAttributeValuesForFace(nrm, face, &m.normals[3 * c[0]], &m.normals[3 * c[1]], &m.normals[3 * c[2]]);
-    builder.SetAttributeValuesForFace(tex, face, &m.uvs[2 * c[0]], &m.uvs[2 * c[1]], &m.uvs[2 * c[2]]);
-  }
-  std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
-  draco::Encoder encoder;
-  encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
-  encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, 10);
-  encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, 12);
-  draco::EncoderBuffer encoded;
-  EXPECT_TRUE(encoder.EncodeMeshToBuffer(*mesh, &encoded).ok());
-  // The counts an exporter declares: those of the decoded mesh.
-  draco::DecoderBuffer in;
-  in.Init(encoded.data(), encoded.size());
-  draco::Decoder decoder;
-  const std::unique_ptr<draco::Mesh> decoded = decoder.DecodeMeshFromBuffer(&in).value();
   File f;
-  const size_t points = decoded->num_points();
-  const int view = f.view(encoded.data(), encoded.size());
-  f.mesh({{"attributes",
-           {{"POSITION", f.accessor(-1, kFloat, points, "VEC3")},
-            {"NORMAL", f.accessor(-1, kFloat, points, "VEC3")},
-            {"TEXCOORD_0", f.accessor(-1, kFloat, points, "VEC2")}}},
-          {"indices", f.accessor(-1, kUnsignedInt, 3 * decoded->num_faces(), "SCALAR")},
-          {"extensions",
-           {{"KHR_draco_mesh_compression",
-             {{"bufferView", view},
-              {"attributes",
-               {{"POSITION", mesh->attribute(pos)->unique_id()},
-                {"NORMAL", mesh->attribute(nrm)->unique_id()},
-                {"TEXCOORD_0", mesh->attribute(tex)->unique_id()}}}}}}}});
-  f.require({"KHR_draco_mesh_compression"});
+  f.mesh(test::draco_primitive(f, m));
   return f;
 }
 
