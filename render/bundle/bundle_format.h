@@ -57,6 +57,7 @@ enum class ElementType : std::uint32_t {
   F32 = 5,
   F64 = 6,
   Json = 7,  // UTF-8 JSON text (rank 1, shape = byte count); parsed by its consumer
+  F16 = 8,   // IEEE 754 binary16: large float tables where 11 significant bits are plenty
 };
 
 // Bytes per element, or 0 for a value that is not an ElementType.
@@ -69,6 +70,7 @@ constexpr std::size_t element_size(ElementType t) {
     case ElementType::F32: return 4;
     case ElementType::F64: return 8;
     case ElementType::Json: return 1;
+    case ElementType::F16: return 2;
   }
   return 0;
 }
@@ -82,6 +84,7 @@ constexpr std::string_view element_type_name(ElementType t) {
     case ElementType::F32: return "f32";
     case ElementType::F64: return "f64";
     case ElementType::Json: return "json";
+    case ElementType::F16: return "f16";
   }
   return "invalid";
 }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/half_float_sections.h"
 #include "scene/vertex_pass_rows.h"
 
 namespace weft {
@@ -30,14 +31,14 @@ json parse(const bundle::BundleReader& r, const std::string& section) {
   }
 }
 
-// An f32 section with exactly `count` finite values.
+// An f32 or f16 section (half_float_sections.h) with exactly `count` finite values.
 std::vector<float> floats(const bundle::BundleReader& r, const std::string& name, size_t count) {
-  const auto a = r.array<float>(name);
+  std::vector<float> a = read_halves_or_floats(r, name);
   if (a.size() != count)
     throw bad(r, name, "expected " + std::to_string(count) + " values, found " + std::to_string(a.size()));
   for (size_t i = 0; i < a.size(); ++i)
     if (!std::isfinite(a[i])) throw bad(r, name, "non-finite value at " + std::to_string(i));
-  return {a.begin(), a.end()};
+  return a;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "bake/writers/iwasaki_bundle_writer.h"
 
+#include "runtime/half_float_sections.h"
 #include "scene/vertex_pass_rows.h"
 
 #include <nlohmann/json.hpp>
@@ -36,8 +37,8 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d, c
                      {"lambdas", t.lambdas},
                      {"ranks", ranks},
                      {"svd_errors", errors}};
-    w.add_array<float>(iwasaki_section::table(id, "u"), u);
-    w.add_array<float>(iwasaki_section::table(id, "v"), v);
+    add_halves_or_floats(w, iwasaki_section::table(id, "u"), u, {u.size()});
+    add_halves_or_floats(w, iwasaki_section::table(id, "v"), v, {v.size()});
     ++id;
   }
   w.add_json(iwasaki_section::kTablesIndex, index.dump());
@@ -47,7 +48,7 @@ void add_iwasaki_sections(bundle::BundleWriter& w, const IwasakiBundleData& d, c
     vis[std::to_string(object)] = {{"resolution", o.resolution}, {"terms", o.terms},
                                    {"rms_error", o.rms_error}, {"max_error", o.max_error}};
     w.add_array<float>(iwasaki_section::vis(object, "pca_mean"), o.mean, {cells});
-    w.add_array<float>(iwasaki_section::vis(object, "pca_basis"), o.basis, {uint64_t(o.terms), cells});
+    add_halves_or_floats(w, iwasaki_section::vis(object, "pca_basis"), o.basis, {uint64_t(o.terms), cells});
     if (const VertexPassMesh* p = subset(object, o.vertex_count()))
       w.add_array<float>(iwasaki_section::vis(object, "pca_coeffs"), pass_vertex_rows(*p, o.coefficients, size_t(o.terms)),
                          {uint64_t(p->vertices.size()), uint64_t(o.terms)});
