@@ -11,7 +11,7 @@ cd "$(dirname "$0")"
 PACKAGES=(
   build-essential cmake pkg-config git
   libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev
-  libembree-dev libtbb-dev libopenexr-dev libpng-dev libtinygltf-dev
+  libembree-dev libtbb-dev libopenexr-dev libimath-dev libpng-dev libtinygltf-dev
   libjpeg62-turbo-dev  # JPEG textures in glTF files (render/image/texture_image.h)
   libdraco-dev libmeshoptimizer-dev  # compressed glTF meshes: Draco and meshopt (render/scene/gltf_draco.h, gltf_meshopt.h)
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
