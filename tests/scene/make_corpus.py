@@ -188,7 +188,7 @@ def tube(mesh, points, radius, segments, bend=0.06, step=0.02):
     def at(s, t):
         i = round(t * (len(dense) - 1))
         a, b = frames[i]
-        phi = -2 * math.pi * s
+        phi = 2 * math.pi * s  # s runs anticlockwise about the path: ∂p/∂s × ∂p/∂t points out
         return add(dense[i], add(mul(a, radius * math.cos(phi)), mul(b, radius * math.sin(phi)))), (s, lengths[i] / (2 * math.pi * radius))
     return mesh.grid(segments, len(dense) - 1, at)
 
