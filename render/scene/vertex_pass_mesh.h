@@ -42,7 +42,11 @@ struct VertexPassMesh {
   double normal_p95_deg = 0, normal_p99_deg = 0, normal_max_deg = 0, warp_p95_deg = 0, warp_max_deg = 0;
   double edge_p95 = 0, edge_median = 0;  // the pass triangles' edges, metres
   double gap_max = 0;         // the farthest a mesh vertex lies from its blend point, metres
+  double gap_p999 = 0;        // and the 99.9th percentile of that distance
   float simplifier_error = 0;  // the ladder's step taken (relative to the mesh's extent)
+  // Whole although the mesh is large enough for a subset: what the finest step measured against
+  // the budget (for the bake's log); empty otherwise.
+  std::string kept_whole_because;
 };
 
 struct VertexPassMeshOptions {
