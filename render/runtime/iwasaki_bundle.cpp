@@ -147,6 +147,15 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     const size_t cells = size_t(o.resolution) * o.resolution;
     o.mean = floats(r, iwasaki_section::vis(object, "pca_mean"), cells);
     o.basis = floats(r, iwasaki_section::vis(object, "pca_basis"), cells * o.terms);
+    if (o.terms == 0) {
+      // Every vertex sees the mean (a part whose vertices all see the same sky): no rows carry
+      // the vertex count, so one zero term stands in, exact.
+      o.terms = 1;
+      o.basis.assign(cells, 0.0f);
+      o.coefficients.assign(vc->second, 0.0f);
+      out.visibility.emplace(object, std::move(o));
+      continue;
+    }
     const std::string cs = iwasaki_section::vis(object, "pca_coeffs");
     const VertexPassMesh* pass = pass_rows(object);
     if (pass && r.array<float>(cs).size() == pass->vertices.size() * size_t(o.terms))  // at the pass vertices

@@ -112,6 +112,24 @@ TEST(IwasakiBundle, RoundTrips) {
   EXPECT_EQ(back.masks.at(1).words, d.masks.at(1).words);
 }
 
+// A part whose vertices all see the same sky compresses to its mean alone (no PCA term: a real
+// third-party file, assimp-testmodels' 2CylinderEngine, has one); the reader gives every vertex
+// of the mesh that mean.
+TEST(IwasakiBundle, AVisibilityOfNoTermsIsTheMeanAtEveryVertex) {
+  IwasakiBundleData d = sample_data();
+  ObjectVisibility& v = d.visibility.at(1);
+  v.terms = 0;
+  v.basis.clear();
+  v.coefficients.clear();
+  const auto bytes = write(d);
+  const IwasakiBundleData back = read_iwasaki_sections(bundle::BundleReader::view(bytes, "mem"), kVertices);
+  const ObjectVisibility& b = back.visibility.at(1);
+  ASSERT_EQ(b.vertex_count(), kVertices.at(1));
+  EXPECT_EQ(b.mean, v.mean);
+  for (size_t vertex = 0; vertex < b.vertex_count(); ++vertex)
+    for (int t = 0; t < b.terms; ++t) EXPECT_EQ(b.coefficients[vertex * b.terms + t], 0.0f);
+}
+
 TEST(IwasakiBundle, ErrorsNameTheSection) {
   const auto bytes = write(sample_data());
   auto section_of = [](const std::vector<std::byte>& b) -> std::string {
