@@ -144,7 +144,8 @@ def write_readme(path, rows, command, machine):
         f"Machine: {machine}. Regenerate: `{command}` (`--size small` for a quick pass, "
         "`--no-reference` without the reference renders). The files: `tests/scene/make_corpus.py` "
         "(its docstring describes each product) and Debian's assimp-testmodels glTF 2.0 samples. "
-        "`dense_cushion.md` here compares every vertex against the pass subset on one dense export.",
+        "`findings.md` here says what the rows show and what limits them; `dense_cushion.md` compares "
+        "every vertex against the pass subset on one dense export.",
         "",
         "| file | rung | vertices | bake s | MB | bake peak MB | first frame ms | kiosk ms | Filament ms | × Filament | "
         "error | detail worst | blocks > 2× |",
@@ -208,8 +209,12 @@ def main():
             w.writerows(sorted(kept + rows, key=lambda r: r["file"]))
     rows = sorted(kept + rows, key=lambda r: r["file"])
     machine = f"{os.cpu_count()} cores, " + (subprocess.run(["uname", "-m"], capture_output=True, text=True).stdout.strip())
-    command = "tests/bench/content_bench.py OUT " + " ".join(
-        a for a in sys.argv[2:] if not a.startswith("/"))
+    # The command that regenerates the whole table (an --only rerun keeps the other rows).
+    argv = sys.argv[2:]
+    if "--only" in argv:
+        i = argv.index("--only")
+        argv = argv[:i] + argv[i + 2:]
+    command = "tests/bench/content_bench.py OUT " + " ".join(a for a in argv if not a.startswith("/"))
     write_readme(args.readme or out / "README.md", rows, command.strip(), machine)
     print(f"content_bench: wrote {args.readme or out / 'README.md'}", file=sys.stderr)
 
