@@ -1,4 +1,5 @@
 #include "scene/gltf_scene.h"
+#include "scene/mesh_orientation.h"
 
 #include <algorithm>
 #include <cctype>
@@ -186,6 +187,16 @@ private:
   std::map<int, std::shared_ptr<const TextureImage>> images_;  // decoded, by image index
   std::vector<TriangleMesh> groups_;
   std::vector<MeshRepairReport> reports_;
+  // A closed primitive whose normals or winding point into it (mesh_orientation.h), turned once
+  // the camera is known: not where the camera stands inside it (a room seen from within).
+  struct InwardPart {
+    size_t group = 0, first_vertex = 0, vertices = 0, first_triangle = 0, triangles = 0;
+    glm::dvec3 lo{0.0}, hi{0.0};
+    MeshOrientation orientation;
+    std::string where;
+  };
+  std::vector<InwardPart> inward_;
+  void turn_inward_parts(const std::optional<glm::dvec3>& camera);
   size_t vertices_ = 0, triangles_ = 0;
 };
 
@@ -769,6 +780,12 @@ void Importer::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& wor
 
   // Merge into the material's object.
   TriangleMesh& g = groups_[p.material + 1];
+  if (const MeshOrientation o = mesh_orientation(mesh); o.closed && o.inward()) {
+    InwardPart part{size_t(p.material + 1), g.positions.size(), mesh.positions.size(), g.triangles.size(),
+                    mesh.triangles.size(), mesh.positions.front(), mesh.positions.front(), o, where};
+    for (const auto& q : mesh.positions) part.lo = glm::min(part.lo, q), part.hi = glm::max(part.hi, q);
+    inward_.push_back(std::move(part));
+  }
   MeshRepairReport& r = reports_[p.material + 1];
   r.degenerate_triangles_dropped += report.degenerate_triangles_dropped;
   r.unused_vertices += report.unused_vertices;
@@ -808,6 +825,29 @@ Camera framed_camera(const Scene& s) {
   return c;
 }
 
+void Importer::turn_inward_parts(const std::optional<glm::dvec3>& camera) {
+  for (const InwardPart& part : inward_) {
+    const std::string what = std::string(part.orientation.normals_inward ? "normals" : "") +
+                             (part.orientation.normals_inward && part.orientation.winding_inward ? " and " : "") +
+                             (part.orientation.winding_inward ? "winding" : "");
+    if (camera && glm::all(glm::greaterThanEqual(*camera, part.lo)) && glm::all(glm::lessThanEqual(*camera, part.hi))) {
+      notes_.push_back(part.where + ": a closed part whose " + what + " point inwards, kept so: the camera is inside it");
+      continue;
+    }
+    TriangleMesh piece;
+    TriangleMesh& g = groups_[part.group];
+    piece.normals.assign(g.normals.begin() + std::ptrdiff_t(part.first_vertex),
+                         g.normals.begin() + std::ptrdiff_t(part.first_vertex + part.vertices));
+    piece.triangles.assign(g.triangles.begin() + std::ptrdiff_t(part.first_triangle),
+                           g.triangles.begin() + std::ptrdiff_t(part.first_triangle + part.triangles));
+    turn_outward(piece, part.orientation);
+    std::copy(piece.normals.begin(), piece.normals.end(), g.normals.begin() + std::ptrdiff_t(part.first_vertex));
+    std::copy(piece.triangles.begin(), piece.triangles.end(), g.triangles.begin() + std::ptrdiff_t(part.first_triangle));
+    notes_.push_back(part.where + ": a closed part whose " + what +
+                     " pointed inwards (its shading and shadows would come from inside it): turned outwards");
+  }
+}
+
 Scene Importer::run() {
   resolve_materials();
   read_variants();
@@ -844,6 +884,7 @@ Scene Importer::run() {
       add_primitive(mesh.primitives[p], world,
                     "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(p) + "]");
   }
+  turn_inward_parts(have_camera ? std::optional<glm::dvec3>(s.camera.position) : std::nullopt);
   std::vector<std::string> object_names(groups_.size());  // per material (index + 1), "" when it has no object
   for (size_t i = 0; i < groups_.size(); ++i) {
     if (groups_[i].triangles.empty()) continue;

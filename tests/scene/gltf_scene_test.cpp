@@ -3,6 +3,8 @@
 // glTF written here checks the frame conversion, hierarchy, cameras and warps by hand.
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -138,6 +140,64 @@ void expect_near(const dvec3& a, const dvec3& b, double tol = 1e-9) {
 using test::refusal;
 
 }  // namespace
+
+// A 1 m box exported inside out (its normals and winding pointing in), as a product tool leaves a
+// part whose "outside" was never recalculated; `camera_inside`: a camera node at its centre.
+GltfBuilder inside_out_box(bool camera_inside) {
+  GltfBuilder b;
+  std::vector<float> p, n;
+  std::vector<uint16_t> idx;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      float nn[3] = {0, 0, 0};
+      nn[axis] = side;
+      const float u[3] = {nn[1], nn[2], nn[0]};
+      const float v[3] = {nn[1] * u[2] - nn[2] * u[1], nn[2] * u[0] - nn[0] * u[2], nn[0] * u[1] - nn[1] * u[0]};
+      const uint16_t base = uint16_t(p.size() / 3);
+      for (auto [a, c] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
+        for (int k = 0; k < 3; ++k) p.push_back(0.5f * (nn[k] + a * u[k] + c * v[k]));
+        for (int k = 0; k < 3; ++k) n.push_back(-nn[k]);  // into the box
+      }
+      for (uint16_t i : {0, 2, 1, 0, 3, 2}) idx.push_back(uint16_t(base + i));  // wound inwards
+    }
+  json attributes = {{"POSITION", b.floats(p, 3, "VEC3")}, {"NORMAL", b.floats(n, 3, "VEC3")}};
+  const int indices = b.indices(idx);
+  b.j["meshes"] = json::array({{{"primitives", json::array({{{"attributes", attributes}, {"indices", indices},
+                                                              {"material", 0}}})}}});
+  b.j["materials"] = json::array({{{"name", "Steel"}}});
+  b.j["nodes"] = json::array({{{"mesh", 0}}});
+  b.j["scenes"] = json::array({{{"nodes", {0}}}});
+  if (camera_inside) {
+    b.j["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.01}}}}});
+    b.j["nodes"].push_back({{"camera", 0}});
+    b.j["scenes"][0]["nodes"].push_back(1);
+  }
+  b.j["scene"] = 0;
+  return b;
+}
+
+TEST(GltfScene, AClosedPartExportedInsideOutIsTurnedOutwardsUnlessTheCameraIsInIt) {
+  for (const bool camera_inside : {false, true}) {
+    const Scene s = parse(inside_out_box(camera_inside));
+    ASSERT_EQ(s.objects.size(), 1u);
+    const TriangleMesh& m = s.objects[0].mesh;
+    double outward = 0.0, volume = 0.0;
+    for (size_t v = 0; v < m.positions.size(); ++v) outward += glm::dot(m.normals[v], m.positions[v]);
+    for (const auto& t : m.triangles)
+      volume += glm::dot(m.positions[t[0]], glm::cross(m.positions[t[1]], m.positions[t[2]])) / 6.0;
+    const std::string log = std::accumulate(s.warnings.begin(), s.warnings.end(), std::string(),
+                                            [](std::string a, const std::string& w) { return a + w + "\n"; });
+    if (camera_inside) {
+      EXPECT_LT(outward, 0.0);  // a room seen from within keeps its inward faces
+      EXPECT_NEAR(volume, -1.0, 1e-6);
+      EXPECT_NE(log.find("kept so: the camera is inside it"), std::string::npos) << log;
+    } else {
+      EXPECT_GT(outward, 0.0);
+      EXPECT_NEAR(volume, 1.0, 1e-6);
+      EXPECT_NE(log.find("normals and winding pointed inwards"), std::string::npos) << log;
+    }
+  }
+}
 
 TEST(GltfScene, HandMadeQuadInWeftFrameWithWarpFromUVs) {
   const Scene s = parse(quad());
