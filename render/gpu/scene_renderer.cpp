@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "gl/frame_profile.h"
@@ -116,6 +117,10 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
     }
     objects_.push_back(std::move(obj));
   }
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const auto& o : scene.objects)
+    for (const auto& q : o.mesh.positions) lo = glm::min(lo, q), hi = glm::max(hi, q);
+  if (lo.x <= hi.x) bounds_centre_ = 0.5 * (lo + hi), bounds_radius_ = 0.5 * glm::length(hi - lo);
 }
 
 SceneRenderer::~SceneRenderer() = default;
@@ -269,9 +274,14 @@ size_t SceneRenderer::shadowed_lambertian_objects() const {
 }
 
 void SceneRenderer::draw(const Camera& camera, int width, int height) {
-  // A close-up (a camera nearer its target than 0.2 m) moves the near plane in with it.
-  const float near = std::min(0.05f, 0.25f * float(glm::length(camera.target - camera.position)));
-  const glm::mat4 proj = glm::perspective(float(glm::radians(camera.fov_deg)), float(width) / height, near, 100.0f);
+  // A close-up (a camera nearer its target than 0.2 m) moves the near plane in with it; the far
+  // plane lies past the scene's bounds (100 m at least), and a camera outside them moves the near
+  // plane out to half the way to them, so that depth keeps its precision at any scale.
+  const double to_centre = glm::length(bounds_centre_ - camera.position);
+  const float near = float(std::max(double(std::min(0.05f, 0.25f * float(glm::length(camera.target - camera.position)))),
+                                    0.5 * (to_centre - bounds_radius_)));
+  const float far = float(std::max(100.0, 1.05 * (to_centre + bounds_radius_)));
+  const glm::mat4 proj = glm::perspective(float(glm::radians(camera.fov_deg)), float(width) / height, near, far);
   const glm::mat4 view = glm::lookAt(glm::vec3(camera.position), glm::vec3(camera.target), glm::vec3(camera.up));
   const glm::mat4 vp = proj * view;
   const bool see_through = method_->see_through;

@@ -145,6 +145,10 @@ private:
   std::map<const TextureImage*, std::unique_ptr<NormalMapTexture>> normal_textures_;  // linear, each once
   std::vector<std::string> warnings_;
   Backdrop backdrop_ = Backdrop::measure;
+  // The scene's bounding sphere: the far plane reaches past it whatever the file's units (a
+  // product modelled in millimetres is metres across in numbers).
+  glm::dvec3 bounds_centre_{0.0};
+  double bounds_radius_ = 0.0;
 };
 
 // The frame as linear radiance (row 0 at the top) from a float target of the given size.

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "bake/visibility/scene_visibility.h"
 #include "bake/visibility/visibility_sdf.h"
@@ -38,14 +39,28 @@ dvec3 expanded_lookup(const ObjectVisibility& o, size_t v, const SurfaceFrame& f
   return (1 - fi) * ((1 - fj) * at(i0, j0) + fj * at(i0, j0 + 1)) + fi * ((1 - fj) * at(i0 + 1, j0) + fj * at(i0 + 1, j0 + 1));
 }
 
-TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
-  const Scene scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
+// The pillow scene's cloth and its visibility baked on a 16² grid.
+struct PillowVisibility {
+  Scene scene;
   size_t cloth = 0;
-  for (size_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].material == Material::cloth) cloth = i;
+  std::optional<ObjectVisibility> vis;
+};
+PillowVisibility pillow_visibility() {
+  PillowVisibility p;
+  p.scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
+  for (size_t i = 0; i < p.scene.objects.size(); ++i)
+    if (p.scene.objects[i].material == Material::cloth) p.cloth = i;
   SceneVisibilityOptions vo;
   vo.resolution = 16;
-  const auto vis = bake_object_visibility(scene, cloth, vo);
+  p.vis = bake_object_visibility(p.scene, p.cloth, vo);
+  return p;
+}
+
+TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
+  const PillowVisibility p = pillow_visibility();
+  const Scene& scene = p.scene;
+  const size_t cloth = p.cloth;
+  const auto& vis = p.vis;
   ASSERT_TRUE(vis.has_value());
   const TriangleMesh& mesh = scene.objects[cloth].mesh;
   // Axes from overhead to below the horizon, sharp and broad (sharpness does not enter d).
@@ -71,13 +86,10 @@ TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
 // the whole mesh's lookup, and every other vertex holds its corners' blend of them — the same blend
 // the pass's shading gets, so the per-pixel rungs read what the per-vertex ones shade.
 TEST(SgVisibility, OnAPassSubsetLooksUpPassVerticesAndBlendsTheRest) {
-  const Scene scene = load_scene_preset("pillow", WEFT_SOURCE_ASSETS "/scenes");
-  size_t cloth = 0;
-  for (size_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].material == Material::cloth) cloth = i;
-  SceneVisibilityOptions vo;
-  vo.resolution = 16;
-  const auto vis = bake_object_visibility(scene, cloth, vo);
+  const PillowVisibility p = pillow_visibility();
+  const Scene& scene = p.scene;
+  const size_t cloth = p.cloth;
+  const auto& vis = p.vis;
   ASSERT_TRUE(vis.has_value());
   TriangleMesh mesh = scene.objects[cloth].mesh;
   VertexPassMeshOptions po;

@@ -43,7 +43,7 @@ double distance_to_orbit(const glm::dvec3& p, const glm::dvec3& eye, const glm::
 WeaveView weave_view(const Camera& camera, int width, int height) {
   WeaveView v;
   const double aspect = double(width) / std::max(height, 1);
-  v.view_projection = glm::perspective(glm::radians(camera.fov_deg), aspect, 0.01, 100.0) *
+  v.view_projection = glm::perspective(glm::radians(camera.fov_deg), aspect, 0.01, 1e7) *
                       glm::lookAt(camera.position, camera.target, camera.up);
   v.eye = camera.position;
   v.forward = glm::normalize(camera.target - camera.position);
