@@ -44,6 +44,7 @@ struct PillowVisibility {
   Scene scene;
   size_t cloth = 0;
   std::optional<ObjectVisibility> vis;
+  const TriangleMesh& mesh() const { return scene.objects[cloth].mesh; }
 };
 PillowVisibility pillow_visibility() {
   PillowVisibility p;
@@ -58,11 +59,9 @@ PillowVisibility pillow_visibility() {
 
 TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
   const PillowVisibility p = pillow_visibility();
-  const Scene& scene = p.scene;
-  const size_t cloth = p.cloth;
   const auto& vis = p.vis;
   ASSERT_TRUE(vis.has_value());
-  const TriangleMesh& mesh = scene.objects[cloth].mesh;
+  const TriangleMesh& mesh = p.mesh();
   // Axes from overhead to below the horizon, sharp and broad (sharpness does not enter d).
   SgLighting sgs;
   for (const dvec3& a : {dvec3(0, 0, 1), dvec3(0.3, -0.5, 0.8), dvec3(-0.9, 0.1, 0.05), dvec3(0.2, 0.9, -0.4)})
@@ -87,11 +86,9 @@ TEST(SgVisibility, MatchesTheExpandedGridAtEverySgAxis) {
 // the pass's shading gets, so the per-pixel rungs read what the per-vertex ones shade.
 TEST(SgVisibility, OnAPassSubsetLooksUpPassVerticesAndBlendsTheRest) {
   const PillowVisibility p = pillow_visibility();
-  const Scene& scene = p.scene;
-  const size_t cloth = p.cloth;
   const auto& vis = p.vis;
   ASSERT_TRUE(vis.has_value());
-  TriangleMesh mesh = scene.objects[cloth].mesh;
+  TriangleMesh mesh = p.mesh();
   VertexPassMeshOptions po;
   po.keep_all_below = 0;  // the pillow is under the size at which a mesh keeps every vertex
   auto pass = std::make_shared<VertexPassMesh>(vertex_pass_mesh(mesh, po));
