@@ -834,15 +834,9 @@ void Importer::turn_inward_parts(const std::optional<glm::dvec3>& camera) {
       notes_.push_back(part.where + ": a closed part whose " + what + " point inwards, kept so: the camera is inside it");
       continue;
     }
-    TriangleMesh piece;
     TriangleMesh& g = groups_[part.group];
-    piece.normals.assign(g.normals.begin() + std::ptrdiff_t(part.first_vertex),
-                         g.normals.begin() + std::ptrdiff_t(part.first_vertex + part.vertices));
-    piece.triangles.assign(g.triangles.begin() + std::ptrdiff_t(part.first_triangle),
-                           g.triangles.begin() + std::ptrdiff_t(part.first_triangle + part.triangles));
-    turn_outward(piece, part.orientation);
-    std::copy(piece.normals.begin(), piece.normals.end(), g.normals.begin() + std::ptrdiff_t(part.first_vertex));
-    std::copy(piece.triangles.begin(), piece.triangles.end(), g.triangles.begin() + std::ptrdiff_t(part.first_triangle));
+    turn_outward(std::span(g.triangles).subspan(part.first_triangle, part.triangles),
+                 std::span(g.normals).subspan(part.first_vertex, part.vertices), part.orientation);
     notes_.push_back(part.where + ": a closed part whose " + what +
                      " pointed inwards (its shading and shadows would come from inside it): turned outwards");
   }

@@ -70,11 +70,11 @@ MeshOrientation mesh_orientation(const TriangleMesh& mesh) {
   return o;
 }
 
-void turn_outward(TriangleMesh& mesh, const MeshOrientation& o) {
+void turn_outward(std::span<std::array<uint32_t, 3>> triangles, std::span<glm::dvec3> normals, const MeshOrientation& o) {
   if (o.winding_inward)
-    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+    for (auto& t : triangles) std::swap(t[1], t[2]);
   if (o.normals_inward)
-    for (auto& n : mesh.normals) n = -n;
+    for (auto& n : normals) n = -n;
 }
 
 }  // namespace weft

@@ -4,6 +4,10 @@
 // mirrored export — and a renderer that draws both sides hides it, but Weft's visibility bake
 // casts its rays along the normals: every ray from inside a closed part is blocked, and the kiosk
 // draws the part black. Only a closed mesh has an inside, so only a closed one is turned.
+#include <array>
+#include <cstdint>
+#include <span>
+
 #include <glm/glm.hpp>
 
 #include "scene/mesh.h"
@@ -21,7 +25,7 @@ struct MeshOrientation {
 MeshOrientation mesh_orientation(const TriangleMesh& mesh);
 
 // Turns what points in to point out: the winding (each triangle's last two corners swapped) and
-// the normals (negated), as `o` says.
-void turn_outward(TriangleMesh& mesh, const MeshOrientation& o);
+// the normals (negated), as `o` says; spans, so that a part merged into a larger mesh turns in place.
+void turn_outward(std::span<std::array<uint32_t, 3>> triangles, std::span<glm::dvec3> normals, const MeshOrientation& o);
 
 }  // namespace weft

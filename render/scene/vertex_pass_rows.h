@@ -32,13 +32,15 @@ inline std::vector<float> blended_rows(const VertexPassMesh& pass, const std::ve
   return out;
 }
 
+// Which of a mesh vertex's three corners weighs most (the first of equals).
+inline int heaviest_corner(const glm::vec3& w) { return w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2); }
+
 // Every mesh vertex's row as its heaviest corner's (pass-vertex rows in).
 template <class T>
 std::vector<T> heaviest_corner_rows(const VertexPassMesh& pass, const std::vector<T>& rows, size_t width) {
   std::vector<T> out(pass.corners.size() * width);
   for (size_t v = 0; v < pass.corners.size(); ++v) {
-    const glm::vec3 w = pass.weights[v];
-    const size_t from = pass.corners[v][w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2)];
+    const size_t from = pass.corners[v][size_t(heaviest_corner(pass.weights[v]))];
     std::copy_n(rows.begin() + std::ptrdiff_t(from * width), width, out.begin() + std::ptrdiff_t(v * width));
   }
   return out;
@@ -57,13 +59,13 @@ void spread_from_pass_vertices(const VertexPassMesh& pass, std::vector<T>& rows,
     if (cast[v]) continue;
     const auto& c = pass.corners[v];
     const glm::vec3 w = pass.weights[v];
-    const size_t a = pass.vertices[c[0]] * width, b = pass.vertices[c[1]] * width, d = pass.vertices[c[2]] * width;
-    if (blend) {
-      for (size_t i = 0; i < width; ++i) rows[v * width + i] = T(w.x * rows[a + i] + w.y * rows[b + i] + w.z * rows[d + i]);
-    } else {
-      const size_t from = w.x >= w.y && w.x >= w.z ? a : (w.y >= w.z ? b : d);
+    if (!blend) {
+      const size_t from = pass.vertices[c[size_t(heaviest_corner(w))]] * width;
       std::copy_n(rows.begin() + std::ptrdiff_t(from), width, rows.begin() + std::ptrdiff_t(v * width));
+      continue;
     }
+    const size_t a = pass.vertices[c[0]] * width, b = pass.vertices[c[1]] * width, d = pass.vertices[c[2]] * width;
+    for (size_t i = 0; i < width; ++i) rows[v * width + i] = T(w.x * rows[a + i] + w.y * rows[b + i] + w.z * rows[d + i]);
   }
 }
 

@@ -63,7 +63,7 @@ TEST(MeshOrientation, AnInsideOutCubeIsTurnedBack) {
       EXPECT_TRUE(o.closed);
       EXPECT_EQ(o.winding_inward, flip_winding);
       EXPECT_EQ(o.normals_inward, flip_normals);
-      turn_outward(m, o);
+      turn_outward(m.triangles, m.normals, o);
       EXPECT_NEAR(volume(m), 1.0, 1e-12) << flip_winding << flip_normals;
       for (size_t v = 0; v < m.positions.size(); ++v)
         EXPECT_GT(glm::dot(m.normals[v], m.positions[v]), 0.0) << "vertex " << v;
