@@ -4,13 +4,15 @@ the way it would arrive (default flags, no hand tuning), one row per file and ru
 
 Usage: content_bench.py OUT_DIR [--build DIR] [--size small|full] [--files F,F,...] [--no-reference]
                         [--frames N] [--readme PATH] [--only PRODUCT,...]
+                        [--reference-supersample N]
 
   For each file (default: the corpus tests/scene/make_corpus.py writes, at --size, plus Debian's
   assimp-testmodels glTF 2.0 samples that are installed):
     weft bake                 time, bundle MB, peak memory
     weft run (auto, sheen)    first frame, median ms a frame (640×480 headless, --profile cpu)
     filament_peer --speed-only   Filament's frame on the same file and map (needs Xvfb)
-    weft render --method reference (320×240) against each rung's frame (frame_compare):
+    weft render --method reference (320×240; 2×2 rays a pixel where a material has a normal map)
+                              against each rung's frame (frame_compare):
                               relative RMSE over the product's pixels, worst 32×32 block of fine
                               detail over the reference's (an artefact past 2×)
   Writes OUT_DIR/results.csv and OUT_DIR/README.md (or --readme), logs under OUT_DIR/logs.
@@ -96,8 +98,9 @@ def bench_file(path, args, tools, out):
     if not args.no_reference:
         print(f"content_bench: {name}: reference", file=sys.stderr, flush=True)
         reference = out / "frames" / f"{tag}_reference.exr"
+        ss = args.reference_supersample or (2 if has_normal_map(path) else 1)
         code, _, _ = run([tools["offline"], "render", "--scene", path, "--method", "reference", "--width", "320",
-                          "--height", "240", "--out", reference], logs / f"{tag}_reference.log")
+                          "--height", "240", "--supersample", str(ss), "--out", reference], logs / f"{tag}_reference.log")
         if code != 0:
             reference = None
 
@@ -156,6 +159,22 @@ def write_readme(path, rows, command, machine):
     Path(path).write_text("\n".join(lines) + "\n")
 
 
+def has_normal_map(path):
+    """Whether a glTF file's materials carry a normal map (one sample a pixel aliases its bumps)."""
+    path = Path(path)
+    try:
+        if path.suffix == ".gltf":
+            doc = json.loads(path.read_text())
+        elif path.suffix == ".glb":
+            data = path.read_bytes()
+            doc = json.loads(data[20:20 + int.from_bytes(data[12:16], "little")])
+        else:
+            return False
+    except (OSError, ValueError):
+        return False
+    return any("normalTexture" in m for m in doc.get("materials", []))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("out")
@@ -163,6 +182,9 @@ def main():
     p.add_argument("--size", choices=["small", "full"], default="full")
     p.add_argument("--files", help="comma-separated glTF/scene files instead of the corpus")
     p.add_argument("--no-reference", action="store_true", help="skip the reference, the error and the artefact measure")
+    p.add_argument("--reference-supersample", type=int, default=0,
+                   help="the reference's rays a pixel along each axis (default 2 where a material has a normal map, "
+                   "whose bumps one ray a pixel aliases, else 1)")
     p.add_argument("--frames", type=int, default=40, help="kiosk frames a run")
     p.add_argument("--readme", help="where the table goes (default OUT/README.md)")
     p.add_argument("--only", help="comma-separated corpus products (e.g. chair,sofa) to run again; "

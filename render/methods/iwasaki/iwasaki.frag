@@ -14,6 +14,7 @@ void main() {
   iwasaki_thread_tint[0] = thread_tint(0, v_uv);
   iwasaki_thread_tint[1] = thread_tint(1, v_uv);
   vec3 n = v_normal, u = v_warp;
+  iwasaki_behind = dot(v_normal, u_eye - v_position) < 0.0;
   cloth_pixel_frame(v_position, u_eye, v_uv, n, u);
   o_radiance = vec4(iwasaki_radiance(v_position, n, u, ivec3(v_corners + 0.5), v_bary), 1.0);
 }

@@ -175,10 +175,16 @@ float horizon_fraction(float theta, float phi, float sigma_l, float sp, vec3 hz)
 // ∫∫ g^c g^c V' of one lobe (Eq. 12–13); `sdf` = (d, ∂d/∂θ, ∂d/∂φ) looked up once per (SG,
 // sample) at (θ_k, φ_k) and carried to the lobe's peak along its plane (iwasaki.cpp, LinearSdf);
 // V' is the horizon's alone, or the smaller of the horizon's and the SDF's (iwasaki.cpp).
+// The bake cast the visibility from the side the mesh normal points to; cloth seen from behind
+// (a fold's top layer, a curtain's back) is shaded on its other side, for which it holds nothing:
+// taken open there (iwasaki.h's on_side_shaded). A caller that turns the normal to the eye itself
+// (cloth_pixel_frame) sets iwasaki_behind where the mesh normal faced away.
+bool iwasaki_behind = false;
+bool iwasaki_baked_side = false;
 float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
   float i = pair_integral(theta_l, sigma_l, sp);
   float h = horizon_fraction(theta_l, phi_k, sigma_l, sp, hz);
-  if (!u_visibility || u_visibility_open_share) return i * h;
+  if (!iwasaki_baked_side || u_visibility_open_share) return i * h;
   return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
 
@@ -223,7 +229,12 @@ vec3 iwasaki_thread_tint[2] = vec3[2](vec3(1.0), vec3(1.0));
 vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3 bary, int k) {
   vec3 n = normalize(normal);
   vec3 wo = normalize(u_eye - position);
-  if (dot(n, wo) < 0.0) n = -n;  // thin cloth seen from behind: shade the side facing the eye
+  bool behind = iwasaki_behind;
+  if (dot(n, wo) < 0.0) {  // thin cloth seen from behind: shade the side facing the eye
+    n = -n;
+    behind = true;
+  }
+  iwasaki_baked_side = u_visibility && !behind;
   vec3 u = normalize(warp - dot(warp, n) * n);
   vec3 v = cross(n, u);
   vec3 wo_local = vec3(dot(wo, u), dot(wo, v), dot(wo, n));
@@ -266,7 +277,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       float w_peak = clamp(0.5 * log2(lambda_k / 2.0), 0.0, 1.0);  // iwasaki.cpp's lobe_peak_weight
       vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       vec3 vis_k = vec3(0.0);
-      if (u_visibility) {
+      if (iwasaki_baked_side) {
         vis_k = bary.x * sg_visibility(corners.x, k);
         // Per vertex the weights are (1, 0, 0): the other corners cost two fetches for nothing.
         if (bary.y != 0.0 || bary.z != 0.0)
@@ -293,7 +304,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           Lobe light = Lobe(1.0, theta_k, sigma_k);
           float spread_k = separable_spread(lambda_k, theta_k, sigma_k);
           vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
-          vec3 sdf = u_visibility && !u_visibility_open_share ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
+          vec3 sdf = iwasaki_baked_side && !u_visibility_open_share ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.

@@ -41,6 +41,15 @@ struct IwasakiVisibility {
   dvec3 facet_normal{0.0};
 };
 
+// The visibility a point is shaded with on the side facing the eye: the bake cast from the side
+// its mesh normal points to, so seen from behind (a fold's top layer, a curtain's back) the baked
+// SDF and shares say nothing of the side shaded and are dropped (open; the facet's cut stays), as
+// iwasaki_sg_split does.
+inline IwasakiVisibility on_side_shaded(IwasakiVisibility v, bool seen_from_behind) {
+  if (seen_from_behind) v.sdf = nullptr, v.open_share = nullptr, v.kappa = nullptr;
+  return v;
+}
+
 struct IwasakiTerms {
   dvec3 radiance{0.0};
   dvec3 surface{0.0};  // Σ over the f_rs part

@@ -25,6 +25,7 @@ void main() {
   iwasaki_thread_tint[0] = thread_tint(0, v_uv);
   iwasaki_thread_tint[1] = thread_tint(1, v_uv);
   vec3 n = v_normal, u = v_warp;
+  iwasaki_behind = dot(v_normal, u_eye - v_position) < 0.0;
   cloth_pixel_frame(v_position, u_eye, v_uv, n, u);
   ivec3 c = ivec3(v_corners + 0.5);
   vec3 broad = blended_broad(c, 0) + u_threads[0].albedo * iwasaki_thread_tint[0] * blended_broad(c, 1) +

@@ -40,7 +40,9 @@ ThinShade sheer_radiance(const ClothBsdf& bsdf, const WeightingTables& tables, c
     f.n = -f.n;
     f.v = glm::cross(f.n, f.u);
   }
-  const dvec3 reflection = iwasaki_radiance(bsdf, tables, f, wo, sgs, visibility).radiance;
+  IwasakiVisibility on_side;
+  if (visibility) on_side = on_side_shaded(*visibility, flipped);
+  const dvec3 reflection = iwasaki_radiance(bsdf, tables, f, wo, sgs, visibility ? &on_side : nullptr).radiance;
   std::vector<ThinSideVisibility> sides;
   for (double share : mesh_side) sides.push_back(flipped ? ThinSideVisibility{1.0, share} : ThinSideVisibility{share, 1.0});
   return thin_compose(layer, f.n, wo, sgs, reflection, sides);

@@ -10,7 +10,10 @@ vec3 sheer_warp;
 ivec3 sheer_corners;       // the SDF corners and weights, as iwasaki_radiance takes them
 vec3 sheer_bary;
 
-vec3 thin_reflection(vec3 n, vec3 u, vec3 wo) { return iwasaki_radiance(sheer_position, n, u, sheer_corners, sheer_bary); }
+vec3 thin_reflection(vec3 n, vec3 u, vec3 wo) {
+  iwasaki_behind = dot(sheer_mesh_normal, wo) < 0.0;  // n faces the eye already
+  return iwasaki_radiance(sheer_position, n, u, sheer_corners, sheer_bary);
+}
 
 // sheer.cpp's sheer_sdf_share for SG k.
 float sheer_sdf_share(int k) {
