@@ -11,8 +11,8 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "camera/camera_probe_plugin.h"
-#include "camera/light_probe_pipeline.h"
-#include "camera/mock_probe_source.h"
+#include "probe/light_probe_pipeline.h"
+#include "probe/mock_probe_source.h"
 #include "lighting/fit_error.h"
 #include "journal/journal_log.h"
 

@@ -1,7 +1,5 @@
 #include "bench/chart.h"
 
-#include <png.h>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -11,6 +9,7 @@
 #include <stdexcept>
 
 #include "files/atomic_file.h"
+#include "image/image.h"
 
 namespace weft::bench {
 
@@ -123,28 +122,6 @@ std::vector<ChartMarker> chart_markers(const std::vector<ChartPoint>& points) {
   return m;
 }
 
-void write_rgb8_png(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgb) {
-  write_file_atomically(file, [&](const std::filesystem::path& temporary) {
-    FILE* f = std::fopen(temporary.c_str(), "wb");
-    if (!f) throw std::runtime_error("cannot write " + file.string());
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png_create_info_struct(png);
-    if (setjmp(png_jmpbuf(png))) {
-      png_destroy_write_struct(&png, &info);
-      std::fclose(f);
-      throw std::runtime_error("libpng failed writing " + file.string());
-    }
-    png_init_io(png, f);
-    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    for (int y = 0; y < height; ++y) png_write_row(png, const_cast<png_bytep>(&rgb[size_t(y) * width * 3]));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    std::fclose(f);
-  });
-}
-
 void write_chart_png(const std::filesystem::path& file, const std::vector<ChartPoint>& points,
                      const std::string& title) {
   const int W = 960, H = 600, left = 90, right = 290, top = 50, bottom = 70;
@@ -198,7 +175,7 @@ void write_chart_png(const std::filesystem::path& file, const std::vector<ChartP
   }
   r.text(W - right + 14, ly + 10, "* PARETO FRONT", kFront);
   r.text(W - right + 14, ly + 30, "DOTS: CASES", kFront);
-  write_rgb8_png(file, W, H, r.px);
+  write_png_rgb8(W, H, r.px, file);
 }
 
 }  // namespace weft::bench

@@ -29,7 +29,4 @@ std::vector<ChartMarker> chart_markers(const std::vector<ChartPoint>& points);
 void write_chart_png(const std::filesystem::path& file, const std::vector<ChartPoint>& points,
                      const std::string& title);
 
-// An 8-bit RGB PNG of an image whose values are already in [0, 1] (no tone curve).
-void write_rgb8_png(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgb);
-
 }  // namespace weft::bench

@@ -54,7 +54,7 @@ Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& 
     for (size_t i = 0; i < em.pixels.size(); ++i)
       for (int ch = 0; ch < 3; ++ch) rgb[3 * i + ch] = static_cast<unsigned char>(std::lround(255.0 * em.pixels[i][ch]));
     r.error_image = "images/" + c.tag + "_" + file_id + "_error.png";
-    write_rgb8_png(out_ / r.error_image, em.width, em.height, rgb);
+    write_png_rgb8(em.width, em.height, rgb, out_ / r.error_image);
   }
   {
     std::vector<bool> lambertian(ref->kinds.size());

@@ -72,7 +72,7 @@ FitCondition measure_fit_condition(const BenchOptions& a, const std::string& env
   SgFitOptions bench_fit;
   bench_fit.count = a.sg_count;
   f.irradiance_error = measure_fit_error(map, fit_sgs(map, bench_fit)).irradiance_rmse;
-  // The light probe's settings (input/camera/light_probe_pipeline.h): grid 64, 8 iterations,
+  // The light probe's settings (render/probe/light_probe_pipeline.h): grid 64, 8 iterations,
   // warm-started from the last fit.
   SgFitOptions probe{a.sg_count, 64, 1.0, 1000.0, 8};
   SgLighting sgs = fit_sgs(map, probe);

@@ -4,7 +4,7 @@
 
 #include "kiosk/kiosk_config_error.h"
 #include "camera/camera_probe_plugin.h"
-#include "camera/mock_probe_source.h"
+#include "probe/mock_probe_source.h"
 
 namespace weft {
 

@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "camera/light_probe_pipeline.h"
+#include "probe/light_probe_pipeline.h"
 
 namespace weft {
 

@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <memory>
+#include <stdexcept>
 #include <vector>
 
-#include <png.h>
-
-#include "files/atomic_file.h"
+#include "image/image.h"
 
 namespace weft {
 
@@ -39,28 +36,11 @@ void write_preview_png(const std::filesystem::path& path, std::span<const EnvMap
               to_srgb8(-std::expm1(-exposure * small.at(x, y)[c]));
   }
 
-  write_file_atomically(path, [&](const std::filesystem::path& temporary) {
-    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
-    if (!file) throw EnvMapError(path, "cannot open for writing");
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info) {
-      png_destroy_write_struct(&png, nullptr);
-      throw EnvMapError(path, "libpng initialisation failed");
-    }
-    if (setjmp(png_jmpbuf(png))) {
-      png_destroy_write_struct(&png, &info);
-      throw EnvMapError(path, "libpng failed while writing");
-    }
-    png_init_io(png, file.get());
-    png_set_IHDR(png, info, total_width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    png_write_info(png, info);
-    for (int y = 0; y < height; ++y) png_write_row(png, &rgb[static_cast<size_t>(y) * total_width * 3]);
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-  });
+  try {
+    write_png_rgb8(total_width, height, rgb, path);
+  } catch (const std::runtime_error& e) {
+    throw EnvMapError(path, e.what());
+  }
 }
 
 }  // namespace weft

@@ -24,7 +24,7 @@ struct MaskedError {
 MaskedError masked_error(const Image& method, const Image& reference, const std::vector<bool>& mask);
 
 // |x−r| / mean(r) per cloth pixel as a colour ramp (black 0 → red 0.5 → yellow ≥ 1), grey
-// for other pixels: an sRGB-ready image (values in [0, 1]) for write_rgb8_png.
+// for other pixels: an sRGB-ready image (values in [0, 1]) for write_png_rgb8 (image/image.h).
 Image error_map(const Image& method, const Image& reference, const std::vector<PixelKind>& kinds);
 
 }  // namespace weft::bench

@@ -1,4 +1,4 @@
-#include "camera/light_probe_pipeline.h"
+#include "probe/light_probe_pipeline.h"
 
 #include <time.h>
 
@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "camera/hdr_merge.h"
-#include "camera/mirror_ball_unwrap.h"
+#include "probe/mirror_ball_unwrap.h"
 
 namespace weft {
 

@@ -29,7 +29,7 @@
 #include "camera/camera_response.h"
 #include "camera/light_probe_source.h"
 #include "camera/mirror_ball.h"
-#include "camera/sg_triple_buffer.h"
+#include "probe/sg_triple_buffer.h"
 #include "journal/journal_log.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"

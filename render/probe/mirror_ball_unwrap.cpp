@@ -1,4 +1,4 @@
-#include "camera/mirror_ball_unwrap.h"
+#include "probe/mirror_ball_unwrap.h"
 
 #include <cmath>
 #include <stdexcept>

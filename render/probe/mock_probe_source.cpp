@@ -1,4 +1,4 @@
-#include "camera/mock_probe_source.h"
+#include "probe/mock_probe_source.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Benchmark (label bench): the 10-SG fit on every sky of `weft bench --sweep sky` and every
 // bundled map (also turned 90°): irradiance error (fit_error.h) of the offline fit (`weft fit`'s
-// defaults on the full map) and of the light probe's update (input/camera/light_probe_pipeline.h:
+// defaults on the full map) and of the light probe's update (render/probe/light_probe_pipeline.h:
 // a 128×64 map, its fit options, warm-started from the previous fit), the CPU time of each, and
 // the sharpness range of the fitted lobes. Prints a table; asserts nothing.
 #include <algorithm>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "camera/light_probe_pipeline.h"
+#include "probe/light_probe_pipeline.h"
 #include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/sg_fit.h"

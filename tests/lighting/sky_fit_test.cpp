@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "camera/light_probe_pipeline.h"
+#include "probe/light_probe_pipeline.h"
 #include "lighting/fit_error.h"
 #include "lighting/procedural_sky.h"
 #include "lighting/sg_fit.h"

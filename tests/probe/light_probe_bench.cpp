@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "camera/light_probe_pipeline.h"
-#include "camera/mock_probe_source.h"
+#include "probe/light_probe_pipeline.h"
+#include "probe/mock_probe_source.h"
 #include "lighting/fit_error.h"
 
 using namespace weft;

@@ -12,9 +12,9 @@
 
 #include "camera/hdr_merge.h"
 #include "camera/camera_probe_plugin.h"
-#include "camera/light_probe_pipeline.h"
+#include "probe/light_probe_pipeline.h"
 #include "camera/mirror_ball.h"
-#include "camera/mock_probe_source.h"
+#include "probe/mock_probe_source.h"
 #include "lighting/fit_error.h"
 
 using namespace weft;
