@@ -7,7 +7,7 @@
 //   per-vertex:  kVertexStepCost × S × Σ_v T_v  +  kVertexDrawPixelCost × P
 // P: cloth pixels of the frame at 640×480, S: SGs, T_v: tangent samples of vertex v's fabric
 // (both threads), T̄: their mean over the cloth's vertices. The per-vertex pass runs the same
-// shading over one texel per vertex (methods/iwasaki/vertex_pass.h); the mesh's draw then
+// shading over one texel per vertex (methods/vertex_pass/vertex_pass.h); the mesh's draw then
 // interpolates it, a cost per cloth pixel independent of S and T.
 //
 // Calibrated on `weft bench` frame times at 640×480 (docs/bench/target_error/README.md, "Frame

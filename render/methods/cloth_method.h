@@ -68,7 +68,7 @@ public:
   virtual void refresh_all() {}
   // The time of the next draw, in seconds on the caller's clock (any origin, non-decreasing). With
   // temporal reuse, a method that can carries each kept per-vertex value on to it along the line
-  // through that value's last two computations (methods/iwasaki/vertex_history.glsl): a turning
+  // through that value's last two computations (methods/vertex_pass/vertex_history.glsl): a turning
   // camera's kept values lag the view far less. A caller that never sets it gets plain reuse.
   virtual void set_clock(double seconds) { (void)seconds; }
   // Whether kept per-vertex values follow the clock (and vertices seen edge-on are recomputed at
@@ -84,7 +84,7 @@ public:
   // Per-vertex work only for the vertices the frame shows, where the method can tell (the same
   // frame, less work); on by default. Off: every vertex (tests compare the two).
   virtual void set_visible_vertices_only(bool on) { (void)on; }
-  // The vertices of `handle` its last draw showed, where it marked them (iwasaki/visible_vertices.h):
+  // The vertices of `handle` its last draw showed, where it marked them (vertex_pass/visible_vertices.h):
   // the marks' buffer (a uint per vertex) and the stamp a shown vertex holds, so that a layer drawn
   // over the object from the same view takes them instead of rasterising the mesh again.
   struct ShownVertices {

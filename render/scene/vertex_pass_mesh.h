@@ -1,5 +1,5 @@
 #pragma once
-// The vertices a per-vertex pass shades (methods/iwasaki/vertex_pass.h), for a mesh denser than its
+// The vertices a per-vertex pass shades (methods/vertex_pass/vertex_pass.h), for a mesh denser than its
 // shading needs. A product export carries the density its modelling tool left (a 100k-vertex
 // sofa whose panels are nearly flat); the per-vertex rungs and the weave layer's vertex level only
 // need enough vertices for their interpolated shading to follow the surface. The pass mesh keeps a

@@ -1,5 +1,5 @@
 #pragma once
-// The per-vertex passes' texel layout (methods/iwasaki/vertex_pass.h): vertex i is the texel
+// The per-vertex passes' texel layout (methods/vertex_pass/vertex_pass.h): vertex i is the texel
 // (i mod W, i div W) with W = min(vertex count, kVertexTexelRow). Shared by the passes and by
 // the bake's vertex order (scene/mesh_vertex_order.h), which places nearby vertices in one
 // rasteriser block.

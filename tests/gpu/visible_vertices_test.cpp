@@ -1,4 +1,4 @@
-// The per-vertex passes for the vertices a frame shows only (methods/iwasaki/visible_vertices.h),
+// The per-vertex passes for the vertices a frame shows only (methods/vertex_pass/visible_vertices.h),
 // on a pillow seen from its side (the far half of its sheet faces away), its lower part hidden
 // behind a cloth panel and its left end cut off by the frame's edge:
 //  - the vertices marked are those of the triangles that a ray through some pixel centre hits
@@ -24,7 +24,7 @@
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
 #include "methods/iwasaki/iwasaki_cloth.h"
-#include "methods/iwasaki/visible_vertices.h"
+#include "methods/vertex_pass/visible_vertices.h"
 #include "reference/ray_scene.h"
 #include "scene/procedural_meshes.h"
 #include "scene/scene.h"

@@ -1,5 +1,5 @@
 // The weave layer's vertex pass for the vertices a frame shows only (methods/weave/weave_layer.h,
-// iwasaki/visible_vertices.h): the kiosk's frame of a pillow at its close-up, and turned a few
+// vertex_pass/visible_vertices.h): the kiosk's frame of a pillow at its close-up, and turned a few
 // degrees from there, is the frame with every vertex computed, bit for bit, for a per-vertex rung
 // and for `sheen` (whose own draw has no passes, so the weave's are the only ones culled); the
 // layer did draw (the frame differs from the weave off); and with culling then switched off, a
@@ -22,7 +22,7 @@
 #include "kiosk/camera_zoom.h"
 #include "kiosk/kiosk_bundle.h"
 #include "kiosk/kiosk_renderer.h"
-#include "methods/iwasaki/visible_vertices.h"
+#include "methods/vertex_pass/visible_vertices.h"
 #include "support/small_bundle.h"
 
 using namespace weft;

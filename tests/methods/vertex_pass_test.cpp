@@ -1,4 +1,4 @@
-// The per-vertex pass's temporal reuse (methods/iwasaki/vertex_pass.h): with a program that writes
+// The per-vertex pass's temporal reuse (methods/vertex_pass/vertex_pass.h): with a program that writes
 // the call number into every texel it computes, each vertex of each block must hold the call at
 // which its block's share last covered it — every vertex once per `shares` calls, no vertex twice,
 // none skipped — with a rate per block, and a whole pass after invalidate(); with a program per
@@ -17,7 +17,7 @@
 #include "gl/gl_program.h"
 #include "gl/offscreen_target.h"
 #include "gpu/egl_context.h"
-#include "methods/iwasaki/vertex_pass.h"
+#include "methods/vertex_pass/vertex_pass.h"
 #include "scene/procedural_meshes.h"
 #include "scene/vertex_pass_mesh.h"
 #include "shaders/embedded_shaders.h"

@@ -12,8 +12,8 @@
 #include "methods/fabric_uniforms.h"
 #include "methods/program_cloth.h"
 #include "methods/iwasaki/vertex_normal_map.h"
-#include "methods/iwasaki/vertex_pass.h"
-#include "methods/iwasaki/visible_vertices.h"
+#include "methods/vertex_pass/vertex_pass.h"
+#include "methods/vertex_pass/visible_vertices.h"
 #include "methods/weave/weave_ratio.h"
 #include "shaders/embedded_shaders.h"
 

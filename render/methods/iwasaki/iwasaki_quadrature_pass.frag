@@ -1,5 +1,5 @@
 // Methods `iwasaki_vertex_quadrature` and `iwasaki_quadrature`, the per-vertex pass
-// (methods/iwasaki/vertex_pass.h): at every mesh vertex the broad lobes' quadrature
+// (methods/vertex_pass/vertex_pass.h): at every mesh vertex the broad lobes' quadrature
 // (broad_lobe_quadrature.glsl), split as (surface, warp volume, weft volume) per unit albedo so that
 // the albedo (a knob, a texture's texel) applies per pixel. With u_pass_narrow
 // (iwasaki_vertex_quadrature) one fragment per (vertex, SG k) in row block k, as

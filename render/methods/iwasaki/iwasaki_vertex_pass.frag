@@ -1,4 +1,4 @@
-// Methods `iwasaki_vertex` and `iwasaki_vertex_mask`, step 1 (methods/iwasaki/vertex_pass.h):
+// Methods `iwasaki_vertex` and `iwasaki_vertex_mask`, step 1 (methods/vertex_pass/vertex_pass.h):
 // iwasaki_sg_split (iwasaki.glsl) at every mesh vertex and SG, one fragment per (vertex i, SG k) at
 // texel (i mod W, i div W + k·rows), with the vertex's own SDF values (weight 1): the SG's light at
 // unit amplitude as (surface, warp volume, weft volume). iwasaki_vertex.vert then reads the vertex's

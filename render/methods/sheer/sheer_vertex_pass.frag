@@ -1,4 +1,4 @@
-// Method `sheer_vertex`, step 1 (methods/iwasaki/vertex_pass.h): the sheer layer (sheer.glsl) at
+// Method `sheer_vertex`, step 1 (methods/vertex_pass/vertex_pass.h): the sheer layer (sheer.glsl) at
 // every mesh vertex, one fragment per vertex i at texel (i mod W, i div W), with the vertex's own
 // SDF values: premultiplied source and alpha. sheer_vertex.vert reads them by gl_VertexID.
 out vec4 o_radiance;

@@ -22,8 +22,8 @@
 #include "gl/gpu_mesh.h"
 #include "methods/cloth_method.h"
 #include "methods/fabric_uniforms.h"
-#include "methods/iwasaki/vertex_pass.h"
-#include "methods/iwasaki/visible_vertices.h"
+#include "methods/vertex_pass/vertex_pass.h"
+#include "methods/vertex_pass/visible_vertices.h"
 #include "methods/weave/weave_lights.h"
 #include "methods/weave/weave_ratio.h"
 #include "methods/weave/weave_reach.h"
@@ -65,7 +65,7 @@ public:
   void set_terms(Terms terms) { terms_ = terms; }
   Terms terms() const { return terms_; }
   // On (the default, where the GL has GLES 3.2): the vertex pass computes only the vertices of
-  // triangles the frame shows (iwasaki/visible_vertices.h); the frame is the same.
+  // triangles the frame shows (vertex_pass/visible_vertices.h); the frame is the same.
   void set_visible_vertices_only(bool on) { visible_only_ = on; }
   // Temporal reuse of the per-vertex terms and tables (VertexPass::run_share): each draw
   // recomputes 1/shares of the vertices in reach and keeps the others' (default 1: all). A vertex

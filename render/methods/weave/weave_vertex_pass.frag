@@ -1,4 +1,4 @@
-// The weave layer's terms per vertex (methods/iwasaki/vertex_pass.h), for a method that shades per
+// The weave layer's terms per vertex (methods/vertex_pass/vertex_pass.h), for a method that shades per
 // vertex: at every mesh vertex, block 0 the fabric-level response to the SGs as point lights and
 // blocks 1 … Q_GROUPS each light's Q, four to a texel (weave_terms, with the vertex's
 // weave_visibility). The layer's vertex shader

@@ -1,4 +1,4 @@
-// VisibleVertices (methods/iwasaki/visible_vertices.h): with u_mark, a fragment in front (the
+// VisibleVertices (methods/vertex_pass/visible_vertices.h): with u_mark, a fragment in front (the
 // depth test runs before the shader) stores u_stamp in its triangle's three vertices; without,
 // the depth pass, it only writes depth.
 layout(early_fragment_tests) in;

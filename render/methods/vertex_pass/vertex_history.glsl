@@ -1,4 +1,4 @@
-// A per-vertex pass's value extrapolated to the frame's time (methods/iwasaki/vertex_pass.h's
+// A per-vertex pass's value extrapolated to the frame's time (methods/vertex_pass/vertex_pass.h's
 // set_history): with temporal reuse a vertex is recomputed once per round of its block's shares,
 // and while the camera turns a kept value lags the view. The pass keeps, per texel, its latest
 // value a (time in a.w) and the one before b; the line through them carried on to now follows

@@ -1,4 +1,4 @@
-// VisibleVertices (methods/iwasaki/visible_vertices.h): the mesh as the per-vertex rungs' draw
+// VisibleVertices (methods/vertex_pass/visible_vertices.h): the mesh as the per-vertex rungs' draw
 // places it (iwasaki_vertex.vert), invariant so both rasterise the same pixels.
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_view_projection;

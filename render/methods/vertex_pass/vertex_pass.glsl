@@ -1,4 +1,4 @@
-// The per-vertex pass's layout (methods/iwasaki/vertex_pass.h), for the passes' fragment shaders:
+// The per-vertex pass's layout (methods/vertex_pass/vertex_pass.h), for the passes' fragment shaders:
 // one fragment per (pass vertex n, block k) at texel (n mod W, n div W + k·rows), each pass
 // vertex's position, normal and warp at its texel of block 0, the mesh vertex it is in the
 // position's .w. Every mesh vertex is a pass vertex (n = i) unless the mesh is denser than its

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl/gl_program.h"
-#include "methods/iwasaki/iwasaki_textures.h"
+#include "gl/gl_texture.h"
 #include "gl/offscreen_target.h"
 #include "scene/mesh.h"
 #include "scene/vertex_pass_mesh.h"

@@ -1,4 +1,4 @@
-#include "methods/iwasaki/visible_vertices.h"
+#include "methods/vertex_pass/visible_vertices.h"
 
 #include <GLES3/gl32.h>
 
@@ -11,7 +11,7 @@
 
 #include "gl/frame_profile.h"
 #include "gl/gl_error.h"
-#include "methods/iwasaki/vertex_pass.h"
+#include "methods/vertex_pass/vertex_pass.h"
 #include "shaders/embedded_shaders.h"
 
 namespace weft::gpu {

@@ -1,4 +1,4 @@
-#include "methods/iwasaki/vertex_pass.h"
+#include "methods/vertex_pass/vertex_pass.h"
 
 #include <algorithm>
 #include <string>
