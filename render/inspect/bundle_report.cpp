@@ -3,6 +3,7 @@
 #include "kiosk/kiosk_bundle.h"
 #include "kiosk/kiosk_config_error.h"
 #include "methods/registry.h"
+#include "scene/object_schema.h"
 
 namespace weft {
 
@@ -25,7 +26,7 @@ std::map<std::string, nlohmann::json> bake_sections(const bundle::BundleReader& 
 ObjectReport object_report(const SceneObject& o, const SceneBundle& scene) {
   ObjectReport r;
   r.name = o.name;
-  r.material = o.is_cloth() ? "cloth" : "lambertian";
+  r.material = material_name(o.material);
   if (o.is_cloth()) {
     r.fabric = o.fabric;
     r.optical_thickness = object_fabric(o, scene.fabrics.at(o.fabric)).optical_thickness;

@@ -32,7 +32,7 @@ struct BundleVerdict {
 
 struct ObjectReport {
   std::string name;
-  std::string material;           // "cloth" or "lambertian"
+  std::string material;           // material_name (scene/object_schema.h): "cloth" or "lambertian"
   std::string fabric;             // cloth: its preset
   double optical_thickness = 0;   // cloth: > 0 when shown as a sheer (its own or its fabric's)
   std::optional<std::array<double, 3>> colour;  // cloth: the product's colour on its fabric, when it has one

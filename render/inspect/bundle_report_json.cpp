@@ -1,6 +1,7 @@
 #include "inspect/bundle_report_json.h"
 
 #include "bundle/bundle_format.h"
+#include "scene/object_schema.h"
 
 namespace weft {
 
@@ -9,7 +10,7 @@ namespace {
 nlohmann::json text_or_null(const std::string& s) { return s.empty() ? nlohmann::json() : nlohmann::json(s); }
 
 nlohmann::json object_json(const ObjectReport& o, std::size_t index) {
-  const bool cloth = o.material == "cloth";
+  const bool cloth = o.material == material_name(Material::cloth);
   return {{"index", index},
           {"name", o.name},
           {"material", o.material},

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "bundle/bundle_format.h"
+#include "scene/object_schema.h"
 
 namespace weft {
 
@@ -81,7 +82,7 @@ void write_report_text(const BundleReport& r, std::ostream& out) {
   for (std::size_t i = 0; i < r.objects.size(); ++i) {
     const ObjectReport& o = r.objects[i];
     out << "  " << i << " " << o.name << ": " << o.material;
-    if (o.material == "cloth") out << " " << o.fabric;
+    if (o.material == material_name(Material::cloth)) out << " " << o.fabric;
     if (o.colour) out << " in " << colour_text(*o.colour);
     if (o.optical_thickness > 0) out << " (sheer, optical thickness " << o.optical_thickness << ")";
     out << ", " << o.vertices << " vertices, " << o.triangles << " triangles\n";

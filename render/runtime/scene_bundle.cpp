@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lighting/sg_set_io.h"
-#include "scene/thread_maps.h"
+#include "scene/object_schema.h"
 #include "scene/vertex_pass_mesh.h"
 
 namespace weft {
@@ -41,13 +41,6 @@ glm::dvec3 read_vec3(const bundle::BundleReader& r, const std::string& section, 
     v[k] = j[k].get<double>();
   }
   return v;
-}
-
-glm::dvec3 read_colour(const bundle::BundleReader& r, const std::string& section, const json& j, const std::string& what) {
-  const glm::dvec3 c = read_vec3(r, section, j);
-  for (int k = 0; k < 3; ++k)
-    if (!(c[k] >= 0.0 && c[k] <= 1.0)) throw bad(r, section, what + ": colour " + j.dump() + " outside [0, 1]");
-  return c;
 }
 
 // An [n, width] f32 section as n vectors; n must equal `expected_rows` unless that is 0 (any).
@@ -103,9 +96,8 @@ std::shared_ptr<const VertexPassMesh> read_pass_mesh(const bundle::BundleReader&
 }
 
 // The scene's "textures": each decoded from its section's PNG, its size as the list says.
-std::vector<std::shared_ptr<const TextureImage>> read_textures(const bundle::BundleReader& r, const json& j,
-                                                               std::vector<std::string>& names) {
-  std::vector<std::shared_ptr<const TextureImage>> out;
+std::vector<SectionTexture> read_textures(const bundle::BundleReader& r, const json& j) {
+  std::vector<SectionTexture> out;
   if (!j.contains("textures")) return out;
   const json& list = j.at("textures");
   const std::string S = scene_section::kScene;
@@ -127,8 +119,7 @@ std::vector<std::shared_ptr<const TextureImage>> read_textures(const bundle::Bun
     if (t.at("width").get<long>() != image.width || t.at("height").get<long>() != image.height)
       throw bad(r, name, "the image is " + std::to_string(image.width) + "×" + std::to_string(image.height) +
                              ", the scene section says " + t.at("width").dump() + "×" + t.at("height").dump());
-    names.push_back(t.at("name").get<std::string>());
-    out.push_back(std::make_shared<const TextureImage>(std::move(image)));
+    out.push_back({std::make_shared<const TextureImage>(std::move(image)), t.at("name").get<std::string>()});
   }
   return out;
 }
@@ -170,86 +161,18 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
     };
     s.camera = camera(j.at("camera"), "camera");
     if (j.contains("closeup_camera")) s.closeup = camera(j.at("closeup_camera"), "closeup_camera");
-    std::vector<std::string> texture_names;
-    const auto textures = read_textures(r, j, texture_names);
+    const std::vector<SectionTexture> textures = read_textures(r, j);
     const json& objects = j.at("objects");
     if (!objects.is_array() || objects.empty()) throw bad(r, S, "no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
-      const json& jo = objects[i];
       SceneObject o;
-      o.name = jo.at("name").get<std::string>();
-      const std::string material = jo.at("material").get<std::string>();
-      if (material == "cloth") {
-        o.material = Material::cloth;
-        o.fabric = jo.at("fabric").get<std::string>();
-        if (!out.fabrics.count(o.fabric)) throw bad(r, F, "no fabric '" + o.fabric + "' for object '" + o.name + "'");
-        if (jo.contains("optical_thickness")) {
-          o.optical_thickness = jo.at("optical_thickness").get<double>();
-          if (!(o.optical_thickness > 0.0 && o.optical_thickness <= kMaxOpticalThickness))
-            throw bad(r, S, "object '" + o.name + "': optical_thickness outside (0, 20]");
-        }
-        if (jo.contains("weave_repeats_per_uv")) {
-          const json& w = jo.at("weave_repeats_per_uv");
-          if (!w.is_array() || w.size() != 2) throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv is not two numbers");
-          o.weave_repeats_per_uv = {w[0].get<double>(), w[1].get<double>()};
-          for (double x : {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y})
-            if (!(x > 0.0 && x <= kMaxWeaveRepeatsPerUv))
-              throw bad(r, S, "object '" + o.name + "': weave_repeats_per_uv outside (0, 10^6]");
-        }
-        if (jo.contains("colour")) o.colour = read_colour(r, S, jo.at("colour"), "object '" + o.name + "'");
-        for (auto [key, into] : {std::pair{"display_name", &o.display_name}, std::pair{"composition", &o.composition}}) {
-          if (!jo.contains(key)) continue;
-          if (!jo.at(key).is_string()) throw bad(r, S, "object '" + o.name + "': " + key + " is not a string");
-          *into = jo.at(key).get<std::string>();
-          if (const std::string why = fabric_text_problem(*into); !why.empty())
-            throw bad(r, S, "object '" + o.name + "': " + key + ": " + why);
-        }
-        if (jo.contains("thread_maps")) {
-          const json& maps = jo.at("thread_maps");
-          const std::string w = "object '" + o.name + "': thread_maps";
-          if (!maps.is_array() || maps.size() != 2) throw bad(r, S, w + ": expected [warp, weft]");
-          for (int t = 0; t < 2; ++t) {
-            if (maps[t].is_null()) continue;
-            const json& m = maps[t];
-            const long index = m.at("texture").get<long>();
-            if (index < 0 || size_t(index) >= textures.size())
-              throw bad(r, S, w + ": texture " + std::to_string(index) + " is not among the " +
-                                  std::to_string(textures.size()) + " textures");
-            ThreadMap tm;
-            tm.image = textures[size_t(index)];
-            tm.name = texture_names[size_t(index)];
-            tm.transform.offset = {m.at("offset").at(0).get<double>(), m.at("offset").at(1).get<double>()};
-            tm.transform.scale = {m.at("scale").at(0).get<double>(), m.at("scale").at(1).get<double>()};
-            tm.transform.rotation = m.at("rotation").get<double>();
-            if (const std::string why = texture_transform_problem(tm.transform); !why.empty())
-              throw bad(r, S, w + ": " + why);
-            o.thread_maps[t] = tm;
-          }
-        }
-        if (jo.contains("normal_map")) {
-          const json& m = jo.at("normal_map");
-          const std::string w = "object '" + o.name + "': normal_map";
-          const long index = m.at("texture").get<long>();
-          if (index < 0 || size_t(index) >= textures.size())
-            throw bad(r, S, w + ": texture " + std::to_string(index) + " is not among the " +
-                                std::to_string(textures.size()) + " textures");
-          NormalMap nm;
-          nm.map.image = textures[size_t(index)];
-          nm.map.name = texture_names[size_t(index)];
-          nm.map.transform.offset = {m.at("offset").at(0).get<double>(), m.at("offset").at(1).get<double>()};
-          nm.map.transform.scale = {m.at("scale").at(0).get<double>(), m.at("scale").at(1).get<double>()};
-          nm.map.transform.rotation = m.at("rotation").get<double>();
-          nm.scale = m.at("normal_scale").get<double>();
-          if (const std::string why = texture_transform_problem(nm.map.transform); !why.empty())
-            throw bad(r, S, w + ": " + why);
-          if (!std::isfinite(nm.scale)) throw bad(r, S, w + ": normal_scale is not finite");
-          o.normal_map = nm;
-        }
-      } else if (material == "lambertian") {
-        o.albedo = read_vec3(r, S, jo.at("albedo"));
-      } else {
-        throw bad(r, S, "object '" + o.name + "': unknown material '" + material + "'");
+      try {
+        o = read_scene_object(objects[i], "objects[" + std::to_string(i) + "]", textures);
+      } catch (const SceneError& e) {
+        throw bad(r, S, e.what());
       }
+      if (o.is_cloth() && !out.fabrics.count(o.fabric))
+        throw bad(r, F, "no fabric '" + o.fabric + "' for object '" + o.name + "'");
       TriangleMesh& m = o.mesh;
       m.positions = read_rows<glm::dvec3>(r, scene_section::mesh(i, "positions"), 3, 0);
       const size_t n = m.positions.size();
@@ -279,7 +202,8 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
     if (j.contains("colourways")) {
       const json& cs = j.at("colourways");
       if (!cs.is_array() || cs.empty()) throw bad(r, S, "colourways: expected a non-empty list");
-      for (const json& jc : cs) {
+      for (size_t k = 0; k < cs.size(); ++k) {
+        const json& jc = cs[k];
         Colourway c;
         c.name = jc.at("name").get<std::string>();
         for (const auto& [object, jl] : jc.at("objects").items()) {
@@ -287,7 +211,14 @@ SceneBundle read_scene_bundle(const bundle::BundleReader& r) {
           look.fabric = jl.at("fabric").get<std::string>();
           if (!out.fabrics.count(look.fabric))
             throw bad(r, F, "no fabric '" + look.fabric + "' for colourway '" + c.name + "'");
-          if (jl.contains("colour")) look.colour = read_colour(r, S, jl.at("colour"), "colourway '" + c.name + "'");
+          if (jl.contains("colour")) {
+            const std::string where = "colourways[" + std::to_string(k) + "] ('" + c.name + "').objects." + object + ".colour";
+            try {
+              look.colour = colour_from_json(jl.at("colour"), where);
+            } catch (const SceneError& e) {
+              throw bad(r, S, e.what());
+            }
+          }
           c.objects[object] = look;
         }
         s.colourways.push_back(std::move(c));

@@ -9,6 +9,7 @@
 
 #include "core/preset_names.h"
 #include "scene/gltf_scene.h"
+#include "scene/object_schema.h"
 #include "scene/procedural_meshes.h"
 #include "scene/thread_maps.h"
 
@@ -54,21 +55,6 @@ double number_or(const json& j, const std::string& key, double fallback, const s
 glm::dvec3 vec3(const json& v, const std::string& where) {
   if (!v.is_array() || v.size() != 3) throw SceneError(where + ": expected [x, y, z], got " + v.dump());
   return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
-}
-
-glm::dvec2 repeats_per_uv(const json& v, const std::string& where) {
-  if (!v.is_array() || v.size() != 2) throw SceneError(where + ": expected [along u, along v], got " + v.dump());
-  const glm::dvec2 r{number(v[0], where + "[0]"), number(v[1], where + "[1]")};
-  if (!(r.x > 0.0 && r.y > 0.0 && r.x <= kMaxWeaveRepeatsPerUv && r.y <= kMaxWeaveRepeatsPerUv))
-    throw SceneError(where + ": repeats per UV unit must be in (0, " + std::to_string(int(kMaxWeaveRepeatsPerUv)) + "]");
-  return r;
-}
-
-glm::dvec3 colour_field(const json& v, const std::string& where) {
-  if (!v.is_array()) throw SceneError(where + ": expected a colour [r, g, b]");
-  std::vector<double> rgb;
-  for (const auto& x : v) rgb.push_back(number(x, where));
-  return product_colour(rgb, where);
 }
 
 std::string text(const json& v, const std::string& where) {
@@ -173,7 +159,7 @@ std::vector<Colourway> parse_colourways(const json& j, const Scene& s, const std
       } else if (it != s.objects.end()) {
         l.fabric = it->fabric;
       }
-      if (look.contains("colour")) l.colour = colour_field(look["colour"], lw + ".colour");
+      if (look.contains("colour")) l.colour = colour_from_json(look["colour"], lw + ".colour");
       c.objects[object] = l;
     }
     out.push_back(std::move(c));
@@ -247,16 +233,13 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
     const json& o = objects[i];
     const std::string where = origin + ": objects[" + std::to_string(i) + "]";
     SceneObject obj;
-    obj.name = text(field(o, "name", where), where + ".name");
-    const std::string material = text(field(o, "material", where), where + ".material");
-    if (material == "cloth") {
-      obj.material = Material::cloth;
-      obj.fabric = text(field(o, "fabric", where), where + ".fabric");
-      obj.optical_thickness = number_or(o, "optical_thickness", 0.0, where, 0.0, kMaxOpticalThickness);
-      if (o.contains("optical_thickness") && obj.optical_thickness <= 0.0)
-        throw SceneError(where + ".optical_thickness: must be > 0 (leave it out for the fabric's own)");
-      if (o.contains("weave_repeats_per_uv")) obj.weave_repeats_per_uv = repeats_per_uv(o["weave_repeats_per_uv"], where + ".weave_repeats_per_uv");
-      if (o.contains("colour")) obj.colour = colour_field(o["colour"], where + ".colour");
+    obj.name = read_object_name(o, where);
+    obj.material = read_material(o, where);
+    if (obj.is_cloth()) {
+      obj.fabric = read_fabric(o, where);
+      obj.optical_thickness = read_optical_thickness(o, where);
+      obj.weave_repeats_per_uv = read_weave_repeats_per_uv(o, where);
+      obj.colour = read_colour(o, where);
       if (o.contains("texture")) {
         obj.thread_maps[0] = parse_thread_map(o["texture"], where + ".texture", base_dir, textures);
         obj.thread_maps[1] = obj.thread_maps[0];
@@ -266,14 +249,8 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
         obj.thread_maps[1] = parse_thread_map(o["weft_texture"], where + ".weft_texture", base_dir, textures);
       }
       if (o.contains("normal_map")) obj.normal_map = parse_normal_map(o["normal_map"], where + ".normal_map", base_dir, textures);
-    } else if (material == "lambertian") {
-      obj.material = Material::lambertian;
-      obj.albedo = vec3(field(o, "albedo", where), where + ".albedo");
-      for (int c = 0; c < 3; ++c)
-        if (obj.albedo[c] < 0.0 || obj.albedo[c] > 1.0)
-          throw SceneError(where + ".albedo: components must be in [0, 1]");
     } else {
-      throw SceneError(where + ".material: '" + material + "' is neither 'cloth' nor 'lambertian'");
+      obj.albedo = read_albedo(o, where);
     }
     try {
       obj.mesh = generate_mesh(field(o, "mesh", where), where + ".mesh", base_dir);
@@ -287,8 +264,6 @@ Scene parse_scene(const std::string& json_text, const std::string& origin, const
   check_colourways(s, origin);
   return s;
 }
-
-
 
 Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
   if (is_gltf_path(file.string())) {

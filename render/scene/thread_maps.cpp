@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/normal_map_frame.h"
+#include "scene/object_schema.h"
 
 namespace weft {
 
@@ -65,16 +66,6 @@ std::shared_ptr<const TextureImage> load_texture_file(const std::filesystem::pat
   }
 }
 
-namespace {
-glm::dvec2 pair_field(const nlohmann::json& j, const char* key, glm::dvec2 fallback, const std::string& where) {
-  if (!j.contains(key)) return fallback;
-  const nlohmann::json& v = j[key];
-  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
-    throw SceneError(where + "." + key + ": expected [u, v], got " + v.dump());
-  return {v[0].get<double>(), v[1].get<double>()};
-}
-}  // namespace
-
 ThreadMap parse_thread_map(const nlohmann::json& j, const std::string& where, const std::filesystem::path& base_dir,
                            TextureFiles& files) {
   if (!j.is_object()) throw SceneError(where + ": expected {\"image\", \"offset\", \"scale\", \"rotation\"}");
@@ -87,13 +78,7 @@ ThreadMap parse_thread_map(const nlohmann::json& j, const std::string& where, co
   const std::string named = j["image"].get<std::string>();
   const std::filesystem::path file = (base_dir / named).lexically_normal();
   m.name = std::filesystem::path(named).filename().string();
-  m.transform.offset = pair_field(j, "offset", glm::dvec2(0.0), where);
-  m.transform.scale = pair_field(j, "scale", glm::dvec2(1.0), where);
-  if (j.contains("rotation")) {
-    if (!j["rotation"].is_number()) throw SceneError(where + ".rotation: expected a number (radians)");
-    m.transform.rotation = j["rotation"].get<double>();
-  }
-  if (const std::string why = texture_transform_problem(m.transform); !why.empty()) throw SceneError(where + ": " + why);
+  m.transform = read_texture_transform(j, where);
   auto it = files.find(file.string());
   if (it == files.end()) {
     if (files.size() >= kMaxSceneTextures)
@@ -112,12 +97,7 @@ NormalMap parse_normal_map(const nlohmann::json& j, const std::string& where, co
     if (key != "image" && key != "offset" && key != "scale" && key != "rotation" && key != "normal_scale")
       throw SceneError(where + "." + key + ": unknown (known: image, offset, scale, rotation, normal_scale)");
   NormalMap m;
-  if (j.contains("normal_scale")) {
-    const nlohmann::json& s = j["normal_scale"];
-    if (!s.is_number() || !std::isfinite(s.get<double>()) || std::abs(s.get<double>()) > 1e6)
-      throw SceneError(where + ".normal_scale: expected a finite number within ±10^6, got " + s.dump());
-    m.scale = s.get<double>();
-  }
+  if (j.contains("normal_scale")) m.scale = normal_scale_from_json(j["normal_scale"], where + ".normal_scale");
   nlohmann::json map = j;
   map.erase("normal_scale");
   m.map = parse_thread_map(map, where, base_dir, files);

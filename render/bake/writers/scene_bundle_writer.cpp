@@ -1,10 +1,10 @@
 #include "bake/writers/scene_bundle_writer.h"
 
-#include "scene/vertex_pass_mesh.h"
-
 #include <nlohmann/json.hpp>
 
 #include "lighting/sg_set_io.h"
+#include "scene/object_schema.h"
+#include "scene/vertex_pass_mesh.h"
 
 namespace weft {
 
@@ -13,11 +13,6 @@ namespace {
 using nlohmann::json;
 
 json vec3(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
-
-json thread_map_json(const ThreadMap& m, size_t texture) {
-  const TextureTransform& t = m.transform;
-  return {{"texture", texture}, {"offset", {t.offset.x, t.offset.y}}, {"scale", {t.scale.x, t.scale.y}}, {"rotation", t.rotation}};
-}
 
 template <class V>
 std::vector<float> flatten(const std::vector<V>& values, int n) {
@@ -66,33 +61,9 @@ void add_scene_sections(bundle::BundleWriter& writer, const SceneBundleInput& in
   json objects = json::array();
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
-    json jo{{"name", o.name}};
-    if (o.is_cloth()) {
-      if (!in.fabrics.count(o.fabric))
-        throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
-      jo["material"] = "cloth";
-      jo["fabric"] = o.fabric;
-      if (o.optical_thickness > 0.0) jo["optical_thickness"] = o.optical_thickness;
-      if (o.weave_repeats_per_uv.x > 0.0 && o.weave_repeats_per_uv.y > 0.0)
-        jo["weave_repeats_per_uv"] = {o.weave_repeats_per_uv.x, o.weave_repeats_per_uv.y};
-      if (o.colour) jo["colour"] = vec3(*o.colour);
-      if (!o.display_name.empty()) jo["display_name"] = o.display_name;
-      if (!o.composition.empty()) jo["composition"] = o.composition;
-      if (o.textured()) {
-        json maps = json::array();
-        for (const auto& m : o.thread_maps) maps.push_back(m ? thread_map_json(*m, texture_index.at(m->image.get())) : json());
-        jo["thread_maps"] = maps;
-      }
-      if (o.normal_map) {
-        jo["normal_map"] = thread_map_json(o.normal_map->map, texture_index.at(o.normal_map->map.image.get()));
-        jo["normal_map"]["normal_scale"] = o.normal_map->scale;
-        jo["normal_map"]["colour_space"] = "linear";
-      }
-    } else {
-      jo["material"] = "lambertian";
-      jo["albedo"] = vec3(o.albedo);
-    }
-    objects.push_back(jo);
+    if (o.is_cloth() && !in.fabrics.count(o.fabric))
+      throw std::invalid_argument("scene bundle: no fabric text for '" + o.fabric + "' (object " + o.name + ")");
+    objects.push_back(write_scene_object(o, [&](const ThreadMap& m) { return texture_index.at(m.image.get()); }));
     const TriangleMesh& m = o.mesh;
     const uint64_t n = m.positions.size();
     writer.add_array<float>(scene_section::mesh(i, "positions"), flatten(m.positions, 3), {n, 3});
