@@ -1,20 +1,14 @@
 #pragma once
 // The knobs' way home: after a while with nobody at the panel, the kiosk eases the look back to
 // where the bundle starts it (the fabric a shopper walking up should see first), then keeps it.
+// Each step of the way is a look (panel/appearance_blend.h) that the kiosk applies as it applies
+// the knobs' (kiosk/look_applier.h).
 #include <chrono>
 #include <optional>
 
 #include "panel/appearance_state.h"
 
 namespace weft {
-
-// The look a fraction t ∈ [0, 1] of the way from `from` to `to`: thread albedos in linear RGB,
-// gloss (γ scale) geometrically, the light's turn along the shorter arc, the zoom linearly. A
-// different preset or colourway cannot be blended (another fabric): `to` at once.
-input::AppearanceState blend_appearance(const input::AppearanceState& from, const input::AppearanceState& to, double t);
-
-// Whether two looks are the same in every field the renderer reads.
-bool same_appearance(const input::AppearanceState& a, const input::AppearanceState& b);
 
 class IdleReturn {
 public:

@@ -13,7 +13,6 @@
 
 #include "bundle/bundle_fallback.h"
 #include "camera/camera_probe_plugin.h"
-#include "gl/gl_error.h"
 #include "gpu/egl_context.h"
 #include "gl/offscreen_target.h"
 #include "image/tone_map.h"
@@ -23,8 +22,6 @@
 #include "kiosk/kiosk_light_probe.h"
 #include "kiosk/kiosk_log.h"
 #include "kiosk/kiosk_renderer.h"
-#include "kiosk/knob_appearance.h"
-#include "kiosk/knob_presets.h"
 #include "kiosk/turntable.h"
 #include "methods/registry.h"
 
@@ -42,6 +39,14 @@ constexpr double kIdleEaseSeconds = 3.0;
 
 Kiosk::Kiosk(KioskConfig config)
     : config_(std::move(config)),
+      look_sink_([this](float degrees) {
+        // Before the first frame a turned light is set at once: meter the first frame under it
+        // (afterwards the worker's hand-over asks for metering: take_prepared_lighting).
+        if (!first_frame_shown_ && degrees != 0) exposure_.request();
+        relight(rotated_about_z(room_light_, degrees));
+      }),
+      look_applier_(look_sink_, config_.zoom,
+                    [this](std::uint32_t colourway) -> const std::vector<Fabric>& { return knobs_->presets(colourway); }),
       exposure_(config_.exposure_bias + std::log2(config_.exposure), kExposureAdaptSeconds),
       idle_(config_.idle_return_s, kIdleEaseSeconds),
       screen_schedule_(ScreenSchedule::parse(config_.screen_off)),
@@ -158,12 +163,12 @@ void Kiosk::start_renderer() {
   pivot_ = turntable_pivot(sb.scene);
   renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
   arm_weave_range(*renderer_, sb, closeup_, width_, height_);
-  colourways_ = std::make_unique<KioskColourways>(sb);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (config_.label == "on" && !label_) {
     label_ = std::make_unique<KioskLabel>(config_);
     if (!label_->usable()) label_.reset();  // warned: the kiosk runs without it
   }
+  look_sink_.show(*scene_, *renderer_, cloth_fabrics_, label_.get());
   start_profile();
 }
 
@@ -201,8 +206,8 @@ void Kiosk::show_first_frame() {
   boot_stage("metering", stage);
   poll_knobs();
   idle_.touched(Clock::now());  // a look restored at boot goes home after the idle time too
-  if (light_rotation_ < 0) renderer_->set_lighting(scene_->sgs);
-  zoom_shown_ = zoom_drawn_ = zoom_target_;  // a kiosk started zoomed in (--zoom) shows it at once
+  if (!look_applier_.light_turn_deg()) renderer_->set_lighting(scene_->sgs);
+  zoom_shown_ = zoom_drawn_ = look_sink_.zoom_target();  // a kiosk started zoomed in (--zoom) shows it at once
   draw_frame(0);
   boot_stage("frame", stage);
   drawn_ = 1;
@@ -276,7 +281,7 @@ void Kiosk::hang_if_injected() {
 }
 
 bool Kiosk::move_view(Clock::time_point now, double turn_deg) {
-  zoom_shown_ = ease_zoom(zoom_shown_, zoom_target_, std::chrono::duration<double>(now - zoom_step_).count());
+  zoom_shown_ = ease_zoom(zoom_shown_, look_sink_.zoom_target(), std::chrono::duration<double>(now - zoom_step_).count());
   zoom_step_ = now;
   return std::abs(turn_deg - shown_turn_) > 1e-4 || zoom_shown_ != zoom_drawn_;
 }
@@ -311,14 +316,14 @@ void Kiosk::shut_down() {
 
 bool Kiosk::poll_knobs() {
   if (!knobs_->poll()) return false;
-  apply_knob_state(knobs_->state());
+  look_applier_.apply(knobs_->state());
   return true;
 }
 
 void Kiosk::poll_light() {
   if (!probe_ || !probe_->acquire()) return;
   room_light_ = probe_->lighting();
-  relight(rotated_about_z(room_light_, std::max(light_rotation_, 0.0f)));
+  relight(rotated_about_z(room_light_, look_applier_.light_turn_deg().value_or(0.0f)));
 }
 
 bool Kiosk::take_prepared_lighting() {
@@ -331,31 +336,6 @@ bool Kiosk::take_prepared_lighting() {
   } catch (const std::exception& e) {
     kiosk_log_warning(std::string("lighting: ") + e.what() + "; keeping the light shown");
     return false;
-  }
-}
-
-void Kiosk::apply_knob_state(const input::AppearanceState& s) {
-  colourways_->wear(*scene_, *renderer_, cloth_fabrics_, s.colourway);
-  const std::vector<Fabric>& presets = knobs_->presets(s.colourway);
-  const Fabric f = apply_knobs(presets.at(std::min<size_t>(s.preset_index, presets.size() - 1)), s);
-  // The label names the preset the knobs dress the cloth in; any knob change shows it again.
-  if (label_) label_->show(label_text(*scene_, s.preset_index, s.colourway));
-  try {
-    size_t c = 0;
-    for (const auto& o : scene_->scene.cloth_objects()) {
-      if (knobs_dress(*scene_, o)) renderer_->set_fabric(c, f);
-      ++c;
-    }
-  } catch (const gpu::GpuError& e) {  // e.g. a preset the bundle baked no tables for
-    kiosk_log_warning(std::string("knobs: ") + e.what() + "; keeping the fabric shown");
-  }
-  zoom_target_ = std::clamp(config_.zoom + double(s.zoom), 0.0, 1.0);
-  if (s.env_rotation_deg != light_rotation_) {
-    // Before the first frame a turned light is set at once: meter the first frame under it
-    // (afterwards the worker's hand-over asks for metering: take_prepared_lighting).
-    if (!first_frame_shown_ && s.env_rotation_deg != 0) exposure_.request();
-    relight(rotated_about_z(room_light_, s.env_rotation_deg));
-    light_rotation_ = s.env_rotation_deg;
   }
 }
 

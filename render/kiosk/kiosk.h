@@ -49,7 +49,6 @@
 #include "gl/frame_profile.h"
 #include "gpu/scene_renderer.h"
 #include "kiosk/bundle_swap.h"
-#include "kiosk/kiosk_colourways.h"
 #include "kiosk/exposure_meter.h"
 #include "kiosk/frame_stats.h"
 #include "kiosk/kiosk_config.h"
@@ -57,13 +56,14 @@
 #include "kiosk/kiosk_knobs.h"
 #include "kiosk/kiosk_label.h"
 #include "kiosk/kiosk_lighting.h"
+#include "kiosk/kiosk_look_sink.h"
+#include "kiosk/look_applier.h"
 #include "kiosk/idle_return.h"
 #include "kiosk/kiosk_status_file.h"
 #include "kiosk/screen_schedule.h"
 #include "kiosk/screen_wait.h"
 #include "kiosk/service_notifier.h"
 #include "kiosk/weave_terms_governor.h"
-#include "panel/appearance_state.h"
 
 namespace weft {
 
@@ -108,7 +108,6 @@ private:
   bool poll_bundle();            // true when a new bundle was swapped in this tick
   bool move_view(Clock::time_point now, double turn_deg);  // true when the view drawn is out of date
   void wait_for_next_tick(Clock::time_point tick_start, bool drew);
-  void apply_knob_state(const input::AppearanceState& state);
   void relight(const SgLighting& sgs);
   void draw_frame(double turn_deg);
   // The frame drawn last to the screen, with the label (if any) at its opacity now: after each
@@ -157,12 +156,14 @@ private:
   std::unique_ptr<KioskDisplay> display_;
   int width_ = 0, height_ = 0;  // the display's
 
-  // The knobs: the bundle's fabric presets (kiosk/knob_presets.h), turned by the panel.
+  // The knobs: the bundle's fabric presets (kiosk/knob_presets.h), turned by the panel; their
+  // looks (and the way home's) reach the renderer through look_applier_ (kiosk/look_applier.h).
   std::unique_ptr<KioskKnobs> knobs_;
+  KioskLookSink look_sink_;
+  LookApplier look_applier_;
 
   // The renderer and what it draws into.
   std::vector<Fabric> cloth_fabrics_;  // the base fabric of each cloth object, in the colourway worn
-  std::unique_ptr<KioskColourways> colourways_;  // the colourway the knob state names, worn
   std::unique_ptr<gpu::SceneRenderer> renderer_;
   std::unique_ptr<gpu::OffscreenTarget> target_;
   std::unique_ptr<gpu::FrameProfile> profile_;  // --profile: null when off
@@ -171,7 +172,6 @@ private:
   // The light: the bundle's SGs or the probe's latest fit, turned by the environment knob.
   SgLighting room_light_;
   std::unique_ptr<KioskLightProbe> probe_;
-  float light_rotation_ = -1;  // degrees; < 0 until the knobs first set it
   std::unique_ptr<KioskLighting> lighting_;  // prepares lighting changes off this thread
   std::uint64_t light_version_ = 0;  // counts relight() calls
   bool first_frame_shown_ = false;
@@ -189,10 +189,10 @@ private:
   Clock::time_point loop_start_, last_stats_;
   double shown_turn_ = 0;
   double turn_per_frame_ = 0;  // degrees, smoothed over the frames drawn (the reuse shares follow it)
-  // The zoom knob: the close-up of the scene shown, the knobs' zoom, the zoom shown (eased).
+  // The zoom knob: the close-up of the scene shown, the zoom shown (eased to look_sink_'s target).
   Camera closeup_;
   glm::dvec3 pivot_{0.0};  // the turntable's (turntable.h)
-  double zoom_target_ = 0, zoom_shown_ = 0, zoom_drawn_ = 0;
+  double zoom_shown_ = 0, zoom_drawn_ = 0;
   Clock::time_point zoom_step_;
   long ticks_ = 0, drawn_ = 0, knob_changes_ = 0;
   long rss_start_kib_ = 0;

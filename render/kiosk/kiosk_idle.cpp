@@ -15,7 +15,7 @@ bool Kiosk::return_when_idle(Clock::time_point now) {
   }
   const std::optional<input::AppearanceState> look = idle_.step(now);
   if (!look) return false;
-  apply_knob_state(*look);
+  look_applier_.apply(*look);
   return true;
 }
 

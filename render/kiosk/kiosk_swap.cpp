@@ -4,7 +4,6 @@
 #include "kiosk/kiosk.h"
 
 #include "kiosk/camera_zoom.h"
-#include "kiosk/kiosk_colourways.h"
 #include "kiosk/kiosk_knobs.h"
 #include "kiosk/kiosk_light_probe.h"
 #include "kiosk/kiosk_lighting.h"
@@ -21,7 +20,7 @@ bool Kiosk::poll_bundle() {
   BundleSwap::Step step = [&] {
     // The probe's room light outlives the bundle; without a probe fit the new bundle's SGs light it.
     const SgLighting* room = probe_ && probe_->updates() > 0 ? &room_light_ : nullptr;
-    return swap_->poll({scene_->scene.name, shown_.file, room, std::max(light_rotation_, 0.0f), light_version_});
+    return swap_->poll({scene_->scene.name, shown_.file, room, look_applier_.light_turn_deg().value_or(0.0f), light_version_});
   }();
   if (step.refused) notifier_.status("showing '" + scene_->scene.name + "'; the new bundle was refused (see journal)");
   if (!step.ready) return false;
@@ -39,7 +38,8 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   iwasaki_ = r.bundle.iwasaki;
   room_light_ = r.room_light;
   scene_ = std::move(r.bundle.scene);
-  colourways_ = std::make_unique<KioskColourways>(*scene_);
+  look_sink_.show(*scene_, *renderer_, cloth_fabrics_, label_.get());
+  look_applier_.new_renderer();
   closeup_ = closeup_of(scene_->scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(scene_->scene);
   arm_weave_range(*renderer_, *scene_, closeup_, width_, height_);
@@ -52,8 +52,8 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   meter_as_baked();
   // The knobs onto the new renderer: the same positions, or the reset ones.
   knobs_->repoll();
-  if (!poll_knobs()) apply_knob_state(knobs_->state());
-  if (light_version_ != r.light_version) relight(rotated_about_z(room_light_, std::max(light_rotation_, 0.0f)));
+  if (!poll_knobs()) look_applier_.apply(knobs_->state());
+  if (light_version_ != r.light_version) relight(rotated_about_z(room_light_, look_applier_.light_turn_deg().value_or(0.0f)));
 }
 
 }  // namespace weft

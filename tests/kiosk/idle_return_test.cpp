@@ -6,6 +6,7 @@
 
 #include "kiosk/idle_return.h"
 #include "kiosk/screen_schedule.h"
+#include "panel/appearance_blend.h"
 
 using namespace weft;
 using Clock = std::chrono::steady_clock;
@@ -27,17 +28,17 @@ input::AppearanceState look(float r, float gloss, float rotation, float zoom) {
 
 TEST(IdleReturn, BlendIsLinearInColourGeometricInGlossShortArcInTurn) {
   const input::AppearanceState a = look(0.8f, 4.0f, 350.0f, 1.0f), b = look(0.2f, 1.0f, 10.0f, 0.0f);
-  const input::AppearanceState h = blend_appearance(a, b, 0.5);
+  const input::AppearanceState h = input::blend_appearance(a, b, 0.5);
   EXPECT_NEAR(h.thread[0].albedo[0], 0.5, 1e-6);
   EXPECT_NEAR(h.thread[1].gamma_scale, 2.0, 1e-6);  // √(4·1)
   EXPECT_NEAR(h.env_rotation_deg, 0.0, 1e-4);       // 350° → 10° through 0°, not through 180°
   EXPECT_NEAR(h.zoom, 0.5, 1e-6);
-  EXPECT_TRUE(same_appearance(blend_appearance(a, b, 0.0), a));
-  EXPECT_TRUE(same_appearance(blend_appearance(a, b, 1.0), b));
+  EXPECT_EQ(input::blend_appearance(a, b, 0.0), a);
+  EXPECT_EQ(input::blend_appearance(a, b, 1.0), b);
   // Another fabric cannot be blended: home at once.
   input::AppearanceState other = a;
   other.preset_index = 3;
-  EXPECT_TRUE(same_appearance(blend_appearance(other, b, 0.3), b));
+  EXPECT_EQ(input::blend_appearance(other, b, 0.3), b);
 }
 
 TEST(IdleReturn, EasesHomeAfterTheIdleTimeAndOnlyThen) {
@@ -56,13 +57,13 @@ TEST(IdleReturn, EasesHomeAfterTheIdleTimeAndOnlyThen) {
   EXPECT_FALSE(idle.due(t1 + std::chrono::seconds(600)));  // on its way, then home: not again
   auto first = idle.step(t1);
   ASSERT_TRUE(first);
-  EXPECT_TRUE(same_appearance(*first, from));  // leaves from what was shown: no jump
+  EXPECT_EQ(*first, from);  // leaves from what was shown: no jump
   auto mid = idle.step(t1 + std::chrono::milliseconds(1500));
   ASSERT_TRUE(mid);
   EXPECT_NEAR(mid->thread[0].albedo[0], 0.5, 1e-5);  // smoothstep's midpoint is the midpoint
   auto last = idle.step(t1 + std::chrono::seconds(3));
   ASSERT_TRUE(last);
-  EXPECT_TRUE(same_appearance(*last, home));
+  EXPECT_EQ(*last, home);
   EXPECT_FALSE(idle.step(t1 + std::chrono::seconds(4)));  // arrived: nothing more to draw
   // Already home: no ease at all.
   idle.touched(t1 + std::chrono::seconds(5));
