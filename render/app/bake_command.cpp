@@ -80,7 +80,7 @@ int run_bake(const BakeArgs& a) {
   if (!search) add_scene_sections(writer, in);
   if (!a.no_tables) {
     progress(4, kSteps, "weighting tables (T, visibility, kappa)");
-    IwasakiBakeOptions opt;
+    ShadingDataBakeOptions opt;
     opt.progress = open_progress_bar, opt.mask_resolution = a.no_masks ? 0 : kMaskResolution;
     opt.visibility.resolution = a.sdf_resolution, opt.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     opt.grid = a.select.grid, opt.lambda_levels = a.lambda_levels;
@@ -91,7 +91,7 @@ int run_bake(const BakeArgs& a) {
     SceneSelectionOptions select = a.select;
     select.visibility.lambertian_resolution = a.lambertian_sdf_resolution;
     select.views.progress = open_progress_bar;
-    IwasakiBundleData baked;
+    ShadingData baked;
     try {
       tables_line = search ? add_selected_bundle(writer, in, select, sg_map)
                            : add_baked_sections(writer, in.scene, in.fabrics, opt, a.choose_rung ? &baked : nullptr);

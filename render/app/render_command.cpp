@@ -76,19 +76,19 @@ int run_render(const RenderArgs& a) {
   }
   if (a.camera == "closeup") in.scene.camera = closeup_camera(in.scene, in.fabrics, a.height);
   else if (a.camera != "scene") in.scene.camera = parse_camera(a.camera, in.scene.camera, "--camera");
-  if (method && method->needs_weighting_tables() && !in.iwasaki) {
+  if (method && method->needs_weighting_tables() && !in.shading) {
     std::cerr << "weft render: baking the weighting tables in memory (weft bake stores them in a bundle)\n";
-    IwasakiBakeOptions o;
+    ShadingDataBakeOptions o;
     o.progress = open_progress_bar;
     if (method->reads_visibility_masks()) o.mask_resolution = kMaskResolution;
-    in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, o));
+    in.shading = std::make_shared<ShadingData>(bake_shading_data(in.scene, in.fabrics, o));
   }
   const FrameFileOptions files{a.method, a.out, a.width, a.height, a.exposure, a.exposure_bias};
   if (a.method != "reference") {
     GpuFrame f;
     try {
       const gpu::Backdrop backdrop = a.backdrop == "showroom" ? gpu::Backdrop::showroom : gpu::Backdrop::measure;
-      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.iwasaki, backdrop, a.weave, a.weave_terms == "pixel");
+      f = render_gpu_frame(in.scene, in.fabrics, lighting.sgs, a.method, a.width, a.height, a.timed_frames, in.shading, backdrop, a.weave, a.weave_terms == "pixel");
     } catch (const gpu::GpuError& e) {
       std::cerr << "weft render: " << e.what() << "\n";
       return 1;

@@ -53,7 +53,7 @@ Row target_error_row(const BenchOptions& a, const Case& c, const LadderEntry& m,
   std::cerr << " " << fmt(sel.seconds) << " s: " << sel.description << "\n";
   const Scene drawn = refine_and_order_meshes(c.scene, sel.subdivision);  // the meshes the search baked
   Row r = measure.measure(c, m, target_label(m.name, a.target_error), m.name + "_target",
-                          std::make_shared<const IwasakiBundleData>(sel.data), &drawn);
+                          std::make_shared<const ShadingData>(sel.data), &drawn);
   r.setting = sel.description, r.sg_count = sel.chosen.sg_count, r.subdivision = sel.subdivision;
   r.note = "scene_selection.h at target " + fmt(a.target_error) + ": " + sel.description + ", views' error " +
            fmt(sel.chosen.error) + (sel.reached ? "" : " (unreachable: closest)");

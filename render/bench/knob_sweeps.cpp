@@ -69,7 +69,7 @@ void sweep_bake_knobs(const BenchOptions& a, bool has_iwasaki, TableBakes& bakes
   const Case c = make_case(a, a.scenes.front(), "scene", "scene");
   results.knob_case = c.scene_name + " / " + c.fabric_label + " / " + c.env;
   KnobRow& knob_default = results.knob_default;
-  std::shared_ptr<const IwasakiBundleData> base;
+  std::shared_ptr<const ShadingData> base;
   if (has_iwasaki) {
     base = bakes.tables_for("iwasaki", c.scene, c.fabrics);
     knob_default.value = "paper default";
@@ -82,7 +82,7 @@ void sweep_bake_knobs(const BenchOptions& a, bool has_iwasaki, TableBakes& bakes
     knob_default.rmse = cloth_error(acc.image, ref.image, ref.kinds).relative_rmse;
   }
   auto knob_sweep = [&](const std::string& knob, const std::string& file, const std::string& default_value,
-                        const std::vector<std::string>& values, const std::function<void(size_t, IwasakiBakeOptions&)>& set,
+                        const std::vector<std::string>& values, const std::function<void(size_t, ShadingDataBakeOptions&)>& set,
                         bool tables_half) {
     KnobSweep ks{knob, file, default_value, {}, ""};
     if (values.empty()) return;
@@ -91,16 +91,16 @@ void sweep_bake_knobs(const BenchOptions& a, bool has_iwasaki, TableBakes& bakes
       ks.skipped = "no cloth object of " + c.scene_name + " is occluded: the bundle stores no visibility, so the SDF "
                    "resolution changes nothing (put an occluded scene first, e.g. --scenes pillow)";
     for (size_t i = 0; i < values.size() && ks.skipped.empty(); ++i) {
-      IwasakiBakeOptions o = bakes.paper_options();
+      ShadingDataBakeOptions o = bakes.paper_options();
       set(i, o);
       (tables_half ? o.bake_visibility : o.bake_tables) = false;
       std::cerr << "weft bench: sweep iwasaki " << knob << " = " << values[i] << ": baking ..." << std::flush;
       const auto t = std::chrono::steady_clock::now();
-      IwasakiBundleData half = bake_iwasaki(c.scene, c.fabrics, o);
+      ShadingData half = bake_shading_data(c.scene, c.fabrics, o);
       KnobRow r;
       r.value = values[i];
       r.bake_s = seconds_since(t);
-      auto bundle = std::make_shared<IwasakiBundleData>();
+      auto bundle = std::make_shared<ShadingData>();
       bundle->tables = tables_half ? std::move(half.tables) : base->tables;
       if (tables_half) bundle->visibility = base->visibility, bundle->kappa = base->kappa;
       else bundle->visibility = std::move(half.visibility), bundle->kappa = std::move(half.kappa);
@@ -121,18 +121,18 @@ void sweep_bake_knobs(const BenchOptions& a, bool has_iwasaki, TableBakes& bakes
     const auto n = paper_tangent_samples(f);
     paper_samples += (paper_samples.empty() ? "" : ", ") + std::to_string(n[0]) + "+" + std::to_string(n[1]);
   }
-  const IwasakiBakeOptions paper = bakes.paper_options();
+  const ShadingDataBakeOptions paper = bakes.paper_options();
   knob_sweep("tangent samples per thread", "sweep_tangent_samples.csv", paper_samples, texts(a.sweep_tangent_samples),
-             [&](size_t i, IwasakiBakeOptions& o) { o.tangent_samples = {a.sweep_tangent_samples[i], a.sweep_tangent_samples[i]}; },
+             [&](size_t i, ShadingDataBakeOptions& o) { o.tangent_samples = {a.sweep_tangent_samples[i], a.sweep_tangent_samples[i]}; },
              true);
   knob_sweep("SVD error", "sweep_svd_error.csv", fmt(BakeSettings{}.svd_error), texts(a.sweep_svd_errors),
-             [&](size_t i, IwasakiBakeOptions& o) { o.svd_error = a.sweep_svd_errors[i]; }, true);
+             [&](size_t i, ShadingDataBakeOptions& o) { o.svd_error = a.sweep_svd_errors[i]; }, true);
   knob_sweep("SDF resolution", "sweep_sdf_resolution.csv", std::to_string(paper.visibility.resolution),
              texts(a.sweep_sdf_resolutions),
-             [&](size_t i, IwasakiBakeOptions& o) { o.visibility.resolution = a.sweep_sdf_resolutions[i]; }, false);
+             [&](size_t i, ShadingDataBakeOptions& o) { o.visibility.resolution = a.sweep_sdf_resolutions[i]; }, false);
   knob_sweep("SDF supersampling (rays per cell side)", "sweep_sdf_supersample.csv",
              std::to_string(paper.visibility.supersample), texts(a.sweep_sdf_supersamples),
-             [&](size_t i, IwasakiBakeOptions& o) { o.visibility.supersample = a.sweep_sdf_supersamples[i]; }, false);
+             [&](size_t i, ShadingDataBakeOptions& o) { o.visibility.supersample = a.sweep_sdf_supersamples[i]; }, false);
 }
 
 }  // namespace weft::bench

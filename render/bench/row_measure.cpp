@@ -16,7 +16,7 @@
 namespace weft::bench {
 
 Row RowMeasure::measure(const Case& c, const LadderEntry& m, const std::string& label, const std::string& file_id,
-                        std::shared_ptr<const IwasakiBundleData> bundle, const Scene* drawn) {
+                        std::shared_ptr<const ShadingData> bundle, const Scene* drawn) {
   const Scene& scene = drawn ? *drawn : c.scene;
   const BenchOptions& a = options_;
   const CachedReference* ref = &references_.sg_lit(c, m.thin_reference);

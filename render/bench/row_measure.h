@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "bench/bench_case.h"
 #include "bench/bench_options.h"
 #include "bench/bench_results.h"
@@ -26,7 +26,7 @@ public:
   // for the methods that read them; `drawn`: the scene the frames draw when not the case's own
   // (its cloth refined, scene/mesh_subdivision.h), against the case's reference.
   Row measure(const Case& c, const LadderEntry& m, const std::string& label, const std::string& file_id,
-              std::shared_ptr<const IwasakiBundleData> bundle, const Scene* drawn = nullptr);
+              std::shared_ptr<const ShadingData> bundle, const Scene* drawn = nullptr);
   const std::string& renderer() const { return renderer_; }  // GL_RENDERER of the last frame
 
 private:

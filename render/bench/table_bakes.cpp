@@ -13,8 +13,8 @@
 
 namespace weft::bench {
 
-IwasakiBakeOptions TableBakes::paper_options() const {
-  IwasakiBakeOptions o;
+ShadingDataBakeOptions TableBakes::paper_options() const {
+  ShadingDataBakeOptions o;
   o.quiet = true;
   o.grid = options_.bake_grid;
   if (options_.quick) o.visibility.resolution = 16;
@@ -34,20 +34,20 @@ std::string TableBakes::key(const Scene& scene, const std::map<std::string, Fabr
   return key;
 }
 
-std::shared_ptr<const IwasakiBundleData> TableBakes::bake(const std::string& key, const Scene& scene,
+std::shared_ptr<const ShadingData> TableBakes::bake(const std::string& key, const Scene& scene,
                                                           const std::map<std::string, Fabric>& fabrics,
-                                                          const IwasakiBakeOptions& o) {
+                                                          const ShadingDataBakeOptions& o) {
   auto& data = bakes_[key];
   if (!data) {
     std::cerr << "weft bench: baking weighting tables for " << key << " ..." << std::flush;
     const auto t = std::chrono::steady_clock::now();
-    data = std::make_shared<IwasakiBundleData>(bake_iwasaki(scene, fabrics, o));
+    data = std::make_shared<ShadingData>(bake_shading_data(scene, fabrics, o));
     std::cerr << " " << fmt(seconds_since(t)) << " s\n";
   }
   return data;
 }
 
-std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::string& method, const Scene& scene,
+std::shared_ptr<const ShadingData> TableBakes::tables_for(const std::string& method, const Scene& scene,
                                                                 const std::map<std::string, Fabric>& fabrics) {
   if (!methods::method(method).reads_weighting_tables()) return nullptr;
   const std::string k = key(scene, fabrics);
@@ -56,14 +56,14 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::tables_for(const std::strin
   for (const auto& [name, f] : fabrics) fabric_set += "/" + name;
   const auto same_tables = by_fabrics_.find(fabric_set);
   if (same_tables == by_fabrics_.end()) return by_fabrics_[fabric_set] = bake(k, scene, fabrics, paper_options());
-  IwasakiBakeOptions o = paper_options();
+  ShadingDataBakeOptions o = paper_options();
   o.bake_tables = false;  // another scene's bake holds this fabric set's tables
-  auto data = std::make_shared<IwasakiBundleData>(*bake(k + " (visibility)", scene, fabrics, o));
+  auto data = std::make_shared<ShadingData>(*bake(k + " (visibility)", scene, fabrics, o));
   data->tables = same_tables->second->tables;
   return bakes_[k] = data;
 }
 
-std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::string& method, const Scene& scene,
+std::shared_ptr<const ShadingData> TableBakes::subdivided(const std::string& method, const Scene& scene,
                                                                 const Scene& refined, int levels,
                                                                 const std::map<std::string, Fabric>& fabrics,
                                                                 double& bake_s) {
@@ -92,7 +92,7 @@ std::shared_ptr<const IwasakiBundleData> TableBakes::subdivided(const std::strin
     it->second.seconds += s;
     std::cerr << " " << fmt(s) << " s\n";
   }
-  auto data = std::make_shared<IwasakiBundleData>(*base);
+  auto data = std::make_shared<ShadingData>(*base);
   for (size_t i = 0; i < refined.objects.size(); ++i)
     if (refined.objects[i].is_cloth()) data->visibility.erase(i), data->masks.erase(i);
   for (const auto& [i, v] : it->second.cloth) data->visibility.emplace(i, v);

@@ -19,27 +19,27 @@ public:
   explicit TableBakes(const BenchOptions& o) : options_(o) {}
 
   // The paper's settings at the run's grid (and SDF 16 with --quick), no progress shown.
-  IwasakiBakeOptions paper_options() const;
+  ShadingDataBakeOptions paper_options() const;
   // "scene/fabric/fabric...": what a bake depends on besides its options.
   static std::string key(const Scene& scene, const std::map<std::string, Fabric>& fabrics);
   // The bake stored under `key`, baked with `o` on first use (a line on stderr with its time).
-  std::shared_ptr<const IwasakiBundleData> bake(const std::string& key, const Scene& scene,
+  std::shared_ptr<const ShadingData> bake(const std::string& key, const Scene& scene,
                                                 const std::map<std::string, Fabric>& fabrics,
-                                                const IwasakiBakeOptions& o);
+                                                const ShadingDataBakeOptions& o);
   // The paper-default bundle for a method that reads weighting tables; null for the others.
-  std::shared_ptr<const IwasakiBundleData> tables_for(const std::string& method, const Scene& scene,
+  std::shared_ptr<const ShadingData> tables_for(const std::string& method, const Scene& scene,
                                                       const std::map<std::string, Fabric>& fabrics);
   // tables_for(method, scene, fabrics) with the cloth objects' visibility replaced by theirs in
   // `refined` (scene/mesh_subdivision.h: `scene` with its cloth refined `levels`), baked once per
   // scene and level at the paper's visibility settings; `bake_s`: that bake's time.
-  std::shared_ptr<const IwasakiBundleData> subdivided(const std::string& method, const Scene& scene,
+  std::shared_ptr<const ShadingData> subdivided(const std::string& method, const Scene& scene,
                                                       const Scene& refined, int levels,
                                                       const std::map<std::string, Fabric>& fabrics, double& bake_s);
 
 private:
   const BenchOptions& options_;
-  std::map<std::string, std::shared_ptr<const IwasakiBundleData>> bakes_;
-  std::map<std::string, std::shared_ptr<const IwasakiBundleData>> by_fabrics_;  // a bake holding each fabric set's tables
+  std::map<std::string, std::shared_ptr<const ShadingData>> bakes_;
+  std::map<std::string, std::shared_ptr<const ShadingData>> by_fabrics_;  // a bake holding each fabric set's tables
   struct Refined {
     std::map<size_t, ObjectVisibility> cloth;
     std::map<size_t, VisibilityMask> masks;  // baked on first use by a method that reads them

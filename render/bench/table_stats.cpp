@@ -5,25 +5,25 @@
 
 namespace weft::bench {
 
-size_t table_bytes(const IwasakiBundleData& d) {
+size_t table_bytes(const ShadingData& d) {
   size_t b = 0;
   for (const auto& [name, t] : d.tables) b += t.bytes();
   return b;
 }
 
-size_t visibility_bytes(const IwasakiBundleData& d) {
+size_t visibility_bytes(const ShadingData& d) {
   size_t b = 0;
   for (const auto& [i, v] : d.visibility) b += sizeof(float) * (v.mean.size() + v.basis.size() + v.coefficients.size());
   return b;
 }
 
-size_t mask_bytes(const IwasakiBundleData& d) {
+size_t mask_bytes(const ShadingData& d) {
   size_t b = 0;
   for (const auto& [i, m] : d.masks) b += sizeof(m.words[0]) * m.words.size();
   return b;
 }
 
-std::string tables_summary(const IwasakiBundleData& d) {
+std::string tables_summary(const ShadingData& d) {
   std::string s;
   for (const auto& [name, t] : d.tables) {
     const TableSummary m = summarize(t);

@@ -31,9 +31,9 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
     try {
       const auto reader = bundle::BundleReader::open(a.bundle);
       SceneBundle sb = read_scene_bundle(reader);
-      if (!has_iwasaki_sections(reader))
+      if (!has_shading_data(reader))
         throw FrameInputError("--bundle: " + a.bundle + " has no weighting tables (weft bake without --no-tables)");
-      in.iwasaki = std::make_shared<IwasakiBundleData>(read_scene_iwasaki_sections(reader, sb.scene));
+      in.shading = std::make_shared<ShadingData>(read_scene_shading_data(reader, sb.scene));
       in.scene = std::move(sb.scene);
     } catch (const bundle::BundleError& e) {
       throw FrameInputError(std::string("--bundle: ") + e.what());

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"
 #include "reference/scene_render.h"
@@ -36,7 +36,7 @@ struct FrameInputs {
   std::map<std::string, Fabric> fabrics;  // preset → fabric of every cloth object
   std::string env;
   std::shared_ptr<EnvMap> map;
-  std::shared_ptr<const IwasakiBundleData> iwasaki;  // the bundle's tables, if one was given
+  std::shared_ptr<const ShadingData> shading;  // the bundle's tables, if one was given
 };
 
 FrameInputs load_frame_inputs(const FrameInputOptions& o);

@@ -14,12 +14,12 @@ namespace weft {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
-                          std::shared_ptr<const IwasakiBundleData> iwasaki, gpu::Backdrop backdrop, bool weave,
+                          std::shared_ptr<const ShadingData> shading, gpu::Backdrop backdrop, bool weave,
                           bool weave_pixel_terms) {
   gpu::EglContext ctx = gpu::EglContext::headless();
   std::vector<Fabric> cloth;
   for (const auto& o : scene.cloth_objects()) cloth.push_back(object_base_fabric(o, fabrics));
-  gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(iwasaki), table_baker());
+  gpu::SceneRenderer renderer(scene, cloth, methods::method(method), 16, std::move(shading), table_baker());
   for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "weft render: %s\n", w.c_str());
   renderer.set_lighting(sgs);
   renderer.set_backdrop(backdrop);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
 #include "gpu/scene_renderer.h"
@@ -26,7 +26,7 @@ struct GpuFrame {
 
 GpuFrame render_gpu_frame(const Scene& scene, const std::map<std::string, Fabric>& fabrics, const SgLighting& sgs,
                           const std::string& method, int width, int height, int timed_frames,
-                          std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr,
+                          std::shared_ptr<const ShadingData> shading = nullptr,
                           gpu::Backdrop backdrop = gpu::Backdrop::measure, bool weave = false,
                           bool weave_pixel_terms = true);  // gpu::SceneRenderer::set_weave_pixel_terms
 

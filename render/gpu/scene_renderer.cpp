@@ -61,9 +61,9 @@ struct SceneRenderer::Object {
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method,
                              int tangent_samples,
-                             std::shared_ptr<const IwasakiBundleData> iwasaki, TableSource tables)
-    : method_(&method), bundle_(iwasaki) {
-  cloth_ = method.make_gpu(ClothMethodSetup{tangent_samples, std::move(iwasaki), std::move(tables)});
+                             std::shared_ptr<const ShadingData> shading, TableSource tables)
+    : method_(&method), bundle_(shading) {
+  cloth_ = method.make_gpu(ClothMethodSetup{tangent_samples, std::move(shading), std::move(tables)});
   background_program_ =
       std::make_unique<GlProgram>(fullscreen_triangle_vs(), program_source({"erf.glsl", "sg_lighting.glsl", "background.frag"}));
   lambert_program_ = std::make_unique<GlProgram>(program_source({"scene.vert"}), program_source({"lambert.frag"}));

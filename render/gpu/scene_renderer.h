@@ -50,7 +50,7 @@ public:
   // bundle's visibility shades every method's floors.
   // `method`: an entry of the registry (methods/registry.h).
   SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method, int tangent_samples = 16,
-                std::shared_ptr<const IwasakiBundleData> iwasaki = nullptr, TableSource tables = {});
+                std::shared_ptr<const ShadingData> shading = nullptr, TableSource tables = {});
   ~SceneRenderer();
 
   // A lighting change's CPU work: each Lambertian object's per-vertex irradiance (with the
@@ -132,7 +132,7 @@ private:
   std::unique_ptr<GlProgram> lambert_program_, background_program_;
   const methods::RuntimeMethod* method_;
   std::unique_ptr<ClothMethod> cloth_;  // the method's GPU side: draws every cloth object
-  std::shared_ptr<const IwasakiBundleData> bundle_;  // the bundle's visibility (any method) and κ
+  std::shared_ptr<const ShadingData> bundle_;  // the bundle's visibility (any method) and κ
   SgLighting sgs_, backdrop_sgs_;
   std::unique_ptr<BackdropCube> backdrop_cube_;  // Backdrop::showroom: backdrop_sgs_, filled by set_lighting
   std::unique_ptr<WeaveLayer> weave_;  // made on the first set_weave(true)

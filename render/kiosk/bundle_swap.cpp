@@ -107,7 +107,7 @@ void BundleSwap::start(Loaded loaded, const Shown& shown) {
   r.cloth_fabrics = cloth_fabrics(r.bundle.scene);
   r.room_light = shown.room_light ? *shown.room_light : r.bundle.scene.sgs;
   try {
-    r.renderer = make_kiosk_renderer(r.bundle.scene, r.cloth_fabrics, *r.method, r.bundle.iwasaki);
+    r.renderer = make_kiosk_renderer(r.bundle.scene, r.cloth_fabrics, *r.method, r.bundle.shading);
   } catch (const std::exception& e) {
     refuse("bundle " + options_.bundle + ": cannot draw it: " + e.what(), shown);
     return;

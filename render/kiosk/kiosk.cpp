@@ -123,7 +123,7 @@ void Kiosk::load_bundle() {
   if (swap_) swap_->set_shown_fingerprint(opened->is_last_good ? 0 : read->fingerprint);
   method_ = &kiosk_method(config_.method, *read, opened->file);
   scene_ = std::move(read->scene);
-  iwasaki_ = read->iwasaki;
+  shading_ = read->shading;
   (shown_.is_last_good ? kiosk_log_warning : kiosk_log_info)("bundle " + shown_.file.string() +
            (shown_.is_last_good ? " (LAST GOOD COPY: " + shown_.primary_error + ")" : "") + ": scene '" +
            scene_->scene.name + "', " + std::to_string(scene_->scene.objects.size()) + " objects, " +
@@ -161,7 +161,7 @@ void Kiosk::start_renderer() {
                    "material in the scene file, or give it KHR_materials_sheen, and bake again)");
   closeup_ = closeup_of(sb.scene, cloth_fabrics_, height_);
   pivot_ = turntable_pivot(sb.scene);
-  renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, iwasaki_);
+  renderer_ = make_kiosk_renderer(sb, cloth_fabrics_, *method_, shading_);
   arm_weave_range(*renderer_, sb, closeup_, width_, height_);
   target_ = std::make_unique<gpu::OffscreenTarget>(width_, height_);
   if (config_.label == "on" && !label_) {

@@ -43,7 +43,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "runtime/scene_bundle.h"
 #include "core/fabric.h"
 #include "gl/frame_profile.h"
@@ -149,7 +149,7 @@ private:
     std::string primary_error;
   } shown_;
   std::optional<SceneBundle> scene_;
-  std::shared_ptr<const IwasakiBundleData> iwasaki_;
+  std::shared_ptr<const ShadingData> shading_;
   const methods::RuntimeMethod* method_ = nullptr;  // from the registry: --method, or the bundle's best
 
   // The display (and the GL context everything below draws with).

@@ -35,10 +35,10 @@ const methods::RuntimeMethod& tableless_rung() {
 // Every occluded cloth object has a visibility mask (weft bake writes them unless --no-masks), or
 // none is occluded.
 bool masks_cover_occluded_cloth(const KioskBundle& bundle) {
-  if (!bundle.iwasaki) return false;
-  for (const auto& [i, v] : bundle.iwasaki->visibility)
+  if (!bundle.shading) return false;
+  for (const auto& [i, v] : bundle.shading->visibility)
     if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth() &&
-        !bundle.iwasaki->masks.count(i))
+        !bundle.shading->masks.count(i))
       return false;
   return true;
 }
@@ -46,7 +46,7 @@ bool masks_cover_occluded_cloth(const KioskBundle& bundle) {
 // --method auto (header).
 const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   using methods::RuntimeMethod, methods::Shading;
-  if (!bundle.iwasaki) return tableless_rung();
+  if (!bundle.shading) return tableless_rung();
   bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
   for (const auto& o : bundle.scene.scene.cloth_objects())
     sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
@@ -84,8 +84,8 @@ std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method) {
   KioskBundle b;
   b.scene = read_scene_bundle(reader);
-  if (has_iwasaki_sections(reader) && method != tableless_rung().name) {
-    b.iwasaki = std::make_shared<IwasakiBundleData>(read_scene_iwasaki_sections(reader, b.scene.scene));
+  if (has_shading_data(reader) && method != tableless_rung().name) {
+    b.shading = std::make_shared<ShadingData>(read_scene_shading_data(reader, b.scene.scene));
   }
   if (reader.has("bake/selection")) b.baked_for = selected_method(reader.json("bake/selection"));
   b.fingerprint = bundle_fingerprint(reader);
@@ -102,11 +102,11 @@ std::string selected_method(std::string_view selection_json) {
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file) {
   const methods::RuntimeMethod& m = method != "auto" ? methods::method(method) : auto_method(bundle);
-  if (m.needs_weighting_tables() && !bundle.iwasaki)
+  if (m.needs_weighting_tables() && !bundle.shading)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no weighting tables (weft bake without --no-tables)");
   // The masks' open share replaces the SDF's visibility: an occluded cloth object needs its mask.
-  if (m.masks.open_share && bundle.iwasaki && !masks_cover_occluded_cloth(bundle))
+  if (m.masks.open_share && bundle.shading && !masks_cover_occluded_cloth(bundle))
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no visibility mask for its occluded cloth (weft bake without --no-masks)");
   return m;

@@ -11,14 +11,14 @@
 
 #include "bundle/bundle_reader.h"
 #include "methods/registry.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "runtime/scene_bundle.h"
 
 namespace weft {
 
 struct KioskBundle {
   SceneBundle scene;
-  std::shared_ptr<const IwasakiBundleData> iwasaki;  // null: no weighting tables (or the tableless rung asked for)
+  std::shared_ptr<const ShadingData> shading;  // null: no weighting tables (or the tableless rung asked for)
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
   // The method `weft bake --target-error` or `--choose-rung` measured (bake/selection); empty: none.
   std::string baked_for;

@@ -17,8 +17,8 @@ std::vector<Fabric> cloth_fabrics(const SceneBundle& sb) {
 
 std::unique_ptr<gpu::SceneRenderer> make_kiosk_renderer(const SceneBundle& sb, const std::vector<Fabric>& cloth,
                                                         const methods::RuntimeMethod& method,
-                                                        std::shared_ptr<const IwasakiBundleData> iwasaki) {
-  auto r = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth, method, 16, std::move(iwasaki));
+                                                        std::shared_ptr<const ShadingData> shading) {
+  auto r = std::make_unique<gpu::SceneRenderer>(sb.scene, cloth, method, 16, std::move(shading));
   r->set_backdrop(gpu::Backdrop::showroom);
   for (const std::string& w : r->warnings()) kiosk_log_warning("scene '" + sb.scene.name + "': " + w);
   try {

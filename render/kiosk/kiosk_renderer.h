@@ -7,7 +7,7 @@
 #include "core/fabric.h"
 #include "gpu/scene_renderer.h"
 #include "methods/runtime_method.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "runtime/scene_bundle.h"
 
 namespace weft {
@@ -20,7 +20,7 @@ std::vector<Fabric> cloth_fabrics(const SceneBundle& sb);
 // cloth mesh without UVs) shows the fabric level up close, with a warning.
 std::unique_ptr<gpu::SceneRenderer> make_kiosk_renderer(const SceneBundle& sb, const std::vector<Fabric>& cloth,
                                                         const methods::RuntimeMethod& method,
-                                                        std::shared_ptr<const IwasakiBundleData> iwasaki);
+                                                        std::shared_ptr<const ShadingData> shading);
 
 // The weave layer's range (SceneRenderer::set_weave_range): the kiosk's zoom path from the scene's
 // view to `closeup` (camera_zoom.h's dolly), each camera turned about the turntable's pivot as

@@ -35,7 +35,7 @@ void Kiosk::show_swapped(BundleSwap::Ready r) {
   renderer_ = std::move(r.renderer);
   cloth_fabrics_ = std::move(r.cloth_fabrics);
   method_ = r.method;
-  iwasaki_ = r.bundle.iwasaki;
+  shading_ = r.bundle.shading;
   room_light_ = r.room_light;
   scene_ = std::move(r.bundle.scene);
   look_sink_.show(*scene_, *renderer_, cloth_fabrics_, label_.get());

@@ -6,7 +6,7 @@
 
 namespace weft::gpu {
 
-const ObjectVisibility* checked_visibility(const IwasakiBundleData& data, size_t scene_index, const TriangleMesh& mesh) {
+const ObjectVisibility* checked_visibility(const ShadingData& data, size_t scene_index, const TriangleMesh& mesh) {
   const auto found = data.visibility.find(scene_index);
   if (found == data.visibility.end()) return nullptr;
   const ObjectVisibility& vis = found->second;

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "runtime/table_source.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
@@ -22,7 +22,7 @@ namespace weft::gpu {
 struct ClothMethodSetup {
   int tangent_samples = 16;  // per thread, where the method samples the curves at will
   // A bundle's weighting tables (null without); methods that need them throw GpuError without.
-  std::shared_ptr<const IwasakiBundleData> bundle;
+  std::shared_ptr<const ShadingData> bundle;
   // Tables no bundle holds (mizutani's): the offline commands' baker; empty in the kiosk.
   TableSource tables;
 };

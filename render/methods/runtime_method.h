@@ -15,7 +15,7 @@
 
 namespace weft::methods {
 
-// How a method uses the weighting tables (a bundle's IwasakiBundleData: W, visibility, κ).
+// How a method uses the weighting tables (a bundle's ShadingData: W, visibility, κ).
 enum class WeightingTablesUse {
   unused,
   read_when_given,  // reads their W tables when the bundle has them for its samples, else bakes its own

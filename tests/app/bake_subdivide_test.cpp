@@ -10,7 +10,7 @@
 
 #include "bake/selection/scene_selection.h"
 #include "bundle/bundle_reader.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "runtime/scene_bundle.h"
 #include "scene/mesh_subdivision.h"
 #include "scene/mesh_vertex_order.h"
@@ -62,7 +62,7 @@ TEST(BakeSubdivide, BundleHoldsTheRefinedClothMeshes) {
   // the refined pillow's are stored at its pass vertices and spread back).
   std::map<size_t, size_t> counts;
   for (size_t i = 0; i < b.scene.objects.size(); ++i) counts[i] = b.scene.objects[i].mesh.positions.size();
-  const IwasakiBundleData d = read_scene_iwasaki_sections(reader, b.scene);
+  const ShadingData d = read_scene_shading_data(reader, b.scene);
   ASSERT_TRUE(d.visibility.count(0));  // the pillow
   EXPECT_EQ(d.visibility.at(0).coefficients.size(), counts[0] * size_t(d.visibility.at(0).terms));
   fs::remove(out);

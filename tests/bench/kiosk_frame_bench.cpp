@@ -206,10 +206,10 @@ TEST(KioskFrameBench, StagesReuseAndFirstFrame) {
       const KioskBundle kb = read_kiosk_bundle(reader, method_name);
       const methods::RuntimeMethod& method = kiosk_method(method_name, kb, file);
       const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
-      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
       r->set_lighting(kb.scene.sgs);
       // The same frames with every vertex recomputed, for the reuse's error.
-      std::unique_ptr<gpu::SceneRenderer> full = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      std::unique_ptr<gpu::SceneRenderer> full = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
       full->set_lighting(kb.scene.sgs);
       full->set_visible_vertices_only(false);
       full->set_depth_prepass(false);

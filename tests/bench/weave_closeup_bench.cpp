@@ -301,9 +301,9 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
     std::vector<bool> resolved = resolved_pixels(rays, in.scene, in.fabrics, close, kW, kH, 16.0);
     if (!flicker_only)
       for (size_t i = 0; i < resolved.size(); ++i) resolved[i] = resolved[i] && ref.kinds[i] == PixelKind::cloth;
-    IwasakiBakeOptions bo;
+    ShadingDataBakeOptions bo;
     bo.mask_resolution = kMaskResolution;
-    in.iwasaki = std::make_shared<IwasakiBundleData>(bake_iwasaki(in.scene, in.fabrics, bo));
+    in.shading = std::make_shared<ShadingData>(bake_shading_data(in.scene, in.fabrics, bo));
     const bool quick = std::getenv("WEFT_WEAVE_QUICK") != nullptr;  // accuracy of iwasaki_vertex only
     // Over a per-vertex rung, the layer's per-vertex table instead of each float lit per pixel.
     const bool table_terms = std::getenv("WEFT_WEAVE_TERMS") && std::string(std::getenv("WEFT_WEAVE_TERMS")) == "table";
@@ -317,7 +317,7 @@ TEST(WeaveCloseupBench, AccuracySpeedAndFlicker) {
       auto frame = [&](const Camera& cam, int w, int h, int frames, bool weave) {
         Scene s = in.scene;
         s.camera = cam;
-        return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.iwasaki, gpu::Backdrop::measure, weave,
+        return render_gpu_frame(s, in.fabrics, lighting.sgs, method, w, h, frames, in.shading, gpu::Backdrop::measure, weave,
                                 !table_terms);
       };
       const Image alone_image = frame(close, kW, kH, 0, false).image;

@@ -19,7 +19,7 @@
 #include <sstream>
 
 #include "frame/frame_render.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "bundle/bundle_reader.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"
@@ -78,11 +78,11 @@ fs::path bundle_for(const Case& c) {
   return b;
 }
 
-std::shared_ptr<IwasakiBundleData> tables(const Case& c, const Scene& scene, bool visibility) {
+std::shared_ptr<ShadingData> tables(const Case& c, const Scene& scene, bool visibility) {
   const auto reader = bundle::BundleReader::open(bundle_for(c));
   std::map<size_t, size_t> vertices;
   for (size_t i = 0; i < scene.objects.size(); ++i) vertices[i] = scene.objects[i].mesh.positions.size();
-  auto d = std::make_shared<IwasakiBundleData>(read_iwasaki_sections(reader, vertices));
+  auto d = std::make_shared<ShadingData>(read_shading_data(reader, vertices));
   if (!visibility) d->visibility.clear();
   return d;
 }

@@ -149,7 +149,7 @@ void check_parity(const Case& c, const methods::RuntimeMethod& method) {
       }
       if (c.bumped) scene.objects[i].normal_map = NormalMap{ThreadMap{smooth_bumps(), "bumps", {{0.3, 0.1}, {0.07, 0.05}, 0.3}}, 1.0};
     }
-  auto data = std::make_shared<IwasakiBundleData>();
+  auto data = std::make_shared<ShadingData>();
   data->tables.emplace(c.fabric, bake_weighting_tables(fabric, test::parity_bake_settings()));
   SceneVisibilityOptions vo;
   vo.resolution = 16;

@@ -55,7 +55,7 @@ void check_parity(const std::string& method_name) {
       scene.objects[i].fabric = fabric.name;
       cloth_index = i;
     }
-  auto data = std::make_shared<IwasakiBundleData>();
+  auto data = std::make_shared<ShadingData>();
   data->tables.emplace(fabric.name, bake_weighting_tables(fabric, test::parity_bake_settings()));
   SceneVisibilityOptions vo;
   vo.resolution = 16;

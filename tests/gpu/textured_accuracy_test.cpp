@@ -102,10 +102,10 @@ Fabric swatch_fabric(const Scene& scene) {
 Image draw_gpu(const Scene& scene, const std::string& method) {
   const Fabric fabric = swatch_fabric(scene);
   // One bake of the tables for every draw (they depend on the fabric alone).
-  static std::map<std::string, std::shared_ptr<IwasakiBundleData>> baked;
+  static std::map<std::string, std::shared_ptr<ShadingData>> baked;
   auto& data = baked[fabric.name];
   if (!data) {
-    data = std::make_shared<IwasakiBundleData>();
+    data = std::make_shared<ShadingData>();
     data->tables.emplace(fabric.name, bake_weighting_tables(fabric, test::parity_bake_settings()));
   }
   gpu::EglContext ctx = gpu::EglContext::headless();

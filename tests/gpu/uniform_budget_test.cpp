@@ -90,7 +90,7 @@ TEST(UniformBudget, EveryKioskProgramFitsNvidiasRegisters) {
     const KioskBundle kb = read_kiosk_bundle(reader, m.name);
     const methods::RuntimeMethod& method = kiosk_method(m.name, kb, small.file());
     const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
-    std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+    std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
     r->set_lighting(kb.scene.sgs);
     target.bind();
     r->draw(kb.scene.scene.camera, kWidth, kHeight);

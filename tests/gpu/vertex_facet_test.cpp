@@ -73,7 +73,7 @@ TEST(VertexFacet, PerVertexSgsAreCutByTheFacetsPlane) {
   const std::string name = "polyester_satin_charmeuse";
   const Scene scene = leaning_quad(name);
   const Fabric fabric = load_fabric_preset(name, WEFT_SOURCE_ASSETS "/fabrics");
-  auto data = std::make_shared<IwasakiBundleData>();
+  auto data = std::make_shared<ShadingData>();
   data->tables.emplace(name, bake_weighting_tables(fabric, test::parity_bake_settings()));
   const SphericalGaussian low{towards_minus_y(-1.5), 1000.0, dvec3(60.0, 50.0, 40.0)};
   const SphericalGaussian high{glm::normalize(dvec3(0.3, -0.6, 0.8)), 40.0, dvec3(2.0, 2.0, 2.0)};

@@ -112,7 +112,7 @@ TEST(VisibleVertices, OnlyTheShownVerticesAreComputedAndTheFrameIsTheSame) {
   const std::string name = "linen_plain";
   const Scene scene = pillow_behind_panel(name);
   const Fabric fabric = load_fabric_preset(name, WEFT_SOURCE_ASSETS "/fabrics");
-  auto data = std::make_shared<IwasakiBundleData>();
+  auto data = std::make_shared<ShadingData>();
   data->tables.emplace(name, bake_weighting_tables(fabric, test::parity_bake_settings()));
   // A broad lobe (quadrature) and a sharp one (iwasaki): both kinds of block.
   const SgLighting sgs = {{glm::normalize(glm::dvec3(0.2, -0.5, 0.8)), 2.0, glm::dvec3(1.0, 0.9, 0.8)},

@@ -53,7 +53,7 @@ TEST(WeaveCulling, VisibleVerticesOnlyDrawTheSameFrame) {
     const std::vector<Fabric> cloth = cloth_fabrics(kb.scene);
     const Camera closeup = closeup_of(kb.scene.scene, cloth, kHeight);
     auto renderer = [&](bool visible_only) {
-      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+      std::unique_ptr<gpu::SceneRenderer> r = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
       r->set_lighting(kb.scene.sgs);
       r->set_visible_vertices_only(visible_only);
       return r;
@@ -107,9 +107,9 @@ TEST(WeaveKnob, AnotherPresetsThreadsAtTheirOwnSize) {
   ASSERT_GT(glm::length(weave_repeat_cm(turned_to) - weave_repeat_cm(cloth[0])), 0.05 * glm::length(weave_repeat_cm(cloth[0])))
       << "the two presets must differ in repeat for this to test anything";
   const Camera closeup = closeup_of(kb.scene.scene, cloth, kHeight);
-  std::unique_ptr<gpu::SceneRenderer> knob = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
-  std::unique_ptr<gpu::SceneRenderer> fresh = make_kiosk_renderer(kb.scene, {turned_to}, method, kb.iwasaki);
-  std::unique_ptr<gpu::SceneRenderer> before = make_kiosk_renderer(kb.scene, cloth, method, kb.iwasaki);
+  std::unique_ptr<gpu::SceneRenderer> knob = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
+  std::unique_ptr<gpu::SceneRenderer> fresh = make_kiosk_renderer(kb.scene, {turned_to}, method, kb.shading);
+  std::unique_ptr<gpu::SceneRenderer> before = make_kiosk_renderer(kb.scene, cloth, method, kb.shading);
   for (auto* r : {knob.get(), fresh.get(), before.get()}) r->set_lighting(kb.scene.sgs);
   gpu::OffscreenTarget a(kWidth, kHeight), b(kWidth, kHeight), c(kWidth, kHeight);
   a.bind();

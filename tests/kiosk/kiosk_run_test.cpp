@@ -86,7 +86,7 @@ protected:
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // Scene sections only: these tests are about the bundle and the loop (sgpoint draws it);
-    // iwasaki_bundle_test covers a bundle with the weighting tables.
+    // shading_data_test covers a bundle with the weighting tables.
     const Spawned b = spawn({"bake", "--scene", "pillow", "--fabric", "linen_plain", "--no-tables", "--out", (dir_ / "good.weft").string()},
                             {}, dir_ / "bake.log");
     ASSERT_EQ(wait_exit(b), 0) << read_all(dir_ / "bake.log");

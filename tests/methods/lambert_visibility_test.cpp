@@ -135,7 +135,7 @@ TEST(LambertVisibility, SceneRendererShadesTheFloorWithTheBundlesVisibility) {
   const Scene scene = parse_scene(kScene, "floor_shadow", ".");
   const size_t floor = 1;
   const TriangleMesh& mesh = scene.objects[floor].mesh;
-  auto data = std::make_shared<IwasakiBundleData>();
+  auto data = std::make_shared<ShadingData>();
   SceneVisibilityOptions opt;
   opt.resolution = 32;
   data->visibility.emplace(floor, *bake_object_visibility(scene, floor, opt));

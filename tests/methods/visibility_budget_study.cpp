@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/writers/shading_data_writer.h"
 #include "bake/scene/scene_bake.h"
 #include "bake/visibility/visibility_mask_bake.h"
 #include "measure/image_metrics.h"
@@ -101,7 +101,7 @@ double facet_share(const SphericalGaussian& g, const dvec3& shade, const dvec3& 
 
 // The weighting-table bundle of `scene` at the bench's settings, cached as a bundle file; `tables`: the
 // fabric's tables when another scene's bundle holds them (then only the visibility is baked).
-IwasakiBundleData bundle_for(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+ShadingData bundle_for(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
                              std::map<std::string, WeightingTables>& tables) {
   const int grid = env_int("WEFT_STUDY_GRID", 0), sdf = env_int("WEFT_STUDY_SDF", 128);
   const auto file = env_path("WEFT_STUDY_CACHE") /
@@ -110,21 +110,21 @@ IwasakiBundleData bundle_for(const Scene& scene, const std::map<std::string, Fab
   std::map<size_t, size_t> vertex_counts;
   for (size_t i = 0; i < scene.objects.size(); ++i) vertex_counts[i] = scene.objects[i].mesh.positions.size();
   if (std::filesystem::exists(file)) {
-    IwasakiBundleData data = read_iwasaki_sections(bundle::BundleReader::read(file), vertex_counts);
+    ShadingData data = read_shading_data(bundle::BundleReader::read(file), vertex_counts);
     tables.insert(data.tables.begin(), data.tables.end());
     return data;
   }
-  IwasakiBakeOptions o;
+  ShadingDataBakeOptions o;
   o.quiet = true;
   o.grid = grid;
   o.visibility.resolution = sdf;
   o.bake_tables = !tables.count(fabrics.begin()->first);
   std::fprintf(stderr, "baking %s ...\n", file.string().c_str());
-  IwasakiBundleData data = bake_iwasaki(scene, fabrics, o);
+  ShadingData data = bake_shading_data(scene, fabrics, o);
   if (o.bake_tables) tables.insert(data.tables.begin(), data.tables.end());
   else data.tables.emplace(fabrics.begin()->first, tables.at(fabrics.begin()->first));
   bundle::BundleWriter writer;
-  add_iwasaki_sections(writer, data);
+  add_shading_data_sections(writer, data);
   writer.write_file(file);
   return data;
 }
@@ -144,7 +144,7 @@ struct Study {
   void run(const std::string& scene_name, const std::string& fabric_name, const std::string& env) {
     Scene scene = load_scene_named(scene_name, WEFT_SOURCE_ASSETS, fabric_name);
     std::map<std::string, Fabric> fabrics = test::dress_cloth(scene, fabric_name);
-    const IwasakiBundleData data = bundle_for(scene, fabrics, tables_by_fabric);
+    const ShadingData data = bundle_for(scene, fabrics, tables_by_fabric);
     SgFitOptions fit;
     fit.count = 10;
     SgLighting sgs;

@@ -7,7 +7,7 @@
 
 #include "bake/tables/bake_selection.h"
 #include "bake/writers/bundle_fabrics.h"
-#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/writers/shading_data_writer.h"
 #include "bake/visibility/sigmoid_gain.h"
 #include "bake/visibility/visibility_mask_bake.h"
 #include "bake/tables/weighting_bake.h"
@@ -19,16 +19,16 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 // The stage's progress display, or one that shows nothing.
-std::function<void(double)> open_stage(const IwasakiBakeOptions& opt, const std::string& stage) {
+std::function<void(double)> open_stage(const ShadingDataBakeOptions& opt, const std::string& stage) {
   if (opt.progress) return opt.progress(stage);
   return [](double) {};
 }
 }  // namespace
 
-IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
-                               const IwasakiBakeOptions& opt, IwasakiBakeReport* report) {
-  IwasakiBundleData out;
-  IwasakiBakeReport rep;
+ShadingData bake_shading_data(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                               const ShadingDataBakeOptions& opt, ShadingDataBakeReport* report) {
+  ShadingData out;
+  ShadingDataBakeReport rep;
   auto t0 = std::chrono::steady_clock::now();
   // Per fabric, not per colour: a colourway that changes colours only reuses its fabric's tables.
   for (const std::string& fabric_name : worn_fabrics(scene)) {
@@ -125,11 +125,11 @@ IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, F
 }
 
 std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
-                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& opt,
-                               IwasakiBundleData* baked) {
-  IwasakiBakeReport report;
-  IwasakiBundleData data = bake_iwasaki(scene, cloth_fabrics(scene, fabric_texts), opt, &report);
-  add_iwasaki_sections(writer, data, &scene);
+                               const std::map<std::string, std::string>& fabric_texts, const ShadingDataBakeOptions& opt,
+                               ShadingData* baked) {
+  ShadingDataBakeReport report;
+  ShadingData data = bake_shading_data(scene, cloth_fabrics(scene, fabric_texts), opt, &report);
+  add_shading_data_sections(writer, data, &scene);
   char buf[256];
   std::snprintf(buf, sizeof buf, "tables for %zu fabric(s) %.1f s, visibility for %zu object(s) %.1f s, kappa %.1f s",
                 data.tables.size(), report.tables_s, data.visibility.size(), report.visibility_s, report.kappa_s);

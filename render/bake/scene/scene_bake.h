@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "bake/visibility/scene_visibility.h"
 #include "bundle/bundle_writer.h"
 #include "core/fabric.h"
@@ -20,7 +20,7 @@ namespace weft {
 // returned function is then called with the fraction of the stage done (1.0 at its end).
 using StageProgress = std::function<std::function<void(double)>(const std::string& stage)>;
 
-struct IwasakiBakeOptions {
+struct ShadingDataBakeOptions {
   double target_error = 0.0;  // > 0: bake_selection picks the table settings (and prints its table)
   int grid = 0;               // > 0: ξ, ω_o and ω_i grids n×n instead of the paper's 48×48 (tests, previews)
   std::array<int, 2> tangent_samples{0, 0};  // > 0: override the paper's (or the selection's) counts
@@ -38,20 +38,20 @@ struct IwasakiBakeOptions {
   StageProgress progress;     // none: no progress shown
 };
 
-struct IwasakiBakeReport {
+struct ShadingDataBakeReport {
   double tables_s = 0, visibility_s = 0, kappa_s = 0;
 };
 
 // `fabrics`: preset → fabric for every cloth object's preset.
-IwasakiBundleData bake_iwasaki(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
-                               const IwasakiBakeOptions& options, IwasakiBakeReport* report = nullptr);
+ShadingData bake_shading_data(const Scene& scene, const std::map<std::string, Fabric>& fabrics,
+                               const ShadingDataBakeOptions& options, ShadingDataBakeReport* report = nullptr);
 
 // `weft bake`'s weighting-table sections: bakes for the scene's cloth fabrics (parsed from the fabric
 // texts the bundle stores, preset → JSON) and adds the sections to `writer`. Returns the
 // summary line: "tables for N fabric(s) T s, visibility for M object(s) V s, kappa K s".
 // `baked`: also gets the data written (for measuring what the bundle will draw).
 std::string add_baked_sections(bundle::BundleWriter& writer, const Scene& scene,
-                               const std::map<std::string, std::string>& fabric_texts, const IwasakiBakeOptions& options,
-                               IwasakiBundleData* baked = nullptr);
+                               const std::map<std::string, std::string>& fabric_texts, const ShadingDataBakeOptions& options,
+                               ShadingData* baked = nullptr);
 
 }  // namespace weft

@@ -16,7 +16,7 @@
 namespace weft {
 
 RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
-                       std::shared_ptr<const IwasakiBundleData> data, const std::vector<std::string>& candidates,
+                       std::shared_ptr<const ShadingData> data, const std::vector<std::string>& candidates,
                        const SelectionViewOptions& views, const std::filesystem::path& cache,
                        const std::function<void(const std::string&)>& log) {
   if (candidates.empty()) throw std::invalid_argument("choose_rung: no candidate method");

@@ -16,7 +16,7 @@
 
 #include "measure/selection_views.h"
 #include "core/spherical_gaussian.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "scene/scene.h"
 
 namespace weft {
@@ -44,7 +44,7 @@ struct RungChoice {
 // (preset → fabric file text, as the bundle stores them) give the cloth's fabrics and key the
 // reference cache. Throws std::invalid_argument without candidates or cloth.
 RungChoice choose_rung(const Scene& scene, const std::map<std::string, std::string>& fabric_texts, const SgLighting& sgs,
-                       std::shared_ptr<const IwasakiBundleData> data, const std::vector<std::string>& candidates,
+                       std::shared_ptr<const ShadingData> data, const std::vector<std::string>& candidates,
                        const SelectionViewOptions& views, const std::filesystem::path& cache,
                        const std::function<void(const std::string&)>& log = {});
 

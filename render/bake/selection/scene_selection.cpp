@@ -139,8 +139,8 @@ public:
     return s;
   }
 
-  IwasakiBundleData data(const SceneSetting& s) {
-    IwasakiBundleData d;
+  ShadingData data(const SceneSetting& s) {
+    ShadingData d;
     for (const auto& [name, f] : fabrics_)
       d.tables.emplace(name, truncate_tables(tables(name, s.samples), knobs_.svd_errors[s.svd],
                                              knobs_.level_strides[s.levels]));
@@ -154,7 +154,7 @@ public:
 
   const SettingMeasure& measure(const SceneSetting& s) {
     if (auto it = measured_.find(s); it != measured_.end()) return it->second;
-    auto bundle = std::make_shared<const IwasakiBundleData>(data(s));
+    auto bundle = std::make_shared<const ShadingData>(data(s));
     SettingMeasure m;
     m.setting = s;
     m.subdivision = knobs_.subdivisions[s.density];
@@ -243,7 +243,7 @@ private:
 
   // The modelled frame cost of view 0 at the kiosk's resolution (measure/frame_work.h): the cloth's
   // vertices and their fabrics' tangent samples, the reference's cloth pixels scaled to 640×480.
-  double work(const SceneSetting& s, const IwasakiBundleData& d, int sg_count) {
+  double work(const SceneSetting& s, const ShadingData& d, int sg_count) {
     double vertices = 0.0, vertex_samples = 0.0;
     for (const auto& o : scene(s.density).cloth_objects()) {
       const auto& t = d.tables.at(o.fabric).tangent_samples;

@@ -42,7 +42,7 @@
 #include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 #include "core/spherical_gaussian.h"
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "scene/scene.h"
 
 namespace weft {
@@ -121,7 +121,7 @@ struct SceneSelection {
   std::string method;                  // the chosen setting's runtime method
   std::string description;             // the chosen setting in words
   std::vector<SettingMeasure> tried;   // in the order measured
-  IwasakiBundleData data;              // the chosen setting's tables, visibility and κ
+  ShadingData data;              // the chosen setting's tables, visibility and κ
   SgLighting sgs;                      // the chosen setting's SGs (its fit when the SG count was searched)
   int subdivision = 0;                 // the chosen setting's refinement of the cloth meshes: its
                                        // `data` is for refine_and_order_meshes(scene, subdivision)

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/writers/bundle_fabrics.h"
-#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/writers/shading_data_writer.h"
 #include "bake/selection/rung_choice.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
@@ -74,7 +74,7 @@ std::string selection_summary(const SceneSelection& s, const SceneSelectionOptio
 }
 
 void add_selection_sections(bundle::BundleWriter& writer, const SceneSelection& s, const SceneSelectionOptions& o) {
-  add_iwasaki_sections(writer, s.data);
+  add_shading_data_sections(writer, s.data);
   writer.add_json(kSelectionSection, selection_json(s, o));
 }
 
@@ -119,12 +119,12 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
   return buf;
 }
 
-std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
+std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, ShadingData baked,
                             const SelectionViewOptions& views, const std::filesystem::path& cache,
                             const std::function<void(const std::string&)>& log) {
   if (baked.masks.empty()) return "no occluded cloth: no rung to choose (the SDF and the masks agree on open cloth)";
   auto say = [&log](const std::string& line) { log ? log(line) : void(std::fprintf(stderr, "  choose rung: %s\n", line.c_str())); };
-  const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const IwasakiBundleData>(std::move(baked)),
+  const RungChoice c = choose_rung(in.scene, in.fabrics, in.sgs, std::make_shared<const ShadingData>(std::move(baked)),
                                    kVertexRungCandidates, views, cache.empty() ? default_reference_cache() : cache, say);
   writer.add_json(kSelectionSection, rung_choice_json(c));
   std::string line = "rung " + c.method + " (";

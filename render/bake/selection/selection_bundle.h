@@ -49,7 +49,7 @@ std::string add_selected_bundle(bundle::BundleWriter& writer, SceneBundleInput& 
 // References to `cache`, else default_reference_cache(); progress lines to `log`, else stderr.
 // Returns the summary line's part (the rung and each candidate's error), or why nothing was chosen
 // (no occluded cloth).
-std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, IwasakiBundleData baked,
+std::string add_rung_choice(bundle::BundleWriter& writer, const SceneBundleInput& in, ShadingData baked,
                             const SelectionViewOptions& views, const std::filesystem::path& cache,
                             const std::function<void(const std::string&)>& log = {});
 

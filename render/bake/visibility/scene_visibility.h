@@ -7,7 +7,7 @@
 #include <functional>
 #include <optional>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "bake/visibility/visibility_pca.h"
 #include "scene/scene.h"
 

@@ -134,7 +134,7 @@ bool same_but_albedo(const Fabric& a, const Fabric& b) {
 }
 }  // namespace
 
-IwasakiCloth::IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation, IwasakiShaders shaders)
+IwasakiCloth::IwasakiCloth(std::shared_ptr<const ShadingData> data, Evaluation evaluation, IwasakiShaders shaders)
     : data_(std::move(data)), evaluation_(evaluation), shaders_(std::move(shaders)), program_(make_program(evaluation, shaders_)) {
   if (evaluation_ == Evaluation::per_vertex) {
     if (!shaders_.facet_per_sg)  // else facet_draw(), built for the SGs drawn

@@ -19,7 +19,7 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 #include "core/cloth_bsdf.h"
 #include "core/spherical_gaussian.h"
 #include "gl/gl_program.h"
@@ -76,7 +76,7 @@ class VisibleVertices;
 class IwasakiCloth : public ClothMethod {
 public:
   enum class Evaluation { per_pixel, per_vertex };
-  explicit IwasakiCloth(std::shared_ptr<const IwasakiBundleData> data, Evaluation evaluation = Evaluation::per_pixel,
+  explicit IwasakiCloth(std::shared_ptr<const ShadingData> data, Evaluation evaluation = Evaluation::per_pixel,
                         IwasakiShaders shaders = iwasaki_shaders());
   ~IwasakiCloth() override;
   size_t add_object(size_t scene_index, const TriangleMesh& mesh, const Fabric& fabric) override;
@@ -113,7 +113,7 @@ private:
   struct Object;
   const WeightingTablesTexture& tables_for(const Fabric& fabric);
   SgVisibility values_for(const Object& o, const SgLighting& drawn) const;  // per (vertex, SG), for the lighting drawn
-  std::shared_ptr<const IwasakiBundleData> data_;
+  std::shared_ptr<const ShadingData> data_;
   Evaluation evaluation_;
   IwasakiShaders shaders_;
   GlProgram program_;                       // per pixel: the cloth's draw; per vertex: the vertex pass

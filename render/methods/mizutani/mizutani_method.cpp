@@ -19,7 +19,7 @@ const std::vector<std::string_view> kGlsl = {"microcylinder.glsl", "hemisphere_g
 
 class MizutaniCloth : public gpu::ProgramCloth {
 public:
-  MizutaniCloth(std::shared_ptr<const IwasakiBundleData> bundle, TableSource tables)
+  MizutaniCloth(std::shared_ptr<const ShadingData> bundle, TableSource tables)
       : ProgramCloth(gpu::with_main(kGlsl, "mizutani.frag"),  // its light arrays are sized at compile time
                      "#define MAX_SGS " + std::to_string(gpu::kMizutaniMaxSgs) + "\n"),
         bundle_(std::move(bundle)),
@@ -63,7 +63,7 @@ private:
     if (!t) throw gpu::GpuError("method mizutani bakes its tables as it starts: only the offline commands (weft render, weft bench) can show it");
     return t;
   }
-  std::shared_ptr<const IwasakiBundleData> bundle_;
+  std::shared_ptr<const ShadingData> bundle_;
   TableSource tables_;
   AzimuthalTable azimuthal_;
   std::vector<Object> objects_;

@@ -25,19 +25,19 @@ namespace {
 
 // The pillow in linen under 10 SGs fitted to its map, baked small, with masks.
 struct Pillow : test::SceneCase {
-  std::shared_ptr<const IwasakiBundleData> data;
+  std::shared_ptr<const ShadingData> data;
 };
 
 const Pillow& pillow() {
   static const Pillow p = [] {
     Pillow w;
     static_cast<test::SceneCase&>(w) = test::scene_in_fabric("pillow", "linen_plain");
-    IwasakiBakeOptions bake;
+    ShadingDataBakeOptions bake;
     bake.grid = 12, bake.lambda_levels = 5, bake.tangent_samples = {2, 3};
     bake.visibility.resolution = 16, bake.visibility.lambertian_resolution = 16;
     bake.mask_resolution = 16;
     bake.quiet = true;
-    w.data = std::make_shared<const IwasakiBundleData>(bake_iwasaki(w.scene, w.fabrics, bake));
+    w.data = std::make_shared<const ShadingData>(bake_shading_data(w.scene, w.fabrics, bake));
     return w;
   }();
   return p;
@@ -110,7 +110,7 @@ TEST(RungChoice, BadInputGetsAClearError) {
   EXPECT_THROW(choose_rung(bare, w.texts, w.sgs, w.data, kVertexRungCandidates, small_views(), cache),
                std::invalid_argument);
   // A bundle without masks cannot draw the masks' rung: the renderer says which object lacks one.
-  auto no_masks = std::make_shared<IwasakiBundleData>(*w.data);
+  auto no_masks = std::make_shared<ShadingData>(*w.data);
   no_masks->masks.clear();
   try {
     choose_rung(w.scene, w.texts, w.sgs, no_masks, {"iwasaki_vertex_mask_quadrature"}, small_views(), cache);

@@ -91,7 +91,7 @@ std::filesystem::path fresh_cache(const std::string& name) {
 double independent_error(const Swatch& w, const SceneSelection& s, const SgLighting& lighting_sgs) {
   const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, lighting_sgs, 64, 48, 6, 16);
   const GpuFrame f = render_gpu_frame(refine_and_order_meshes(w.scene, s.subdivision), w.fabrics, s.sgs, s.method, 64,
-                                      48, 0, std::make_shared<const IwasakiBundleData>(s.data));
+                                      48, 0, std::make_shared<const ShadingData>(s.data));
   return bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
 }
 
@@ -120,7 +120,7 @@ TEST(SceneSelection, ReachableTargetHoldsOnAnIndependentRender) {
   // The scene camera's view, rendered here, against a reference rendered here.
   const ReferenceRenderResult ref = test::sg_reference(w.scene, w.fabrics, w.sgs, 64, 48, 6, 16);
   const GpuFrame f = render_gpu_frame(refine_and_order_meshes(w.scene, s.subdivision), w.fabrics, w.sgs, s.method, 64,
-                                      48, 0, std::make_shared<const IwasakiBundleData>(s.data));
+                                      48, 0, std::make_shared<const ShadingData>(s.data));
   const double e = bench::cloth_error(f.image, ref.image, ref.kinds).relative_rmse;
   EXPECT_LE(e, target);
   EXPECT_NEAR(e, s.chosen.view_errors[0], 1e-3);

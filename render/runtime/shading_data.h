@@ -3,8 +3,10 @@
 // tables T of each baked fabric (SVD factors), the per-vertex visibility SDF of each occluded
 // object (cloth, floor, occluder) as PCA (mean, basis, coefficients), the sigmoid gain table κ,
 // and each occluded cloth object's per-vertex visibility mask (runtime/visibility_mask.h). Written by
-// `weft bake` beside the scene sections (render/bake/writers/iwasaki_bundle_writer.h), read here for
-// `weft run` / `weft render --method iwasaki`.
+// `weft bake` beside the scene sections (render/bake/writers/shading_data_writer.h), read here for
+// `weft run` and `weft render`. Method-neutral: the iwasaki, mizutani and sheer rungs read the
+// tables, the per-vertex rungs and the weave layer the visibility and masks, the floors the
+// visibility; what each rung needs is declared in its RuntimeMethod (weighting_tables, masks).
 #include <map>
 #include <optional>
 #include <string>
@@ -20,7 +22,7 @@
 
 namespace weft {
 
-namespace iwasaki_section {
+namespace shading_data_section {
 inline constexpr const char* kTablesIndex = "bake/T";     // json: {preset: {id, grids, levels, samples, ranks}}
 inline constexpr const char* kVisIndex = "bake/vis";      // json: {object index: {resolution, terms, errors}}
 inline constexpr const char* kKappa = "kappa";            // f32 [σ_l, σ', β]: normalised gains κ·s
@@ -30,9 +32,9 @@ std::string mask(size_t object);                          // "mask/<i>/bits" (u3
 std::string table(int id, const char* part);              // "T/<id>/u", "T/<id>/v" (f32, all levels concatenated)
 std::string vis(size_t object, const char* part);         // "vis/<i>/pca_mean" [cells], "pca_basis" [terms, cells],
                                                           // "pca_coeffs" [vertices, terms]
-}  // namespace iwasaki_section
+}  // namespace shading_data_section
 
-struct IwasakiBundleData {
+struct ShadingData {
   std::map<std::string, WeightingTables> tables;     // by fabric preset
   std::map<size_t, ObjectVisibility> visibility;     // by scene object index; absent: unoccluded
   std::optional<SigmoidGainTable> kappa;             // present whenever visibility is
@@ -40,18 +42,18 @@ struct IwasakiBundleData {
 };
 
 // True when the bundle holds weighting tables (the `bake/T` index).
-bool has_iwasaki_sections(const bundle::BundleReader& reader);
+bool has_shading_data(const bundle::BundleReader& reader);
 
 // Reads them back. Throws bundle::BundleError naming the section when one is missing, has the
 // wrong type or shape, or holds invalid values; `vertex_counts[i]` (object i's vertices) checks
 // the coefficients.
-IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts);
+ShadingData read_shading_data(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts);
 // The same where an object may carry a pass subset (scene/vertex_pass_mesh.h): its per-vertex rows
 // (PCA coefficients, mask bits) may then be stored at the pass vertices only, and are spread back
 // to every vertex (coefficients blended, bits of the heaviest corner), as the bake made them.
-IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts,
+ShadingData read_shading_data(const bundle::BundleReader& reader, const std::map<size_t, size_t>& vertex_counts,
                                         const std::map<size_t, const VertexPassMesh*>& passes);
 // The scene's objects' vertex counts and pass subsets (the scene as read from the same bundle).
-IwasakiBundleData read_scene_iwasaki_sections(const bundle::BundleReader& reader, const Scene& scene);
+ShadingData read_scene_shading_data(const bundle::BundleReader& reader, const Scene& scene);
 
 }  // namespace weft

@@ -1,4 +1,4 @@
-#include "runtime/iwasaki_bundle.h"
+#include "runtime/shading_data.h"
 
 #include <cmath>
 
@@ -9,11 +9,11 @@
 
 namespace weft {
 
-namespace iwasaki_section {
+namespace shading_data_section {
 std::string table(int id, const char* part) { return "T/" + std::to_string(id) + "/" + part; }
 std::string vis(size_t object, const char* part) { return "vis/" + std::to_string(object) + "/" + part; }
 std::string mask(size_t object) { return "mask/" + std::to_string(object) + "/bits"; }
-}  // namespace iwasaki_section
+}  // namespace shading_data_section
 
 namespace {
 
@@ -43,13 +43,13 @@ std::vector<float> floats(const bundle::BundleReader& r, const std::string& name
 
 }  // namespace
 
-bool has_iwasaki_sections(const bundle::BundleReader& r) { return r.has(iwasaki_section::kTablesIndex); }
+bool has_shading_data(const bundle::BundleReader& r) { return r.has(shading_data_section::kTablesIndex); }
 
-IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
-  return read_iwasaki_sections(r, vertex_counts, {});
+ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
+  return read_shading_data(r, vertex_counts, {});
 }
 
-IwasakiBundleData read_scene_iwasaki_sections(const bundle::BundleReader& r, const Scene& scene) {
+ShadingData read_scene_shading_data(const bundle::BundleReader& r, const Scene& scene) {
   std::map<size_t, size_t> counts;
   std::map<size_t, const VertexPassMesh*> passes;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -57,18 +57,18 @@ IwasakiBundleData read_scene_iwasaki_sections(const bundle::BundleReader& r, con
     counts[i] = m.positions.size();
     if (!pass_of(m).whole()) passes[i] = &pass_of(m);
   }
-  return read_iwasaki_sections(r, counts, passes);
+  return read_shading_data(r, counts, passes);
 }
 
-IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
+ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
                                         const std::map<size_t, const VertexPassMesh*>& passes) {
   // Rows stored at an object's pass vertices only: how many, where it has a pass subset.
   auto pass_rows = [&](size_t object) -> const VertexPassMesh* {
     const auto p = passes.find(object);
     return p == passes.end() ? nullptr : p->second;
   };
-  IwasakiBundleData out;
-  const std::string TI = iwasaki_section::kTablesIndex;
+  ShadingData out;
+  const std::string TI = shading_data_section::kTablesIndex;
   const json index = parse(r, TI);
   if (!index.is_object()) throw bad(r, TI, "expected an object of fabric presets");
   for (const auto& [preset, j] : index.items()) {
@@ -77,8 +77,8 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     std::vector<int> ranks;
     try {
       const int id = j.at("id").get<int>();
-      u_name = iwasaki_section::table(id, "u");
-      v_name = iwasaki_section::table(id, "v");
+      u_name = shading_data_section::table(id, "u");
+      v_name = shading_data_section::table(id, "v");
       // Tables are values at the node grid's directions: on another grid they would be read wrong.
       const std::string grid = j.contains("node_grid") ? j.at("node_grid").get<std::string>() : "equal-area (before 2026-12)";
       if (grid != kNodeGridId)
@@ -125,7 +125,7 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     out.tables.emplace(preset, std::move(t));
   }
 
-  const std::string VI = iwasaki_section::kVisIndex;
+  const std::string VI = shading_data_section::kVisIndex;
   const json vis = parse(r, VI);
   if (!vis.is_object()) throw bad(r, VI, "expected an object keyed by scene object index");
   for (const auto& [key, j] : vis.items()) {
@@ -145,8 +145,8 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     const auto vc = vertex_counts.find(object);
     if (vc == vertex_counts.end()) throw bad(r, VI, "entry '" + key + "': no such object in the scene");
     const size_t cells = size_t(o.resolution) * o.resolution;
-    o.mean = floats(r, iwasaki_section::vis(object, "pca_mean"), cells);
-    o.basis = floats(r, iwasaki_section::vis(object, "pca_basis"), cells * o.terms);
+    o.mean = floats(r, shading_data_section::vis(object, "pca_mean"), cells);
+    o.basis = floats(r, shading_data_section::vis(object, "pca_basis"), cells * o.terms);
     if (o.terms == 0) {
       // Every vertex sees the mean (a part whose vertices all see the same sky): no rows carry
       // the vertex count, so one zero term stands in, exact.
@@ -156,7 +156,7 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
       out.visibility.emplace(object, std::move(o));
       continue;
     }
-    const std::string cs = iwasaki_section::vis(object, "pca_coeffs");
+    const std::string cs = shading_data_section::vis(object, "pca_coeffs");
     const VertexPassMesh* pass = pass_rows(object);
     if (pass && r.array<float>(cs).size() == pass->vertices.size() * size_t(o.terms))  // at the pass vertices
       o.coefficients = blended_rows(*pass, floats(r, cs, pass->vertices.size() * o.terms), size_t(o.terms));
@@ -165,9 +165,9 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
     out.visibility.emplace(object, std::move(o));
   }
 
-  if (r.has(iwasaki_section::kKappa)) {
-    const std::string K = iwasaki_section::kKappa;
-    const json kj = parse(r, iwasaki_section::kKappaIndex);
+  if (r.has(shading_data_section::kKappa)) {
+    const std::string K = shading_data_section::kKappa;
+    const json kj = parse(r, shading_data_section::kKappaIndex);
     const auto& info = r.section(K);
     if (info.shape.size() != 3) throw bad(r, K, "expected shape [σ_l, σ', β]");
     SigmoidGainTableSpec spec;
@@ -182,10 +182,10 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
       throw bad(r, K, e.what());
     }
   }
-  if (!out.visibility.empty() && !out.kappa) throw bad(r, iwasaki_section::kKappa, "missing: visibility needs κ");
+  if (!out.visibility.empty() && !out.kappa) throw bad(r, shading_data_section::kKappa, "missing: visibility needs κ");
 
-  if (r.has(iwasaki_section::kMaskIndex)) {
-    const std::string MI = iwasaki_section::kMaskIndex;
+  if (r.has(shading_data_section::kMaskIndex)) {
+    const std::string MI = shading_data_section::kMaskIndex;
     const json masks = parse(r, MI);
     if (!masks.is_object()) throw bad(r, MI, "expected an object keyed by scene object index");
     for (const auto& [key, j] : masks.items()) {
@@ -201,7 +201,7 @@ IwasakiBundleData read_iwasaki_sections(const bundle::BundleReader& r, const std
         throw bad(r, MI, "entry '" + key + "': resolution must be a multiple of 8 within 8..256");
       const auto vc = vertex_counts.find(object);
       if (vc == vertex_counts.end()) throw bad(r, MI, "entry '" + key + "': no such object in the scene");
-      const std::string name = iwasaki_section::mask(object);
+      const std::string name = shading_data_section::mask(object);
       const auto bits = r.array<std::uint32_t>(name);
       const VertexPassMesh* pass = pass_rows(object);
       const bool at_pass = pass && bits.size() == 2 * pass->vertices.size() * size_t(m.blocks());

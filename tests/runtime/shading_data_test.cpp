@@ -1,4 +1,4 @@
-// The weighting-table sections of a bundle (render/bake/iwasaki_bundle): what add_iwasaki_sections writes
+// The weighting-table sections of a bundle (render/bake/writers/shading_data_writer.h): what add_shading_data_sections writes
 // reads back bit for bit, and a bundle with a section missing or of the wrong size is refused
 // with a BundleError naming that section (visibility masks included).
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "bake/writers/iwasaki_bundle_writer.h"
+#include "bake/writers/shading_data_writer.h"
 #include "bake/tables/weighting_bake.h"
 #include "core/fabric.h"
 
@@ -14,8 +14,8 @@ using namespace weft;
 
 namespace {
 
-IwasakiBundleData sample_data() {
-  IwasakiBundleData d;
+ShadingData sample_data() {
+  ShadingData d;
   BakeSettings s;
   s.tangent_samples = {2, 1};
   s.xi_resolution = s.wo_resolution = s.wi_resolution = 8;
@@ -43,9 +43,9 @@ IwasakiBundleData sample_data() {
   return d;
 }
 
-std::vector<std::byte> write(const IwasakiBundleData& d) {
+std::vector<std::byte> write(const ShadingData& d) {
   bundle::BundleWriter w;
-  add_iwasaki_sections(w, d);
+  add_shading_data_sections(w, d);
   return w.to_bytes();
 }
 
@@ -79,12 +79,12 @@ void expect_half_rounded(const std::vector<float>& want, const std::vector<float
 
 }  // namespace
 
-TEST(IwasakiBundle, RoundTrips) {
-  const IwasakiBundleData d = sample_data();
+TEST(ShadingData, RoundTrips) {
+  const ShadingData d = sample_data();
   const auto bytes = write(d);
   const auto r = bundle::BundleReader::view(bytes, "mem");
-  ASSERT_TRUE(has_iwasaki_sections(r));
-  const IwasakiBundleData back = read_iwasaki_sections(r, kVertices);
+  ASSERT_TRUE(has_shading_data(r));
+  const ShadingData back = read_shading_data(r, kVertices);
   const WeightingTables &a = d.tables.at("linen_plain"), &b = back.tables.at("linen_plain");
   EXPECT_EQ(a.tangent_samples, b.tangent_samples);
   EXPECT_EQ(a.tilts, b.tilts);
@@ -115,14 +115,14 @@ TEST(IwasakiBundle, RoundTrips) {
 // A part whose vertices all see the same sky compresses to its mean alone (no PCA term: a real
 // third-party file, assimp-testmodels' 2CylinderEngine, has one); the reader gives every vertex
 // of the mesh that mean.
-TEST(IwasakiBundle, AVisibilityOfNoTermsIsTheMeanAtEveryVertex) {
-  IwasakiBundleData d = sample_data();
+TEST(ShadingData, AVisibilityOfNoTermsIsTheMeanAtEveryVertex) {
+  ShadingData d = sample_data();
   ObjectVisibility& v = d.visibility.at(1);
   v.terms = 0;
   v.basis.clear();
   v.coefficients.clear();
   const auto bytes = write(d);
-  const IwasakiBundleData back = read_iwasaki_sections(bundle::BundleReader::view(bytes, "mem"), kVertices);
+  const ShadingData back = read_shading_data(bundle::BundleReader::view(bytes, "mem"), kVertices);
   const ObjectVisibility& b = back.visibility.at(1);
   ASSERT_EQ(b.vertex_count(), kVertices.at(1));
   EXPECT_EQ(b.mean, v.mean);
@@ -130,11 +130,11 @@ TEST(IwasakiBundle, AVisibilityOfNoTermsIsTheMeanAtEveryVertex) {
     for (int t = 0; t < b.terms; ++t) EXPECT_EQ(b.coefficients[vertex * b.terms + t], 0.0f);
 }
 
-TEST(IwasakiBundle, ErrorsNameTheSection) {
+TEST(ShadingData, ErrorsNameTheSection) {
   const auto bytes = write(sample_data());
   auto section_of = [](const std::vector<std::byte>& b) -> std::string {
     try {
-      read_iwasaki_sections(bundle::BundleReader::view(b, "bad"), kVertices);
+      read_shading_data(bundle::BundleReader::view(b, "bad"), kVertices);
     } catch (const bundle::BundleError& e) {
       EXPECT_NE(std::string(e.what()).find(e.section()), std::string::npos) << e.what();
       return e.section();
@@ -153,7 +153,7 @@ TEST(IwasakiBundle, ErrorsNameTheSection) {
   // Coefficients for another mesh: the vertex count is checked.
   EXPECT_EQ(section_of(bytes), "(no error)");
   try {
-    read_iwasaki_sections(bundle::BundleReader::view(bytes, "other"), {{0, 100}, {1, 4}});
+    read_shading_data(bundle::BundleReader::view(bytes, "other"), {{0, 100}, {1, 4}});
     ADD_FAILURE() << "a vertex-count mismatch was accepted";
   } catch (const bundle::BundleError& e) {
     EXPECT_EQ(e.section(), "vis/1/pca_coeffs");
