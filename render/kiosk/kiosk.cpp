@@ -205,8 +205,9 @@ void Kiosk::show_first_frame() {
   meter_as_baked();
   boot_stage("metering", stage);
   poll_knobs();
+  // The light set above stands unless the look restored turns it (relight, at once before the
+  // first frame): set again it would cost a dense mesh's whole lighting stage a second time.
   idle_.touched(Clock::now());  // a look restored at boot goes home after the idle time too
-  if (!look_applier_.light_turn_deg()) renderer_->set_lighting(scene_->sgs);
   zoom_shown_ = zoom_drawn_ = look_sink_.zoom_target();  // a kiosk started zoomed in (--zoom) shows it at once
   draw_frame(0);
   boot_stage("frame", stage);
