@@ -9,11 +9,9 @@
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "core/cloth_bsdf.h"
-#include "bake/tables/bake_selection.h"
-#include "bake/tables/weighting_bake.h"
-#include "bake/tables/azimuthal_bake.h"
-#include "methods/iwasaki/iwasaki.h"
-#include "methods/mizutani/mizutani.h"
+#include "bake/tables/table_baker.h"
+#include "methods/registry.h"
+#include "runtime/paper_tangent_samples.h"
 #include "reference/sg_quadrature.h"
 
 namespace weft {
@@ -28,47 +26,32 @@ struct EvalArgs {
   double tolerance = 0.002;
 };
 
-// iwasaki's approximation at the swatch: bakes the fabric's weighting tables with the paper's
-// settings (tangent samples of its Table 1), then evaluates Eq. 8–13 unoccluded.
-int run_iwasaki(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
-  BakeSettings settings;
-  settings.tangent_samples = paper_tangent_samples(fabric);
+// A registered method's C++ evaluation (RuntimeMethod::cpu, as `weft bench`'s stability table
+// runs it) at the swatch: table-backed methods bake their small tables on first use, with the
+// fabric's tangent samples of the paper's Table 1.
+int run_method(const EvalArgs& a, const methods::RuntimeMethod& m, const Fabric& fabric, const dvec3& wo,
+               const SgLighting& sgs) {
+  const std::array<int, 2> samples = paper_tangent_samples(fabric);
+  const ClothBsdf bsdf(fabric, samples);
   const auto t0 = std::chrono::steady_clock::now();
-  const WeightingTables tables = bake_weighting_tables(fabric, settings);
+  const methods::CpuShade r = m.cpu(bsdf, SurfaceFrame{}, wo, sgs, table_baker());
   const auto t1 = std::chrono::steady_clock::now();
-  const ClothBsdf bsdf(fabric, settings.tangent_samples);
-  const IwasakiTerms r = iwasaki_radiance(bsdf, tables, SurfaceFrame{}, wo, sgs);
-  const auto t2 = std::chrono::steady_clock::now();
   nlohmann::ordered_json out;
   out["method"] = a.method;
   out["radiance"] = {r.radiance.r, r.radiance.g, r.radiance.b};
-  out["tangent_samples"] = {settings.tangent_samples[0], settings.tangent_samples[1]};
-  out["bake_seconds"] = std::chrono::duration<double>(t1 - t0).count();
-  out["seconds"] = std::chrono::duration<double>(t2 - t1).count();
+  if (m.see_through) out["alpha"] = r.alpha;
+  out["tangent_samples"] = {samples[0], samples[1]};
+  out["seconds"] = std::chrono::duration<double>(t1 - t0).count();  // with the tables' bake on first use
   std::cout << out.dump() << "\n";
   return 0;
 }
 
-// mizutani's approximation at the swatch: the same weighting tables as iwasaki, the azimuthal
-// table T_m, then the paper's Eq. 10–16 without visibility.
-int run_mizutani(const EvalArgs& a, const Fabric& fabric, const dvec3& wo, const SgLighting& sgs) {
-  BakeSettings settings;
-  settings.tangent_samples = paper_tangent_samples(fabric);
-  const auto t0 = std::chrono::steady_clock::now();
-  const WeightingTables tables = bake_weighting_tables(fabric, settings);
-  const AzimuthalTable azimuthal = bake_azimuthal_table();
-  const auto t1 = std::chrono::steady_clock::now();
-  const ClothBsdf bsdf(fabric, settings.tangent_samples);
-  const MizutaniTerms r = mizutani_radiance(bsdf, tables, azimuthal, SurfaceFrame{}, wo, sgs);
-  const auto t2 = std::chrono::steady_clock::now();
-  nlohmann::ordered_json out;
-  out["method"] = a.method;
-  out["radiance"] = {r.radiance.r, r.radiance.g, r.radiance.b};
-  out["tangent_samples"] = {settings.tangent_samples[0], settings.tangent_samples[1]};
-  out["bake_seconds"] = std::chrono::duration<double>(t1 - t0).count();
-  out["seconds"] = std::chrono::duration<double>(t2 - t1).count();
-  std::cout << out.dump() << "\n";
-  return 0;
+// The methods eval takes: the reference and every registered method with a C++ evaluation.
+std::vector<std::string> eval_methods() {
+  std::vector<std::string> names{"reference"};
+  for (const auto& m : methods::registry())
+    if (m.cpu) names.push_back(m.name);
+  return names;
 }
 
 int run_eval(const EvalArgs& a) {
@@ -77,16 +60,19 @@ int run_eval(const EvalArgs& a) {
   if (a.sgs.empty()) throw UsageError("--sg: give at least one SG");
   SgLighting sgs;
   for (size_t i = 0; i < a.sgs.size(); ++i) sgs.push_back(parse_sg(a.sgs[i], "--sg #" + std::to_string(i + 1)));
-  if (a.method != "reference" && a.method != "iwasaki" && a.method != "mizutani")
-    throw UsageError("--method: '" + a.method + "' is not available for eval (reference, iwasaki, mizutani)");
+  const methods::RuntimeMethod* m = a.method == "reference" ? nullptr : methods::find_method(a.method);
+  if (a.method != "reference" && !(m && m->cpu)) {
+    std::string names;
+    for (const std::string& n : eval_methods()) names += (names.empty() ? "" : ", ") + n;
+    throw UsageError("--method: '" + a.method + "' is not available for eval (" + names + ")");
+  }
   if (a.tangent_samples < 1 || a.tangent_samples > 4096)
     throw UsageError("--tangent-samples: must be in [1, 4096], got " + std::to_string(a.tangent_samples));
   if (!(a.tolerance > 0.0 && a.tolerance < 0.5))
     throw UsageError("--tolerance: must be in (0, 0.5), got " + std::to_string(a.tolerance));
 
   const Fabric fabric = load_fabric_named(a.fabric, assets_dir() / "fabrics");
-  if (a.method == "iwasaki") return run_iwasaki(a, fabric, wo, sgs);
-  if (a.method == "mizutani") return run_mizutani(a, fabric, wo, sgs);
+  if (m) return run_method(a, *m, fabric, wo, sgs);
   const auto start = std::chrono::steady_clock::now();
   const ClothBsdf bsdf(fabric, a.tangent_samples);
   SgQuadratureOptions opt;
@@ -115,7 +101,9 @@ CommandAction add_eval_command(CLI::App& app) {
   sub->add_option("--fabric", a->fabric, "Fabric: a preset name (assets/fabrics/NAME.json) or a .json file")->capture_default_str();
   sub->add_option("--view", a->view, "Direction toward the viewer, x,y,z (normalised; z > 0)")->required();
   sub->add_option("--sg", a->sgs, "An SG light: axis_x,axis_y,axis_z,lambda,r,g,b (repeatable)")->required();
-  sub->add_option("--method", a->method, "Method: reference (converged quadrature of docs/design.md §2), iwasaki (weighting tables) or mizutani (weighting and azimuthal tables, no visibility); the last two bake their tables first")
+  sub->add_option("--method", a->method, "Method: reference (converged quadrature of docs/design.md §2) or a method's C++ evaluation, unoccluded (" +
+                                            [] { std::string n; for (const auto& s : eval_methods()) if (s != "reference") n += (n.empty() ? "" : ", ") + s; return n; }() +
+                                            "); table-backed methods bake small tables first")
       ->capture_default_str();
   sub->add_option("--tangent-samples", a->tangent_samples, "Tangent samples per thread N_j")->capture_default_str();
   sub->add_option("--tolerance", a->tolerance, "Convergence: relative change between grid doublings")

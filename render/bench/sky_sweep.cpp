@@ -14,21 +14,22 @@
 #include "lighting/env_spec.h"
 #include "lighting/fit_error.h"
 #include "lighting/sg_fit.h"
+#include "methods/registry.h"
 
 namespace weft::bench {
 
 namespace {
-// The sweep's methods, in the order of low_sun.csv's columns (iwasaki and iwasaki_vertex first, the
-// others after the fit's columns) and of low_sun.md's summary and table.
-constexpr const char* kSweepMethods[] = {"iwasaki",
-                                         "iwasaki_vertex",
-                                         "iwasaki_vertex_mask",
-                                         "iwasaki_mask",
-                                         "iwasaki_vertex_quadrature",
-                                         "iwasaki_quadrature",
-                                         "iwasaki_vertex_mask_quadrature",
-                                         "iwasaki_mask_quadrature"};
-constexpr size_t kSweepMethodCount = std::size(kSweepMethods);
+// The sweep's methods: every opaque rung drawn from the weighting tables, in the registry's order
+// (low_sun.csv's columns: the first two, then the fit's columns, then the others).
+const std::vector<std::string>& sweep_methods() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& m : methods::registry())
+      if (m.needs_weighting_tables() && !m.see_through) out.push_back(m.name);
+    return out;
+  }();
+  return names;
+}
 }  // namespace
 
 std::vector<std::string> sky_sweep_envs(bool smoke) {
@@ -48,7 +49,7 @@ void apply_sweep(BenchOptions& a) {
   const BenchOptions defaults;
   a.quick = false;
   if (a.envs == defaults.envs) a.envs = sky_sweep_envs(smoke);
-  if (a.methods.empty()) a.methods.assign(std::begin(kSweepMethods), std::end(kSweepMethods));
+  if (a.methods.empty()) a.methods = sweep_methods();
   a.no_stability = true;
   a.target_error = 0.0;
   a.speed_width = 64, a.speed_height = 48, a.speed_frames = 1;  // the sweep is about accuracy
@@ -115,34 +116,35 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
 
   struct Case {
     std::string scene, fabric, env;
-    std::array<double, kSweepMethodCount> rmse;  // by kSweepMethods; −1: not run
+    std::vector<double> rmse;  // by sweep_methods(); −1: not run
     int reference_samples = 0;
   };
+  const std::vector<std::string>& sweep = sweep_methods();
+  const size_t count = sweep.size();
   std::vector<Case> cases;
   for (const auto& r : res.rows) {
-    const auto m = std::find(std::begin(kSweepMethods), std::end(kSweepMethods), r.method);
-    if (m == std::end(kSweepMethods)) continue;
+    const auto m = std::find(sweep.begin(), sweep.end(), r.method);
+    if (m == sweep.end()) continue;
     auto it = std::find_if(cases.begin(), cases.end(),
                            [&](const Case& c) { return c.scene == r.scene && c.fabric == r.fabric && c.env == r.env; });
     if (it == cases.end()) {
-      it = cases.insert(cases.end(), Case{r.scene, r.fabric, r.env, {}});
-      it->rmse.fill(-1.0);
+      it = cases.insert(cases.end(), Case{r.scene, r.fabric, r.env, std::vector<double>(count, -1.0)});
     }
-    it->rmse[size_t(m - std::begin(kSweepMethods))] = r.rmse;
+    it->rmse[size_t(m - sweep.begin())] = r.rmse;
     it->reference_samples = r.reference_tangent_samples;
   }
 
   std::ostringstream csv;
-  csv << "scene,fabric,env," << kSweepMethods[0] << "_rmse," << kSweepMethods[1]
+  csv << "scene,fabric,env," << sweep[0] << "_rmse," << sweep[1]
       << "_rmse,fit_irradiance_error,probe_irradiance_error,probe_update_ms,reference_tangent_samples";
-  for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << kSweepMethods[i] << "_rmse";
+  for (size_t i = 2; i < count; ++i) csv << "," << sweep[i] << "_rmse";
   csv << "\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);
     csv << c.scene << "," << c.fabric << "," << quoted(c.env) << "," << fmt(c.rmse[0], 4) << "," << fmt(c.rmse[1], 4)
         << "," << fmt(f.irradiance_error, 4) << "," << fmt(f.probe_irradiance_error, 4) << ","
         << fmt(f.probe_update_ms, 4) << "," << c.reference_samples;
-    for (size_t i = 2; i < kSweepMethodCount; ++i) csv << "," << fmt(c.rmse[i], 4);
+    for (size_t i = 2; i < count; ++i) csv << "," << fmt(c.rmse[i], 4);
     csv << "\n";
   }
   write_file_atomically(out / "low_sun.csv", csv.view());
@@ -160,18 +162,18 @@ void write_sky_sweep(const std::filesystem::path& out, const BenchOptions& a, co
      << reference_samples_text(a) << "); the fit's irradiance error "
      << "(fit_error.h) with the bench's fit and with the probe's warm update (grid 64, 8 iterations).\n\n"
      << "Summary: ";
-  for (size_t i = 0; i < kSweepMethodCount; ++i) {
+  for (size_t i = 0; i < count; ++i) {
     std::vector<double> run;
     for (const auto& c : cases)
       if (c.rmse[i] >= 0) run.push_back(c.rmse[i]);
-    md << kSweepMethods[i] << " worst " << fmt(run.empty() ? -1 : *std::max_element(run.begin(), run.end()))
+    md << sweep[i] << " worst " << fmt(run.empty() ? -1 : *std::max_element(run.begin(), run.end()))
        << ", median " << fmt(median(run)) << "; ";
   }
   md << "fit irradiance error worst " << fmt(fit_worst) << " (probe update " << fmt(probe_worst) << ", at most "
      << fmt(probe_ms_worst) << " ms of CPU time per update).\n\n| scene | fabric | env | ";
-  for (const char* m : kSweepMethods) md << m << " | ";
+  for (const std::string& m : sweep) md << m << " | ";
   md << "fit irradiance error | probe update: error / CPU ms | reference N_j |\n|---|---|---|";
-  for (size_t i = 0; i < kSweepMethodCount; ++i) md << "---|";
+  for (size_t i = 0; i < count; ++i) md << "---|";
   md << "---|---|---|\n";
   for (const auto& c : cases) {
     const FitCondition& f = fits.at(c.env);

@@ -12,8 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/tables/table_baker.h"
 #include "core/cloth_bsdf.h"
+#include "methods/registry.h"
 #include "reference/sg_quadrature.h"
+#include "runtime/paper_tangent_samples.h"
 
 using namespace weft;
 constexpr double kPi = std::numbers::pi;
@@ -90,6 +93,31 @@ TEST(EvalCommand, PrintsTheContractJsonMatchingTheLibrary) {
   const SgLighting sgs = {{glm::normalize(dvec3(-0.3, 0.1, 0.9)), 20.0, dvec3(1.0)}};
   const dvec3 lib = integrate_sg_lighting(bsdf, SurfaceFrame{}, glm::normalize(dvec3(0.5, 0.2, 0.8)), sgs).radiance;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(j["radiance"][c].get<double>(), lib[c], 1e-12 + 1e-9 * lib[c]);
+}
+
+// Every registered method with a C++ evaluation is evaluable, through that evaluation: the
+// command's value is RuntimeMethod::cpu's with the paper's tangent samples and the bench's tables.
+TEST(EvalCommand, EveryMethodWithACppEvaluationGivesThatEvaluation) {
+  const Fabric fabric = preset("linen_plain");
+  const dvec3 wo = glm::normalize(dvec3(0.5, 0.2, 0.8));
+  const SgLighting sgs = {{glm::normalize(dvec3(-0.3, 0.1, 0.9)), 20.0, dvec3(1.0)}};
+  int evaluated = 0;
+  for (const auto& m : methods::registry()) {
+    const CommandResult r = run_weft("eval --fabric linen_plain --view 0.5,0.2,0.8 --sg -0.3,0.1,0.9,20,1,1,1 --method " + m.name);
+    if (!m.cpu) {
+      EXPECT_EQ(r.code, 2) << m.name << " has no C++ evaluation yet eval took it";
+      EXPECT_NE(r.err.find("not available for eval"), std::string::npos) << r.err;
+      continue;
+    }
+    ASSERT_EQ(r.code, 0) << m.name << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("method"), m.name);
+    const ClothBsdf bsdf(fabric, paper_tangent_samples(fabric));
+    const dvec3 lib = m.cpu(bsdf, SurfaceFrame{}, wo, sgs, table_baker()).radiance;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(j["radiance"][c].get<double>(), lib[c], 1e-12 + 1e-9 * lib[c]) << m.name;
+    ++evaluated;
+  }
+  EXPECT_GE(evaluated, 5);
 }
 
 TEST(EvalCommand, RejectsBadInputWithExitTwoNamingTheArgument) {
