@@ -22,5 +22,6 @@ CommandAction add_run_command(CLI::App& app);
 CommandAction add_status_command(CLI::App& app);
 CommandAction add_bench_command(CLI::App& app);
 CommandAction add_bundle_command(CLI::App& app);
+CommandAction add_capture_command(CLI::App& app);
 
 }  // namespace weft

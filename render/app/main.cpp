@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   cli.add(weft::add_run_command);
   cli.add(weft::add_status_command);
   cli.list("bench", offline("bench"));
+  cli.list("capture", offline("capture"));
   cli.add(weft::add_bundle_command);
   return cli.run(argc, argv);
 }

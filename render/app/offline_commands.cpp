@@ -15,12 +15,13 @@ namespace weft {
 
 namespace {
 
-constexpr std::array<OfflineCommand, 5> kOfflineCommands{{
+constexpr std::array<OfflineCommand, 6> kOfflineCommands{{
     {"eval", "One radiance value: a flat swatch (n=+z, warp=+x) under SGs, as JSON"},
     {"render", "Render one frame of a showroom scene to EXR (+ tone-mapped PNG)"},
     {"bake-tables", "Bake only the SG-convolved weighting tables T of one fabric and report time, size, ranks, error"},
     {"bake", "Bake a scene into a kiosk bundle (meshes, fabrics, camera, default SGs, weighting tables)"},
     {"bench", "Speed against accuracy for every GPU method: CSV, chart, report"},
+    {"capture", "Fit a fabric file to photos of a swatch on the printed capture card beside a mirror ball"},
 }};
 
 constexpr const char* kHelperName = "weft-offline";

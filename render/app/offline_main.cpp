@@ -10,5 +10,6 @@ int main(int argc, char** argv) {
   cli.add(weft::add_bake_tables_command);
   cli.add(weft::add_bake_command);
   cli.add(weft::add_bench_command);
+  cli.add(weft::add_capture_command);
   return cli.run(argc, argv);
 }

@@ -1,0 +1,136 @@
+// `weft capture`: a fabric file from photos of a swatch on the printed capture card beside a
+// mirror ball (docs/capture.md). Three uses:
+//   weft capture --card OUT.png [--dpi N]                 the card, for printing
+//   weft capture --simulate FABRIC --map MAP --out DIR    photos of a known fabric, for testing
+//   weft capture DIR --out fitted.json                    the fit
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "app/asset_paths.h"
+#include "app/cli_parse.h"
+#include "app/commands.h"
+#include "app/progress_bar.h"
+#include "capture/capture_card.h"
+#include "capture/capture_fit.h"
+#include "capture/capture_rejection.h"
+#include "capture/capture_report.h"
+#include "capture/capture_simulation.h"
+#include "journal/journal_log.h"
+#include "lighting/env_map.h"
+
+namespace weft {
+
+namespace {
+
+struct CaptureArgs {
+  std::string photos_dir;
+  std::string card_out;
+  int dpi = 300;
+  std::string simulate;
+  std::string map;
+  std::string out;
+  int photos = 4;
+  unsigned seed = 1;
+  int width = 1024, height = 768;
+  std::string truth_out;
+  std::string report;
+};
+
+int run_card(const CaptureArgs& a) {
+  if (a.dpi < 50 || a.dpi > 1200) throw UsageError("--dpi: must be in [50, 1200], got " + std::to_string(a.dpi));
+  write_card_png(a.card_out, a.dpi);
+  std::cout << "wrote " << a.card_out << " (print at " << a.dpi << " dpi, 100 % scale)\n";
+  return 0;
+}
+
+int run_simulate(const CaptureArgs& a) {
+  if (a.map.empty()) throw UsageError("--simulate needs --map MAP (a name in assets/envmaps or an .exr)");
+  if (a.out.empty()) throw UsageError("--simulate needs --out DIR");
+  if (a.photos < 1 || a.photos > 64) throw UsageError("--photos: must be in [1, 64], got " + std::to_string(a.photos));
+  if (a.width < 320 || a.height < 240 || a.width > 8192 || a.height > 8192)
+    throw UsageError("--width/--height: from 320×240 to 8192×8192");
+  const Fabric fabric = load_fabric_named(a.simulate, assets_dir() / "fabrics");
+  EnvMap map;
+  try {
+    map = load_env_map(env_map_file(a.map, assets_dir() / "envmaps"), NonFinitePolicy::clamp);
+  } catch (const EnvMapError& e) {
+    throw UsageError(e.what());
+  }
+  CaptureSimulationOptions o;
+  o.photos = a.photos;
+  o.seed = a.seed;
+  o.width = a.width;
+  o.height = a.height;
+  o.progress = open_progress_bar("simulate");
+  simulate_capture(fabric, map, o, a.out, a.truth_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.truth_out));
+  std::cout << "wrote " << a.photos << " photos and capture.json to " << a.out << "\n";
+  return 0;
+}
+
+int run_fit(const CaptureArgs& a) {
+  if (a.out.empty()) throw UsageError("a fit needs --out FITTED.json");
+  const std::filesystem::path out(a.out);
+  const std::filesystem::path report = a.report.empty() ? out.parent_path() / (out.stem().string() + "_side_by_side.png")
+                                                        : std::filesystem::path(a.report);
+  CaptureFitOptions o;
+  o.open_progress = [](const std::string& stage) { return open_progress_bar(stage); };
+  CaptureFitResult r;
+  try {
+    r = fit_capture(a.photos_dir, assets_dir() / "fabrics", o);
+  } catch (const CaptureRejection& e) {
+    log_line("weft capture", LogPriority::error, std::string("rejected: ") + e.what());
+    return 2;
+  }
+  write_fitted_fabric(r, assets_dir() / "fabrics", out);
+  write_side_by_side(r, report);
+  std::cout << "weave family " << r.fit.preset << ", RMS relative residual " << r.fit.rms_relative << " over "
+            << r.observations.size() << " cells of " << r.photos.size() << " photos, " << r.seconds << " s\n";
+  for (int j = 0; j < 2; ++j) {
+    const ThreadParams& t = r.fit.fabric.threads[j];
+    const ThreadUncertainty& s = r.fit.sigma[j];
+    std::printf("thread %d: A (%.4f %.4f %.4f) ±(%.4f %.4f %.4f)  kd %.3f ±%.3f  γs %.2f° ±%.2f  γv %.2f° ±%.2f\n", j + 1,
+                t.albedo.r, t.albedo.g, t.albedo.b, s.albedo.r, s.albedo.g, s.albedo.b, t.kd, s.kd, glm::degrees(t.gamma_s),
+                glm::degrees(s.gamma_s), glm::degrees(t.gamma_v), glm::degrees(s.gamma_v));
+  }
+  std::cout << "wrote " << out.string() << " and " << report.string() << "\n";
+  return 0;
+}
+
+int run_capture(const CaptureArgs& a) {
+  const int modes = !a.card_out.empty() + !a.simulate.empty() + !a.photos_dir.empty();
+  if (modes != 1) throw UsageError("give exactly one of --card OUT.png, --simulate FABRIC or a photo folder DIR");
+  if (!a.card_out.empty()) return run_card(a);
+  if (!a.simulate.empty()) return run_simulate(a);
+  return run_fit(a);
+}
+
+}  // namespace
+
+CommandAction add_capture_command(CLI::App& app) {
+  auto a = std::make_shared<CaptureArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "capture", "Fit a fabric file to photos of a swatch on the printed capture card beside a mirror ball");
+  sub->footer(
+      "Examples:\n"
+      "  weft capture --card card.png --dpi 300\n"
+      "  weft capture --simulate linen_plain --map interior --out shots/ --photos 4\n"
+      "  weft capture shots/ --out fitted.json\n"
+      "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or unusable photos (no card, saturated or\n"
+      "blurred, too few swatch turns).");
+  sub->add_option("dir", a->photos_dir, "Folder of photos (JPEG or PNG) and capture.json to fit");
+  sub->add_option("--card", a->card_out, "Write the capture card to this PNG, for printing");
+  sub->add_option("--dpi", a->dpi, "The card's print resolution")->capture_default_str();
+  sub->add_option("--simulate", a->simulate, "Photograph this fabric (a preset name or a .json file) on a simulated card");
+  sub->add_option("--map", a->map, "--simulate: the environment map that lights it (a name in assets/envmaps or an .exr)");
+  sub->add_option("--out", a->out, "--simulate: the folder for the photos; a fit: the fabric file to write");
+  sub->add_option("--photos", a->photos, "--simulate: how many photos (the swatch turned by 180°/N between them)")->capture_default_str();
+  sub->add_option("--seed", a->seed, "--simulate: the random seed (poses, noise)")->capture_default_str();
+  sub->add_option("--width", a->width, "--simulate: photo width")->capture_default_str();
+  sub->add_option("--height", a->height, "--simulate: photo height")->capture_default_str();
+  sub->add_option("--report", a->report, "A fit: the side-by-side PNG (photo, fitted render, difference ×4); default OUT_side_by_side.png");
+  sub->add_option("--truth-out", a->truth_out, "--simulate: also write what was simulated (fabric, turns, poses, response) as JSON");
+  return [a] { return run_capture(*a); };
+}
+
+}  // namespace weft

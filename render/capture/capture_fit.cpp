@@ -1,0 +1,205 @@
+#include "capture/capture_fit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "capture/capture_card.h"
+#include "capture/capture_rejection.h"
+#include "capture/card_detection.h"
+#include "capture/photo_files.h"
+
+namespace weft {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kCellMm = 6.0;
+constexpr double kMarkerClearMm = 11.0;  // the marker's 10-cell square, half diagonal and a margin
+
+// Blank paper on the card (mm), away from every print: the response's white samples, spread
+// over the image so vignetting shows.
+constexpr std::array<CardRect, 11> kPaper{{{45, 4, 85, 16}, {85, 4, 125, 16}, {125, 4, 165, 16}, {165, 4, 205, 16},
+                                            {5, 45, 44, 85}, {5, 85, 44, 125}, {212, 45, 246, 85}, {212, 95, 246, 125},
+                                            {52, 115, 102, 130}, {102, 115, 152, 130}, {152, 115, 205, 130}}};
+
+std::array<std::uint8_t, 3> code_at(const Photo& p, int x, int y) { return {p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2)}; }
+
+double radius2(const Photo& p, double x, double y) {
+  return ((x - p.width / 2.0) * (x - p.width / 2.0) + (y - p.height / 2.0) * (y - p.height / 2.0)) /
+         ((p.width * p.width + p.height * p.height) / 4.0);
+}
+
+// Every pixel whose centre maps into the card region `inside` (world point → bool), within the
+// image box of `corners` (world).
+template <class Inside, class Visit>
+void for_pixels(const Photo& p, const CardView& view, const std::vector<glm::dvec3>& corners, Inside inside, Visit visit) {
+  glm::dvec2 lo(1e30), hi(-1e30);
+  for (const auto& c : corners) {
+    const glm::dvec2 q = view.to_image(c);
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  const int x0 = std::max(0, static_cast<int>(lo.x)), x1 = std::min(p.width, static_cast<int>(hi.x) + 1);
+  const int y0 = std::max(0, static_cast<int>(lo.y)), y1 = std::min(p.height, static_cast<int>(hi.y) + 1);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const glm::dvec3 w = view.to_world({x + 0.5, y + 0.5});
+      if (inside(w)) visit(x, y, w);
+    }
+}
+
+ResponseSample sample_rect(const Photo& p, const CardView& view, const CardRect& r, double reflectance, double margin) {
+  const CardRect in{r.x0 + margin, r.y0 + margin, r.x1 - margin, r.y1 - margin};
+  ResponseSample s;
+  s.reflectance = reflectance;
+  const std::vector<glm::dvec3> corners{card_to_world({in.x0, in.y0}), card_to_world({in.x1, in.y0}),
+                                        card_to_world({in.x1, in.y1}), card_to_world({in.x0, in.y1})};
+  for_pixels(p, view, corners, [&](const glm::dvec3& w) { return in.contains(world_to_card(w)); },
+             [&](int x, int y, const glm::dvec3&) { s.add(code_at(p, x, y)); });
+  const glm::dvec2 c = view.to_image(card_to_world(in.centre()));
+  s.r2 = radius2(p, c.x, c.y);
+  return s;
+}
+
+int distinct_turns(std::vector<double> turns) {
+  // Turns closer than 20° count as one.
+  for (double& t : turns) t = std::fmod(std::fmod(t, 2 * kPi) + 2 * kPi, 2 * kPi);
+  std::sort(turns.begin(), turns.end());
+  int n = 0;
+  for (size_t i = 0; i < turns.size(); ++i) {
+    bool same = false;
+    for (size_t k = 0; k < i; ++k) {
+      const double d = std::abs(std::remainder(turns[i] - turns[k], 2 * kPi));
+      same = same || d < glm::radians(20.0);
+    }
+    n += !same;
+  }
+  return n;
+}
+
+}  // namespace
+
+CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesystem::path& presets_dir,
+                             const CaptureFitOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const CaptureCard& card = capture_card();
+  if (!std::filesystem::is_directory(dir)) throw CaptureRejection(dir.string() + ": not a folder of photos");
+  const auto files = list_photos(dir);
+  if (files.size() < 3)
+    throw CaptureRejection(dir.string() + ": " + std::to_string(files.size()) + " photos; a capture needs 3 to 8, the swatch turned between them");
+  const auto info = read_capture_info(dir / "capture.json");
+  const std::optional<double> focal = info ? info->focal_px : std::nullopt;
+  auto progress = options.open_progress ? options.open_progress("photos") : std::function<void(double)>();
+
+  CaptureFitResult result;
+  std::vector<BallView> balls;
+  const glm::dvec3 window = card_to_world(card.swatch_window.centre());
+  const double radius = card.swatch_radius / 1000.0;
+  for (size_t i = 0; i < files.size(); ++i) {
+    const std::string name = files[i].filename().string();
+    Photo photo;
+    try {
+      photo = read_photo(files[i]);
+    } catch (const PhotoError& e) {
+      throw CaptureRejection(e.what());
+    }
+    const CardView view = locate_card(photo, focal, name);
+    if (view.edge_width > options.max_edge_width_px)
+      throw CaptureRejection(name + ": blurred (the tags' edges are " + std::to_string(view.edge_width) +
+                             " px wide; hold the camera still, focus on the card)");
+    if (!view.marker_turn)
+      throw CaptureRejection(name + ": the swatch marker (tag 4, cut from the card's strip) is not on the swatch");
+    CapturedPhoto shot;
+    shot.file = name;
+    shot.turn = *view.marker_turn;
+    shot.corner_tags = view.corner_tags;
+    shot.reprojection_px = view.reprojection_rms;
+    shot.edge_width_px = view.edge_width;
+    shot.focal_estimated = view.focal_estimated;
+    shot.camera_centre = view.camera.C;
+
+    std::vector<ResponseSample> samples;
+    for (const GreyPatch& g : card.patches) samples.push_back(sample_rect(photo, view, g.rect, g.reflectance, 2.5));
+    for (const CardRect& r : kPaper) samples.push_back(sample_rect(photo, view, r, card.paper_reflectance, 1.0));
+    try {
+      shot.response = fit_response(samples);
+    } catch (const std::runtime_error& e) {
+      throw CaptureRejection(name + ": " + e.what() + " (over- or under-exposed?)");
+    }
+    const ResponseModel& response = shot.response.model;
+
+    // The swatch's cells: mean relative value and where they were seen from.
+    const int cells_per_side = static_cast<int>(std::round(2 * card.swatch_radius / kCellMm));
+    std::vector<glm::dvec3> sum(cells_per_side * cells_per_side, glm::dvec3(0)), where(sum.size(), glm::dvec3(0));
+    std::vector<int> count(sum.size(), 0);
+    long pixels = 0, clipped = 0;
+    auto near_marker = [&](const glm::dvec3& w) { return glm::length(w - view.marker_centre) * 1000.0 < kMarkerClearMm; };
+    const std::vector<glm::dvec3> box{window + glm::dvec3(-radius, -radius, 0), window + glm::dvec3(radius, -radius, 0),
+                                      window + glm::dvec3(radius, radius, 0), window + glm::dvec3(-radius, radius, 0)};
+    for_pixels(photo, view, box, [&](const glm::dvec3& w) { return glm::length(w - window) < radius && !near_marker(w); },
+               [&](int x, int y, const glm::dvec3& w) {
+                 const auto code = code_at(photo, x, y);
+                 ++pixels;
+                 clipped += std::max({code[0], code[1], code[2]}) >= 250;
+                 const int cx = std::clamp(static_cast<int>((w.x - window.x + radius) * 1000.0 / kCellMm), 0, cells_per_side - 1);
+                 const int cy = std::clamp(static_cast<int>((w.y - window.y + radius) * 1000.0 / kCellMm), 0, cells_per_side - 1);
+                 const size_t c = static_cast<size_t>(cy) * cells_per_side + cx;
+                 sum[c] += response.relative(code, radius2(photo, x + 0.5, y + 0.5));
+                 where[c] += w;
+                 ++count[c];
+               });
+    if (pixels == 0) throw CaptureRejection(name + ": the swatch window is outside the photo");
+    if (static_cast<double>(clipped) / pixels > options.max_saturated)
+      throw CaptureRejection(name + ": saturated (" + std::to_string(100.0 * clipped / pixels) +
+                             " % of the swatch's pixels clipped; lower the exposure)");
+    const int full = *std::max_element(count.begin(), count.end());
+    for (size_t c = 0; c < sum.size(); ++c)
+      if (count[c] >= 0.6 * full) {
+        const glm::dvec3 p = where[c] / static_cast<double>(count[c]);
+        result.observations.push_back({sum[c] / static_cast<double>(count[c]), glm::normalize(view.camera.C - p), shot.turn,
+                                       static_cast<int>(i)});
+        ++shot.cells;
+      }
+
+    // The panel for the report.
+    shot.panel.resize(kPanel * kPanel);
+    shot.panel_marker.resize(kPanel * kPanel);
+    for (int py = 0; py < kPanel; ++py)
+      for (int px = 0; px < kPanel; ++px) {
+        const glm::dvec3 w = window + glm::dvec3((px + 0.5) / kPanel * 2 * radius - radius, radius - (py + 0.5) / kPanel * 2 * radius, 0);
+        const glm::dvec2 q = view.to_image(w);
+        const int x = std::clamp(static_cast<int>(q.x), 0, photo.width - 1), y = std::clamp(static_cast<int>(q.y), 0, photo.height - 1);
+        shot.panel[py * kPanel + px] = response.relative(code_at(photo, x, y), radius2(photo, x + 0.5, y + 0.5));
+        shot.panel_marker[py * kPanel + px] = near_marker(w);
+      }
+
+    BallView ball = read_ball(photo, view, response);
+    shot.ball_clipped = ball.clipped_fraction;
+    balls.push_back(std::move(ball));
+    result.photos.push_back(std::move(shot));
+    if (progress) progress(static_cast<double>(i + 1) / files.size());
+  }
+  std::vector<double> turns;
+  for (const auto& p : result.photos) turns.push_back(p.turn);
+  const int distinct = distinct_turns(turns);
+  if (distinct < 3)
+    throw CaptureRejection("too few swatch orientations: " + std::to_string(distinct) +
+                           " distinct turns (at least 3, 20° apart; turn the swatch 30–60° between photos)");
+
+  result.lighting = capture_lighting(balls);
+  std::vector<Fabric> presets;
+  for (const std::string& name : list_fabric_presets(presets_dir)) {
+    Fabric f = load_fabric_preset(name, presets_dir);
+    if (f.optical_thickness > 0) continue;  // a sheer's weave repeats an opaque preset's; the card cannot see through it
+    presets.push_back(std::move(f));
+  }
+  FabricFitOptions fit_options;
+  if (options.open_progress) fit_options.progress = options.open_progress("fit");
+  result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace weft

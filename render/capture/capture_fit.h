@@ -1,0 +1,55 @@
+#pragma once
+// `weft capture DIR`: the whole fit of a capture folder. Per photo: the card (card_detection.h),
+// its response from the grey patches and the paper (response_calibration.h), the swatch's cells
+// and the mirror ball read through them; then the lighting from every ball (capture_lighting.h)
+// and the fabric (fabric_fit.h). Unusable input is a CaptureRejection: the card not found, the
+// swatch marker missing, a blurred or saturated photo, fewer than three photos or swatch turns.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "capture/capture_lighting.h"
+#include "capture/fabric_fit.h"
+#include "capture/response_calibration.h"
+
+namespace weft {
+
+struct CapturedPhoto {
+  std::string file;
+  double turn = 0;            // the swatch's warp angle, radians
+  int corner_tags = 0;
+  double reprojection_px = 0;
+  double edge_width_px = 0;
+  bool focal_estimated = false;
+  ResponseFit response;
+  double ball_clipped = 0;
+  int cells = 0;
+  glm::dvec3 camera_centre{0.0};
+  // The rectified swatch, kPanel × kPanel over ±30 mm around the window's centre (world axes,
+  // +Y up): the photo's relative values, and whether the marker covers the texel.
+  std::vector<glm::dvec3> panel;
+  std::vector<bool> panel_marker;
+};
+
+inline constexpr int kPanel = 64;
+
+struct CaptureFitOptions {
+  double max_edge_width_px = 4.0;   // blurrier photos are rejected
+  double max_saturated = 0.02;      // share of the swatch's pixels with a clipped channel
+  std::function<std::function<void(double)>(const std::string&)> open_progress;  // a bar per stage
+};
+
+struct CaptureFitResult {
+  std::vector<CapturedPhoto> photos;
+  CaptureLighting lighting;
+  std::vector<SwatchObservation> observations;
+  FabricFit fit;
+  double seconds = 0;
+};
+
+// Fits the capture in `dir` with the presets of `presets_dir` as weave families.
+CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesystem::path& presets_dir,
+                             const CaptureFitOptions& options = {});
+
+}  // namespace weft

@@ -1,0 +1,104 @@
+#include "capture/capture_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "capture/capture_card.h"
+#include "image/image.h"
+
+namespace weft {
+
+namespace {
+
+double round_to(double x, double step) { return std::round(x / step) * step; }
+
+unsigned char display(double v) {
+  const double lin = std::clamp(v, 0.0, 1.0);
+  const double enc = lin <= 0.0031308 ? 12.92 * lin : 1.055 * std::pow(lin, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned char>(std::lround(255.0 * enc));
+}
+
+}  // namespace
+
+void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::path& presets_dir,
+                         const std::filesystem::path& file) {
+  const FabricFit& fit = result.fit;
+  std::ifstream in(fabric_file(fit.preset, presets_dir));
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in);
+  doc["name"] = file.stem().string();
+  doc["description"] = "Fitted by weft capture to " + std::to_string(result.photos.size()) + " photos (weave of " + fit.preset + ")";
+  doc.erase("display_name");
+  doc.erase("composition");
+  nlohmann::ordered_json sigma = nlohmann::ordered_json::array();
+  for (int j = 0; j < 2; ++j) {
+    const ThreadParams& t = fit.fabric.threads[j];
+    // The file's albedo is a colour with its brightest channel 1 and a scale (the presets' form).
+    const double scale = std::max({t.albedo.r, t.albedo.g, t.albedo.b, 1e-6});
+    auto& thread = doc["threads"][j];
+    thread["albedo"] = {round_to(t.albedo.r / scale, 1e-4), round_to(t.albedo.g / scale, 1e-4), round_to(t.albedo.b / scale, 1e-4)};
+    thread["albedo_scale"] = round_to(scale, 1e-5);
+    thread["kd"] = round_to(t.kd, 1e-4);
+    thread["gamma_s_deg"] = round_to(glm::degrees(t.gamma_s), 1e-3);
+    thread["gamma_v_deg"] = round_to(glm::degrees(t.gamma_v), 1e-3);
+    const ThreadUncertainty& s = fit.sigma[j];
+    sigma.push_back({{"albedo", {s.albedo.r, s.albedo.g, s.albedo.b}}, {"kd", s.kd},
+                     {"gamma_s_deg", glm::degrees(s.gamma_s)}, {"gamma_v_deg", glm::degrees(s.gamma_v)}});
+  }
+  nlohmann::ordered_json capture;
+  capture["weave_family"] = fit.preset;
+  capture["rms_relative_residual"] = fit.rms_relative;
+  capture["robust_cost"] = fit.cost;
+  capture["observations"] = result.observations.size();
+  capture["sigma"] = sigma;
+  for (const auto& [name, cost] : fit.family_costs) capture["family_costs"][name] = cost;
+  for (const CapturedPhoto& p : result.photos)
+    capture["photos"].push_back({{"file", p.file}, {"turn_deg", glm::degrees(p.turn)}, {"cells", p.cells},
+                                 {"corner_tags", p.corner_tags}, {"reprojection_px", p.reprojection_px},
+                                 {"edge_width_px", p.edge_width_px}, {"response_beta", p.response.model.beta},
+                                 {"vignetting", p.response.model.vignetting}, {"ball_clipped", p.ball_clipped}});
+  doc["capture"] = capture;
+  std::ofstream(file) << doc.dump(2) << "\n";
+}
+
+void write_side_by_side(const CaptureFitResult& result, const std::filesystem::path& file) {
+  const CaptureCard& card = capture_card();
+  constexpr int zoom = 3, grid = 16;
+  const int cell = kPanel * zoom, w = 3 * cell, h = static_cast<int>(result.photos.size()) * cell;
+  std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3, 128);
+  const glm::dvec3 window = card_to_world(card.swatch_window.centre());
+  const double radius = card.swatch_radius / 1000.0;
+  for (size_t i = 0; i < result.photos.size(); ++i) {
+    const CapturedPhoto& p = result.photos[i];
+    // The fitted model on a coarse grid of views across the swatch, interpolated (it varies slowly).
+    std::vector<glm::dvec3> model(grid * grid);
+#pragma omp parallel for schedule(dynamic)
+    for (int g = 0; g < grid * grid; ++g) {
+      const glm::dvec3 pos = window + glm::dvec3((g % grid) / (grid - 1.0) * 2 * radius - radius, radius - (g / grid) / (grid - 1.0) * 2 * radius, 0);
+      model[g] = swatch_radiance(result.fit.fabric, p.turn, glm::normalize(p.camera_centre - pos), result.lighting.lights);
+    }
+    for (int py = 0; py < kPanel; ++py)
+      for (int px = 0; px < kPanel; ++px) {
+        const double gx = (px + 0.5) / kPanel * (grid - 1), gy = (py + 0.5) / kPanel * (grid - 1);
+        const int x0 = std::min(static_cast<int>(gx), grid - 2), y0 = std::min(static_cast<int>(gy), grid - 2);
+        const double ax = gx - x0, ay = gy - y0;
+        const glm::dvec3 fitted = (1 - ay) * ((1 - ax) * model[y0 * grid + x0] + ax * model[y0 * grid + x0 + 1]) +
+                                  ay * ((1 - ax) * model[(y0 + 1) * grid + x0] + ax * model[(y0 + 1) * grid + x0 + 1]);
+        const bool masked = p.panel_marker[py * kPanel + px];
+        const glm::dvec3 photo = p.panel[py * kPanel + px];
+        const glm::dvec3 shown[3] = {photo, masked ? glm::dvec3(0.2) : fitted,
+                                     masked ? glm::dvec3(0.2) : 4.0 * glm::abs(photo - fitted)};
+        for (int k = 0; k < 3; ++k)
+          for (int zy = 0; zy < zoom; ++zy)
+            for (int zx = 0; zx < zoom; ++zx) {
+              const size_t q = (static_cast<size_t>(i * cell + py * zoom + zy) * w + k * cell + px * zoom + zx) * 3;
+              for (int c = 0; c < 3; ++c) rgb[q + c] = display(shown[k][c]);
+            }
+      }
+  }
+  write_png_rgb8(w, h, rgb, file);
+}
+
+}  // namespace weft

@@ -1,0 +1,17 @@
+#pragma once
+// What `weft capture DIR` writes: the fabric file (the family preset's file with the fitted
+// threads, in the format of assets/fabrics/README.md, so `weft bake --fabric` takes it) with the
+// fit's residual and each parameter's 1σ in an extra `capture` field; and a side-by-side PNG,
+// one row per photo: the rectified swatch, the fitted model under the captured lighting, and
+// their difference ×4.
+#include <filesystem>
+
+#include "capture/capture_fit.h"
+
+namespace weft {
+
+void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::path& presets_dir,
+                         const std::filesystem::path& file);
+void write_side_by_side(const CaptureFitResult& result, const std::filesystem::path& file);
+
+}  // namespace weft

@@ -1,0 +1,38 @@
+#pragma once
+// Photos of a known fabric on the capture card, for testing `weft capture` end to end: N photos
+// from a hand-held camera at slightly different poses, the swatch turned by 180°·i/N in photo i,
+// everything lit by one environment map (docs/design.md §3, +Z up from the card):
+//  - the swatch: the canonical model (docs/design.md §2, fabric level, unoccluded) under the map's
+//    directional samples (reference/environment_samples.h), on a grid of view points across it;
+//  - the card, the marker and the table: Lambertian under the map's irradiance at +Z;
+//  - the mirror ball: drawn by the mock probe camera (probe/mock_probe_source.h) in the map turned
+//    into that camera's frame;
+//  - then the camera: vignetting, sensor noise, a response curve about sRGB, white balance, JPEG.
+// It writes only what a real capture has: the photos and capture.json. The truth goes to its own
+// file when asked.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "core/fabric.h"
+#include "lighting/env_map.h"
+
+namespace weft {
+
+struct CaptureSimulationOptions {
+  int photos = 4;
+  std::uint64_t seed = 1;
+  int width = 1024, height = 768;
+  int tangent_samples = 32;    // N_j per thread (docs/design.md §2: ≥ 32 for ground truth)
+  int light_cells = 64;        // the map's directional samples: light_cells × light_cells/2
+  bool record_focal = true;    // capture.json carries the focal length (a camera's EXIF)
+  std::function<void(double)> progress;
+};
+
+// Writes DIR/photo_<i>.jpg and DIR/capture.json (DIR is created); the truth (fabric, turns,
+// cameras, response) as JSON to `truth_out` when given.
+void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimulationOptions& options,
+                      const std::filesystem::path& dir, const std::optional<std::filesystem::path>& truth_out = {});
+
+}  // namespace weft

@@ -1,0 +1,291 @@
+#include "capture/fabric_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+#include "core/cloth_bsdf.h"
+#include "core/fresnel.h"
+
+namespace weft {
+
+namespace {
+
+// One tangent sample of one thread under one light for one observation: θ_h and the factors that
+// multiply N(θ_h; γ_s) (surface) and the volume lobe (per unit albedo), W·cos θ_i / (cos²θ_d·N_j)
+// included.
+struct Term {
+  float theta_h, surface, volume;
+};
+
+// What a preset's weave fixes of the model at every observation.
+struct Geometry {
+  int observations = 0, lights = 0;
+  std::array<int, 2> samples{};
+  std::array<std::vector<Term>, 2> terms;      // [j][(o·L + l)·N_j + k]
+  std::array<std::vector<glm::dvec3>, 2> flat;  // [j][o]: Σ_l P_l Σ_k volume (what k_d weighs)
+};
+
+Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& obs, const std::vector<FitLight>& lights,
+                    int tangent_samples) {
+  Geometry g;
+  g.observations = static_cast<int>(obs.size());
+  g.lights = static_cast<int>(lights.size());
+  std::array<std::vector<double>, 2> tilts;
+  for (int j = 0; j < 2; ++j) {
+    tilts[j] = fabric.threads[j].curve.sample_tilts(tangent_samples);
+    g.samples[j] = static_cast<int>(tilts[j].size());
+    g.terms[j].assign(static_cast<size_t>(g.observations) * g.lights * g.samples[j], Term{0, 0, 0});
+    g.flat[j].assign(g.observations, glm::dvec3(0));
+  }
+#pragma omp parallel for schedule(dynamic)
+  for (int o = 0; o < g.observations; ++o) {
+    const double t = obs[o].turn;
+    const SurfaceFrame frame{{0, 0, 1}, {std::cos(t), std::sin(t), 0}, {-std::sin(t), std::cos(t), 0}};
+    const glm::dvec3 wo = obs[o].wo;
+    std::array<std::vector<ThreadFrame>, 2> frames;
+    for (int j = 0; j < 2; ++j)
+      for (double a : tilts[j]) frames[j].push_back(thread_frame(frame, j, a));
+    std::array<std::vector<FiberAngles>, 2> in, out;
+    std::array<std::vector<double>, 2> proj;
+    for (int l = 0; l < g.lights; ++l) {
+      const glm::dvec3 wi = lights[l].direction;
+      if (wi.z <= 0 || wo.z <= 0) continue;
+      double q = (1.0 - fabric.threads[0].coverage - fabric.threads[1].coverage) * wo.z;
+      for (int j = 0; j < 2; ++j) {
+        in[j].resize(g.samples[j]);
+        out[j].resize(g.samples[j]);
+        proj[j].resize(g.samples[j]);
+        double sum = 0;
+        for (int k = 0; k < g.samples[j]; ++k) {
+          in[j][k] = fiber_angles(frames[j][k], wi);
+          out[j][k] = fiber_angles(frames[j][k], wo);
+          proj[j][k] = projection(in[j][k], out[j][k]);
+          sum += proj[j][k];
+        }
+        q += fabric.threads[j].coverage * sum / g.samples[j];
+      }
+      if (q <= kQFloor) continue;
+      for (int j = 0; j < 2; ++j) {
+        const ThreadParams& p = fabric.threads[j];
+        double volume_sum = 0;
+        for (int k = 0; k < g.samples[j]; ++k) {
+          if (proj[j][k] <= 0) continue;
+          const double w = p.coverage * masking(in[j][k], out[j][k]) * proj[j][k] / q;
+          if (w <= 0) continue;
+          const double theta_d = (in[j][k].theta - out[j][k].theta) / 2, theta_h = (in[j][k].theta + out[j][k].theta) / 2;
+          const double cos_half_phi = std::cos(wrap_angle(in[j][k].phi - out[j][k].phi) / 2);
+          const double factor = w * std::cos(in[j][k].theta) /
+                                (std::max(std::cos(theta_d) * std::cos(theta_d), kModelDenominatorFloor) * g.samples[j]);
+          const double fr = fresnel_dielectric(p.eta, std::cos(theta_d) * cos_half_phi);
+          const double denom = std::max(std::cos(in[j][k].theta) + std::cos(out[j][k].theta), kModelDenominatorFloor);
+          Term& term = g.terms[j][(static_cast<size_t>(o) * g.lights + l) * g.samples[j] + k];
+          term.theta_h = static_cast<float>(theta_h);
+          term.surface = static_cast<float>(fr * cos_half_phi * factor);
+          term.volume = static_cast<float>((1 - fr) * (1 - fr) / denom * factor);
+          volume_sum += term.volume;
+        }
+        g.flat[j][o] += lights[l].power * volume_sum;
+      }
+    }
+  }
+  return g;
+}
+
+// Σ_l P_l Σ_k (surface or volume factor)·N(θ_h; γ) for thread j at every observation.
+std::vector<glm::dvec3> lobe_sums(const Geometry& g, const std::vector<FitLight>& lights, int j, bool volume, double gamma) {
+  std::vector<glm::dvec3> out(g.observations, glm::dvec3(0));
+  const double inv = 1.0 / (gamma * std::sqrt(2.0 * 3.14159265358979323846)), c = -0.5 / (gamma * gamma);
+  const int n = g.samples[j];
+#pragma omp parallel for schedule(static)
+  for (int o = 0; o < g.observations; ++o) {
+    glm::dvec3 sum(0);
+    for (int l = 0; l < g.lights; ++l) {
+      const Term* t = &g.terms[j][(static_cast<size_t>(o) * g.lights + l) * n];
+      double s = 0;
+      for (int k = 0; k < n; ++k) {
+        const double f = volume ? t[k].volume : t[k].surface;
+        if (f != 0) s += f * std::exp(c * t[k].theta_h * t[k].theta_h);
+      }
+      sum += s * lights[l].power;
+    }
+    out[o] = sum * inv;
+  }
+  return out;
+}
+
+struct Bounds {
+  double lo, hi;
+};
+// Per thread: A_r, A_g, A_b, k_d, γ_s, γ_v. The presets span A ≤ 0.6, k_d 0.1–0.7, γ_s 2.5–30°,
+// γ_v 5–60°; the bounds leave room on every side.
+constexpr std::array<Bounds, 6> kBounds{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.01, 0.95},
+                                          {0.0175, 0.785}, {0.035, 1.571}}};
+constexpr int kParams = 12;
+
+double logistic(double z) { return 1.0 / (1.0 + std::exp(-z)); }
+double to_value(int i, double z) { const Bounds& b = kBounds[i % 6]; return b.lo + (b.hi - b.lo) * logistic(z); }
+double to_z(int i, double v) {
+  const Bounds& b = kBounds[i % 6];
+  const double f = std::clamp((v - b.lo) / (b.hi - b.lo), 0.02, 0.98);
+  return std::log(f / (1 - f));
+}
+
+constexpr double kHuber = 2.0;
+constexpr double kPriorWeight = 0.5;
+
+struct Residuals {
+  using Scalar = double;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+  using InputType = Eigen::VectorXd;
+  using ValueType = Eigen::VectorXd;
+  using JacobianType = Eigen::MatrixXd;
+
+  const Geometry* g;
+  const std::vector<FitLight>* lights;
+  const std::vector<SwatchObservation>* obs;
+  std::vector<glm::dvec3> scale;  // per observation: the residual's unit
+  bool robust = true;
+  // The family's own k_d, γ_s and γ_v as a weak prior (z units): a few turns of a flat swatch
+  // leave the threads' lobes partly interchangeable, and the preset is the likeliest cloth.
+  Eigen::VectorXd prior;
+  // The lobe sums for the last γ each lobe was asked at: a Jacobian column moves one of them.
+  struct Cache {
+    double gamma = -1;
+    std::vector<glm::dvec3> sums;
+  };
+  mutable std::array<Cache, 4> cache;
+
+  int inputs() const { return kParams; }
+  int values() const { return 3 * g->observations + 6; }
+
+  const std::vector<glm::dvec3>& lobe(int j, bool volume, double gamma) const {
+    Cache& c = cache[2 * j + volume];
+    if (c.gamma != gamma) {
+      c.sums = lobe_sums(*g, *lights, j, volume, gamma);
+      c.gamma = gamma;
+    }
+    return c.sums;
+  }
+
+  std::vector<glm::dvec3> model(const Eigen::VectorXd& z) const {
+    std::vector<glm::dvec3> out(g->observations, glm::dvec3(0));
+    for (int j = 0; j < 2; ++j) {
+      const glm::dvec3 A(to_value(6 * j, z[6 * j]), to_value(6 * j + 1, z[6 * j + 1]), to_value(6 * j + 2, z[6 * j + 2]));
+      const double kd = to_value(6 * j + 3, z[6 * j + 3]);
+      const auto& s = lobe(j, false, to_value(6 * j + 4, z[6 * j + 4]));
+      const auto& v = lobe(j, true, to_value(6 * j + 5, z[6 * j + 5]));
+      for (int o = 0; o < g->observations; ++o) out[o] += s[o] + A * ((1 - kd) * v[o] + kd * g->flat[j][o]);
+    }
+    return out;
+  }
+
+  int operator()(const Eigen::VectorXd& z, Eigen::VectorXd& f) const {
+    const auto m = model(z);
+    for (int o = 0; o < g->observations; ++o)
+      for (int c = 0; c < 3; ++c) {
+        double r = (m[o][c] - (*obs)[o].value[c]) / scale[o][c];
+        // Huber's loss as a residual: its square is the loss.
+        if (robust && std::abs(r) > kHuber) r = std::copysign(std::sqrt(2 * kHuber * std::abs(r) - kHuber * kHuber), r);
+        f[3 * o + c] = r;
+      }
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) f[3 * g->observations + 3 * j + i] = kPriorWeight * (z[6 * j + 3 + i] - prior[6 * j + 3 + i]);
+    return 0;
+  }
+};
+
+}  // namespace
+
+FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const std::vector<FitLight>& lights,
+                     const std::vector<Fabric>& presets, const FabricFitOptions& options) {
+  if (observations.empty() || lights.empty() || presets.empty())
+    throw std::invalid_argument("fit_fabric: needs observations, lights and presets");
+  glm::dvec3 mean(0);
+  for (const auto& o : observations) mean += o.value;
+  mean /= static_cast<double>(observations.size());
+  const double level = (mean.r + mean.g + mean.b) / 3;
+  FabricFit best;
+  best.cost = std::numeric_limits<double>::infinity();
+  for (size_t p = 0; p < presets.size(); ++p) {
+    const Fabric& preset = presets[p];
+    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
+    Residuals r{&g, &lights, &observations, {}, true, {}, {}};
+    // The residual's unit: 2 % of the value (JPEG, noise, the response's fit), floored at 0.5 % of the
+    // swatch's mean so a black channel does not count for more than it can be measured.
+    for (const auto& o : observations) r.scale.push_back(0.02 * glm::max(o.value, glm::dvec3(0.25 * level)));
+    Eigen::VectorXd z(kParams);
+    for (int j = 0; j < 2; ++j) {
+      const ThreadParams& t = preset.threads[j];
+      const double start[6] = {t.albedo.r, t.albedo.g, t.albedo.b, t.kd, t.gamma_s, t.gamma_v};
+      for (int i = 0; i < 6; ++i) z[6 * j + i] = to_z(i, start[i]);
+    }
+    r.prior = z;
+    Eigen::NumericalDiff<Residuals> diff(r);
+    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(diff);
+    lm.parameters.maxfev = 60 * (kParams + 1);
+    lm.parameters.xtol = 1e-8;
+    lm.minimize(z);
+    Eigen::VectorXd f(r.values());
+    r(z, f);
+    const double cost = f.squaredNorm();
+    best.family_costs.emplace_back(preset.name, cost);
+    if (cost < best.cost) {
+      best.cost = cost;
+      best.preset = preset.name;
+      best.iterations = static_cast<int>(lm.iter);
+      best.fabric = preset;
+      for (int j = 0; j < 2; ++j) {
+        ThreadParams& t = best.fabric.threads[j];
+        t.albedo = glm::dvec3(to_value(0, z[6 * j]), to_value(1, z[6 * j + 1]), to_value(2, z[6 * j + 2]));
+        t.kd = to_value(3, z[6 * j + 3]);
+        t.gamma_s = to_value(4, z[6 * j + 4]);
+        t.gamma_v = to_value(5, z[6 * j + 5]);
+      }
+      const auto m = r.model(z);
+      double rel = 0;
+      for (int o = 0; o < g.observations; ++o)
+        for (int c = 0; c < 3; ++c) {
+          const double d = (m[o][c] - observations[o].value[c]) / std::max(observations[o].value[c], 0.05 * level);
+          rel += d * d;
+        }
+      best.rms_relative = std::sqrt(rel / (3.0 * g.observations));
+      // 1σ: the Gauss–Newton covariance of the plain least-squares problem at the optimum, scaled
+      // by its residual variance, carried through the logistic maps.
+      r.robust = false;
+      Eigen::MatrixXd J(r.values(), kParams);
+      diff.df(z, J);
+      Eigen::VectorXd f2(r.values());
+      r(z, f2);
+      const double s2 = f2.squaredNorm() / std::max(1, r.values() - kParams);
+      const Eigen::MatrixXd cov = (J.transpose() * J + 1e-9 * Eigen::MatrixXd::Identity(kParams, kParams)).inverse() * s2;
+      for (int j = 0; j < 2; ++j) {
+        double sd[6];
+        for (int i = 0; i < 6; ++i) {
+          const int k = 6 * j + i;
+          const double s = logistic(z[k]);
+          sd[i] = std::sqrt(std::max(cov(k, k), 0.0)) * (kBounds[i].hi - kBounds[i].lo) * s * (1 - s);
+        }
+        best.sigma[j] = ThreadUncertainty{{sd[0], sd[1], sd[2]}, sd[3], sd[4], sd[5]};
+      }
+    }
+    if (options.progress) options.progress(static_cast<double>(p + 1) / presets.size());
+  }
+  return best;
+}
+
+glm::dvec3 swatch_radiance(const Fabric& fabric, double turn, const glm::dvec3& wo, const std::vector<FitLight>& lights,
+                           int tangent_samples) {
+  const ClothBsdf bsdf(fabric, tangent_samples);
+  ClothBsdf::Point point = bsdf.at(SurfaceFrame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}});
+  glm::dvec3 sum(0);
+  for (const FitLight& l : lights) sum += l.power * point.integrand(l.direction, wo);
+  return sum;
+}
+
+}  // namespace weft

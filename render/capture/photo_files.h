@@ -1,0 +1,39 @@
+#pragma once
+// A capture's files: the photos (8-bit RGB, JPEG as a camera writes them, or PNG) and
+// capture.json, what the camera records beside them (image size, focal length in pixels when its
+// EXIF gives it).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace weft {
+
+struct Photo {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // row 0 at the top
+  std::uint8_t at(int x, int y, int c) const { return rgb[(static_cast<size_t>(y) * width + x) * 3 + c]; }
+};
+
+struct CaptureInfo {
+  int width = 0, height = 0;
+  std::optional<double> focal_px;
+};
+
+// A photo that cannot be read; what() names the file.
+class PhotoError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quality = 90);
+Photo read_photo(const std::filesystem::path& file);
+// The photos of a capture folder (*.jpg, *.jpeg, *.png), sorted by name.
+std::vector<std::filesystem::path> list_photos(const std::filesystem::path& dir);
+
+void write_capture_info(const CaptureInfo& info, const std::filesystem::path& file);
+// capture.json, or nothing when the folder has none.
+std::optional<CaptureInfo> read_capture_info(const std::filesystem::path& file);
+
+}  // namespace weft
