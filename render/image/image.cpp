@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include <ImfFrameBuffer.h>
+#include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfChannelList.h>
 #include <ImfHeader.h>
@@ -42,6 +43,31 @@ void write_exr(const Image& image, const std::filesystem::path& file) {
   }
 }
 
+Image read_exr(const std::filesystem::path& file) {
+  try {
+    Imf::InputFile in(file.c_str());
+    const Imath::Box2i dw = in.header().dataWindow();
+    const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    for (const char* c : {"R", "G", "B"})
+      if (!in.header().channels().findChannel(c)) throw std::runtime_error(std::string("no ") + c + " channel");
+    std::vector<float> rgb(static_cast<size_t>(w) * h * 3);
+    const size_t xs = 3 * sizeof(float), ys = xs * static_cast<size_t>(w);
+    // The slices are addressed by absolute pixel coordinates: shift the base to the window's origin.
+    char* base = reinterpret_cast<char*>(rgb.data()) - static_cast<std::ptrdiff_t>(dw.min.x) * std::ptrdiff_t(xs) -
+                 static_cast<std::ptrdiff_t>(dw.min.y) * std::ptrdiff_t(ys);
+    Imf::FrameBuffer fb;
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    Image image(w, h);
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = glm::dvec3(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]);
+    return image;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot read EXR " + file.string() + ": " + e.what());
+  }
+}
 
 namespace {
 

@@ -19,6 +19,9 @@ struct Image {
 
 // RGB float EXR (ZIP compression). Throws std::runtime_error naming the file.
 void write_exr(const Image& image, const std::filesystem::path& file);
+// An EXR's R, G and B channels at float precision (any pixel type; the data window's size).
+// Throws std::runtime_error naming the file where it cannot be read or lacks a channel.
+Image read_exr(const std::filesystem::path& file);
 // 8-bit sRGB PNG through the display operator of image/tone_map.h (exposure, filmic curve,
 // sRGB): display_value(radiance, exposure) per channel.
 void write_png(const Image& image, const std::filesystem::path& file, double exposure = 1.0);

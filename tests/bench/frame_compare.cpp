@@ -8,31 +8,12 @@
 #include <iostream>
 #include <string>
 
-#include <ImfArray.h>
-#include <ImfRgbaFile.h>
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "image/image.h"
 #include "measure/detail_energy.h"
 #include "measure/image_metrics.h"
-
-namespace {
-
-weft::Image read_exr(const std::string& file) {
-  Imf::RgbaInputFile in(file.c_str());
-  const Imath::Box2i dw = in.dataWindow();
-  const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
-  Imf::Array2D<Imf::Rgba> px(h, w);
-  in.setFrameBuffer(&px[0][0] - dw.min.x - static_cast<long>(dw.min.y) * w, 1, w);
-  in.readPixels(dw.min.y, dw.max.y);
-  weft::Image image(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) image.at(x, y) = {float(px[y][x].r), float(px[y][x].g), float(px[y][x].b)};
-  return image;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"frame_compare: a frame's error against a reference frame over the frame's surface pixels (drawn over black), and "
@@ -46,14 +27,14 @@ int main(int argc, char** argv) {
   app.add_option("--limit", limit, "A block is an artefact past this ratio of fine detail")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
-    const weft::Image m = read_exr(method), r = read_exr(reference);
+    const weft::Image m = weft::read_exr(method), r = weft::read_exr(reference);
     if (m.width != r.width || m.height != r.height) throw std::invalid_argument("frames differ in size");
     std::vector<bool> surface(r.pixels.size());
     for (size_t i = 0; i < surface.size(); ++i) surface[i] = m.pixels[i] != glm::dvec3(0.0);
     const weft::bench::MaskedError e = weft::bench::masked_error(m, r, surface);
     // Fine detail over the same pixels: the other frame's backdrop blacked out as the measured
     // frame's is, so that a silhouette's edge is the same edge in both.
-    weft::Image d = detail_reference.empty() ? r : read_exr(detail_reference);
+    weft::Image d = detail_reference.empty() ? r : weft::read_exr(detail_reference);
     if (d.width != m.width || d.height != m.height) throw std::invalid_argument("detail reference differs in size");
     for (size_t i = 0; i < surface.size(); ++i)
       if (!surface[i]) d.pixels[i] = glm::dvec3(0.0);
