@@ -3,14 +3,17 @@
 //   weft capture --card OUT.png [--dpi N]                 the card, for printing
 //   weft capture --simulate FABRIC --map MAP --out DIR    photos of a known fabric, for testing
 //   weft capture DIR --out fitted.json                    the fit
+//     [--check-map MAP --truth TRUTH]                     its appearance against a simulated truth
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/asset_paths.h"
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/progress_bar.h"
+#include "capture/appearance_check.h"
 #include "capture/capture_card.h"
 #include "capture/capture_fit.h"
 #include "capture/capture_rejection.h"
@@ -35,7 +38,17 @@ struct CaptureArgs {
   int width = 1024, height = 768;
   std::string truth_out;
   std::string report;
+  std::string check_map;
+  std::string truth;
 };
+
+EnvMap load_named_map(const std::string& name) {
+  try {
+    return load_env_map(env_map_file(name, assets_dir() / "envmaps"), NonFinitePolicy::clamp);
+  } catch (const EnvMapError& e) {
+    throw UsageError(e.what());
+  }
+}
 
 int run_card(const CaptureArgs& a) {
   if (a.dpi < 50 || a.dpi > 1200) throw UsageError("--dpi: must be in [50, 1200], got " + std::to_string(a.dpi));
@@ -51,12 +64,7 @@ int run_simulate(const CaptureArgs& a) {
   if (a.width < 320 || a.height < 240 || a.width > 8192 || a.height > 8192)
     throw UsageError("--width/--height: from 320×240 to 8192×8192");
   const Fabric fabric = load_fabric_named(a.simulate, assets_dir() / "fabrics");
-  EnvMap map;
-  try {
-    map = load_env_map(env_map_file(a.map, assets_dir() / "envmaps"), NonFinitePolicy::clamp);
-  } catch (const EnvMapError& e) {
-    throw UsageError(e.what());
-  }
+  const EnvMap map = load_named_map(a.map);
   CaptureSimulationOptions o;
   o.photos = a.photos;
   o.seed = a.seed;
@@ -70,6 +78,14 @@ int run_simulate(const CaptureArgs& a) {
 
 int run_fit(const CaptureArgs& a) {
   if (a.out.empty()) throw UsageError("a fit needs --out FITTED.json");
+  if (a.check_map.empty() != a.truth.empty()) throw UsageError("--check-map and --truth go together");
+  // Loaded before the fit so that a bad name fails at once.
+  std::optional<Fabric> truth;
+  EnvMap check_map;
+  if (!a.check_map.empty()) {
+    truth = load_fabric_named(a.truth, assets_dir() / "fabrics");
+    check_map = load_named_map(a.check_map);
+  }
   const std::filesystem::path out(a.out);
   const std::filesystem::path report = a.report.empty() ? out.parent_path() / (out.stem().string() + "_side_by_side.png")
                                                         : std::filesystem::path(a.report);
@@ -82,7 +98,13 @@ int run_fit(const CaptureArgs& a) {
     log_line("weft capture", LogPriority::error, std::string("rejected: ") + e.what());
     return 2;
   }
-  write_fitted_fabric(r, assets_dir() / "fabrics", out);
+  std::optional<AppearanceCheck> check;
+  if (truth) {
+    const AppearanceCheckOptions co;
+    check = AppearanceCheck{a.check_map, truth->name, appearance_relative_rmse(*truth, r.fit.fabric, check_map, co),
+                            co.elevations * co.turns};
+  }
+  write_fitted_fabric(r, assets_dir() / "fabrics", out, check);
   write_side_by_side(r, report);
   std::cout << "weave family " << r.fit.preset << ", RMS relative residual " << r.fit.rms_relative << " over "
             << r.observations.size() << " cells of " << r.photos.size() << " photos, " << r.seconds << " s\n";
@@ -93,6 +115,9 @@ int run_fit(const CaptureArgs& a) {
                 t.albedo.r, t.albedo.g, t.albedo.b, s.albedo.r, s.albedo.g, s.albedo.b, t.kd, s.kd, glm::degrees(t.gamma_s),
                 glm::degrees(s.gamma_s), glm::degrees(t.gamma_v), glm::degrees(s.gamma_v));
   }
+  if (check)
+    std::printf("appearance under %s: relative RMSE %.4f against %s over %d views\n", check->map.c_str(),
+                check->relative_rmse, check->truth.c_str(), check->views);
   std::cout << "wrote " << out.string() << " and " << report.string() << "\n";
   return 0;
 }
@@ -116,6 +141,7 @@ CommandAction add_capture_command(CLI::App& app) {
       "  weft capture --card card.png --dpi 300\n"
       "  weft capture --simulate linen_plain --map interior --out shots/ --photos 4\n"
       "  weft capture shots/ --out fitted.json\n"
+      "  weft capture shots/ --out fitted.json --truth linen_plain --check-map courtyard\n"
       "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or unusable photos (no card, saturated or\n"
       "blurred, too few swatch turns).");
   sub->add_option("dir", a->photos_dir, "Folder of photos (JPEG or PNG) and capture.json to fit");
@@ -129,6 +155,11 @@ CommandAction add_capture_command(CLI::App& app) {
   sub->add_option("--width", a->width, "--simulate: photo width")->capture_default_str();
   sub->add_option("--height", a->height, "--simulate: photo height")->capture_default_str();
   sub->add_option("--report", a->report, "A fit: the side-by-side PNG (photo, fitted render, difference ×4); default OUT_side_by_side.png");
+  sub->add_option("--check-map", a->check_map,
+                  "A fit, with --truth: render the fitted fabric and the truth under this map (a name in "
+                  "assets/envmaps or an .exr) and report their relative RMSE; a check for simulated captures only");
+  sub->add_option("--truth", a->truth,
+                  "A fit, with --check-map: the fabric the photos were simulated from (a preset name or a .json file)");
   sub->add_option("--truth-out", a->truth_out, "--simulate: also write what was simulated (fabric, turns, poses, response) as JSON");
   return [a] { return run_capture(*a); };
 }

@@ -24,7 +24,7 @@ unsigned char display(double v) {
 }  // namespace
 
 void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::path& presets_dir,
-                         const std::filesystem::path& file) {
+                         const std::filesystem::path& file, const std::optional<AppearanceCheck>& check) {
   const FabricFit& fit = result.fit;
   std::ifstream in(fabric_file(fit.preset, presets_dir));
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in);
@@ -59,6 +59,9 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
                                  {"corner_tags", p.corner_tags}, {"reprojection_px", p.reprojection_px},
                                  {"edge_width_px", p.edge_width_px}, {"response_beta", p.response.model.beta},
                                  {"vignetting", p.response.model.vignetting}, {"ball_clipped", p.ball_clipped}});
+  if (check)
+    capture["appearance_check"] = {{"map", check->map}, {"truth", check->truth}, {"views", check->views},
+                                   {"relative_rmse", check->relative_rmse}};
   doc["capture"] = capture;
   std::ofstream(file) << doc.dump(2) << "\n";
 }

@@ -5,13 +5,16 @@
 // one row per photo: the rectified swatch, the fitted model under the captured lighting, and
 // their difference ×4.
 #include <filesystem>
+#include <optional>
 
+#include "capture/appearance_check.h"
 #include "capture/capture_fit.h"
 
 namespace weft {
 
+// `check`, when given, goes into the `capture` field as `appearance_check`.
 void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::path& presets_dir,
-                         const std::filesystem::path& file);
+                         const std::filesystem::path& file, const std::optional<AppearanceCheck>& check = std::nullopt);
 void write_side_by_side(const CaptureFitResult& result, const std::filesystem::path& file);
 
 }  // namespace weft

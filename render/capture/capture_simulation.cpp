@@ -35,17 +35,13 @@ struct TrueCamera {
 };
 
 struct Lights {
-  std::vector<DirectionalSample> above;  // the samples above the card's horizon
-  glm::dvec3 irradiance{0.0};            // E at +Z
+  std::vector<FitLight> above;  // the samples above the card's horizon
+  glm::dvec3 irradiance{0.0};   // E at +Z
 };
 
 Lights lights_above(const EnvMap& map, int cells) {
-  Lights l;
-  for (const DirectionalSample& s : environment_samples(map, cells))
-    if (s.direction.z > 0) {
-      l.above.push_back(s);
-      l.irradiance += s.power * s.direction.z;
-    }
+  Lights l{simulated_swatch_lights(map, cells)};
+  for (const FitLight& s : l.above) l.irradiance += s.power * s.direction.z;
   return l;
 }
 
@@ -73,6 +69,19 @@ std::optional<double> sphere_hit(const glm::dvec3& o, const glm::dvec3& d, const
 }
 
 }  // namespace
+
+std::vector<FitLight> simulated_swatch_lights(const EnvMap& map, int light_cells) {
+  std::vector<FitLight> above;
+  for (const DirectionalSample& s : environment_samples(map, light_cells))
+    if (s.direction.z > 0) above.push_back({s.direction, s.power});
+  return above;
+}
+
+glm::dvec3 simulated_swatch_radiance(ClothBsdf::Point& point, const std::vector<FitLight>& lights, const glm::dvec3& wo) {
+  glm::dvec3 sum(0);
+  for (const FitLight& l : lights) sum += l.power * point.integrand(l.direction, wo);
+  return sum;
+}
 
 void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimulationOptions& options,
                       const std::filesystem::path& dir, const std::optional<std::filesystem::path>& truth_out) {
@@ -128,9 +137,7 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
                                                       (g / kClothGrid) / (kClothGrid - 1.0) * 0.1 - 0.05, 0);
       const glm::dvec3 wo = glm::normalize(cam.C - p);
       ClothBsdf::Point point = bsdf.at(frame);
-      glm::dvec3 sum(0);
-      for (const DirectionalSample& s : lights.above) sum += s.power * point.integrand(s.direction, wo);
-      cloth[g] = sum;
+      cloth[g] = simulated_swatch_radiance(point, lights.above, wo);
     }
     auto cloth_at = [&](const glm::dvec3& p) {
       const double gx = std::clamp((p.x - window_centre.x + 0.05) / 0.1 * (kClothGrid - 1), 0.0, kClothGrid - 1.001);

@@ -15,6 +15,10 @@
 #include <functional>
 #include <optional>
 
+#include <vector>
+
+#include "capture/fabric_fit.h"
+#include "core/cloth_bsdf.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"
 
@@ -29,6 +33,14 @@ struct CaptureSimulationOptions {
   bool record_focal = true;    // capture.json carries the focal length (a camera's EXIF)
   std::function<void(double)> progress;
 };
+
+// The map as the simulated swatch sees it: its directional samples (light_cells × light_cells/2
+// cells) above the card's horizon.
+std::vector<FitLight> simulated_swatch_lights(const EnvMap& map, int light_cells);
+
+// The simulated swatch's radiance toward `wo` (unit, world) at one point: the model bound to the
+// swatch's frame under those lights. The photos' swatch pixels are drawn from this.
+glm::dvec3 simulated_swatch_radiance(ClothBsdf::Point& point, const std::vector<FitLight>& lights, const glm::dvec3& wo);
 
 // Writes DIR/photo_<i>.jpg and DIR/capture.json (DIR is created); the truth (fabric, turns,
 // cameras, response) as JSON to `truth_out` when given.

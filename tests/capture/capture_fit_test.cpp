@@ -1,6 +1,7 @@
 // `weft capture` end to end: photos of two presets simulated under one map, fitted back. The weave
-// family must come back, and each thread's colour A within ΔE2000 ≤ 3; a folder of photos with no
-// card in them must be rejected with exit code 2.
+// family must come back, each thread's colour A within ΔE2000 ≤ 3, and the fitted fabric under
+// another map within 5 % relative RMSE of the truth; a folder of photos with no card in them must
+// be rejected with exit code 2.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -17,8 +18,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capture/appearance_check.h"
 #include "capture/photo_files.h"
 #include "core/fabric.h"
+#include "lighting/env_map.h"
 
 namespace {
 
@@ -98,13 +101,38 @@ TEST(DeltaE2000, SharmaTestData) {
   EXPECT_NEAR(delta_e2000({50, 2.5, 0}, {73, 25, -18}), 27.1492, 1e-4);
 }
 
-// Simulates and fits one preset; returns each thread's ΔE2000 from the truth.
-std::array<double, 2> simulate_and_fit(const std::string& preset, bool check_colours) {
-  std::array<double, 2> errors{99, 99};
+weft::EnvMap source_map(const std::string& name) {
+  return weft::load_env_map(weft::env_map_file(name, WEFT_SOURCE_ASSETS "/envmaps"), weft::NonFinitePolicy::clamp);
+}
+
+TEST(AppearanceCheck, MeasuresRelativeRmse) {
+  const weft::Fabric truth = weft::load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
+  const weft::EnvMap map = source_map("courtyard");
+  EXPECT_EQ(weft::appearance_relative_rmse(truth, truth, map), 0.0);
+  // Both albedos × 1.1: the model's volume term scales by 1.1, its surface (specular) term not at
+  // all, so the measure is 0.1 × ‖volume‖ / ‖surface + volume‖: at most 0.1, and above 0.07 while
+  // the sheen stays under about 30 % of the radiance (linen under courtyard: 0.078).
+  weft::Fabric brighter = truth;
+  for (weft::ThreadParams& t : brighter.threads) t.albedo *= 1.1;
+  const double e = weft::appearance_relative_rmse(truth, brighter, map);
+  std::printf("linen with albedos × 1.1 under courtyard: relative RMSE %.4f\n", e);
+  EXPECT_GT(e, 0.07);
+  EXPECT_LE(e, 0.1 + 1e-9);
+}
+
+struct FitErrors {
+  std::array<double, 2> delta_e{99, 99};  // each thread's ΔE2000 from the truth
+  double appearance = 99;                 // relative RMSE under the check map
+};
+
+// Simulates one preset under "interior", fits it, and checks the fit under "courtyard".
+FitErrors simulate_and_fit(const std::string& preset, bool check_colours) {
+  FitErrors errors;
   const fs::path dir = scratch(preset), out = dir / "fitted.json";
   EXPECT_EQ(run("capture --simulate " + preset + " --map interior --out " + (dir / "photos").string() +
                 " --photos 4 --seed 3 --width 1024 --height 768 2>/dev/null"), 0);
-  EXPECT_EQ(run("capture " + (dir / "photos").string() + " --out " + out.string() + " 2>/dev/null >/dev/null"), 0);
+  EXPECT_EQ(run("capture " + (dir / "photos").string() + " --out " + out.string() + " --truth " + preset +
+                " --check-map courtyard 2>/dev/null >/dev/null"), 0);
   std::ifstream in(out);
   if (!in) {
     ADD_FAILURE() << "no fitted file for " << preset;
@@ -112,6 +140,14 @@ std::array<double, 2> simulate_and_fit(const std::string& preset, bool check_col
   }
   const nlohmann::json fitted = nlohmann::json::parse(in);
   EXPECT_EQ(fitted["capture"]["weave_family"], preset);
+  const nlohmann::json& check = fitted["capture"]["appearance_check"];
+  if (check.is_object() && check["relative_rmse"].is_number()) {
+    errors.appearance = check["relative_rmse"].get<double>();
+    std::printf("%s under courtyard: relative RMSE %.4f\n", preset.c_str(), errors.appearance);
+    ::testing::Test::RecordProperty(preset + "_courtyard_relative_rmse", std::to_string(errors.appearance));
+  } else {
+    ADD_FAILURE() << "no appearance_check in the fitted file for " << preset;
+  }
   // The file is a fabric file the rest of Weft reads.
   const weft::Fabric got = weft::load_fabric(out);
   const weft::Fabric truth = weft::load_fabric_preset(preset, WEFT_SOURCE_ASSETS "/fabrics");
@@ -121,23 +157,26 @@ std::array<double, 2> simulate_and_fit(const std::string& preset, bool check_col
                 got.threads[j].albedo.r, got.threads[j].albedo.g, got.threads[j].albedo.b, truth.threads[j].albedo.r,
                 truth.threads[j].albedo.g, truth.threads[j].albedo.b);
     if (check_colours) EXPECT_LE(de, 3.0) << preset << " thread " << j + 1;
-    errors[j] = de;
+    errors.delta_e[j] = de;
   }
   fs::remove_all(dir);
   return errors;
 }
 
 TEST(CaptureFit, LinenWeaveFamilyComesBack) {
-  // Both threads of the fitted linen within ΔE2000 ≤ 6 (the target, 3, is the disabled test below).
-  const auto de = simulate_and_fit("linen_plain", false);
-  EXPECT_LE(std::max(de[0], de[1]), 6.0);
+  // Both threads of the fitted linen within ΔE2000 ≤ 6, and its appearance under another map within
+  // 0.2 relative RMSE, about 2.5× what the fit gives (0.082); the targets, 3 and 5 %, are
+  // the disabled test below.
+  const FitErrors e = simulate_and_fit("linen_plain", false);
+  EXPECT_LE(std::max(e.delta_e[0], e.delta_e[1]), 6.0);
+  EXPECT_LT(e.appearance, 0.2);
 }
 
-// The acceptance: two presets, family and thread colours within ΔE2000 ≤ 3. Not met yet
-// (linen's warp is 4.6 off; shot silk is fitted as linen), so it runs only when asked:
-// capture_fit_test --gtest_also_run_disabled_tests.
+// The acceptance: two presets, family and thread colours within ΔE2000 ≤ 3, and each under
+// another map within 5 % relative RMSE. Not met yet (linen's warp is 4.6 off; shot silk is fitted
+// as linen), so it runs only when asked: capture_fit_test --gtest_also_run_disabled_tests.
 TEST(CaptureFit, DISABLED_TwoPresetsWithinDeltaE3) {
-  for (const char* preset : {"linen_plain", "silk_shot"}) simulate_and_fit(preset, true);
+  for (const char* preset : {"linen_plain", "silk_shot"}) EXPECT_LT(simulate_and_fit(preset, true).appearance, 0.05) << preset;
 }
 
 TEST(CaptureRejects, PhotosWithoutTheCard) {

@@ -1,0 +1,38 @@
+#include "capture/appearance_check.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "capture/capture_simulation.h"
+#include "core/cloth_bsdf.h"
+
+namespace weft {
+
+double appearance_relative_rmse(const Fabric& truth, const Fabric& fitted, const EnvMap& map,
+                                const AppearanceCheckOptions& options) {
+  if (options.elevations < 1 || options.turns < 1) throw std::invalid_argument("appearance check needs views");
+  const std::vector<FitLight> lights = simulated_swatch_lights(map, options.light_cells);
+  const ClothBsdf truth_bsdf(truth, options.tangent_samples), fitted_bsdf(fitted, options.tangent_samples);
+  double diff2 = 0, truth2 = 0;
+  for (int t = 0; t < options.turns; ++t) {
+    const double turn = 2 * std::numbers::pi * t / options.turns;
+    const SurfaceFrame frame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}};
+    ClothBsdf::Point truth_point = truth_bsdf.at(frame), fitted_point = fitted_bsdf.at(frame);
+    for (int e = 0; e < options.elevations; ++e) {
+      // Seen from the card's bottom edge (−Y), as the photos are taken.
+      const double el = glm::radians(options.elevations == 1 ? 50.0 : 30.0 + 40.0 * e / (options.elevations - 1));
+      const glm::dvec3 wo(0, -std::cos(el), std::sin(el));
+      const glm::dvec3 a = simulated_swatch_radiance(truth_point, lights, wo);
+      const glm::dvec3 b = simulated_swatch_radiance(fitted_point, lights, wo);
+      diff2 += glm::dot(b - a, b - a);
+      truth2 += glm::dot(a, a);
+    }
+  }
+  if (!(truth2 > 0)) throw std::invalid_argument("appearance check: the truth renders black under this map");
+  // The sample counts cancel in the ratio of the two means.
+  return std::sqrt(diff2 / truth2);
+}
+
+}  // namespace weft

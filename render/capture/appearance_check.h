@@ -1,0 +1,33 @@
+#pragma once
+// The acceptance measure of a fit to simulated photos: the fitted fabric and the truth rendered as
+// a flat swatch under another environment map than the one photographed, compared by relative
+// RMSE. Only simulated captures have a truth to compare with.
+#include <string>
+
+#include "core/fabric.h"
+#include "lighting/env_map.h"
+
+namespace weft {
+
+struct AppearanceCheckOptions {
+  int elevations = 3;        // view elevations, spread over 30°–70° above the swatch
+  int turns = 4;             // swatch turns, spread over 360°
+  int tangent_samples = 32;  // N_j per thread, as the simulation renders
+  int light_cells = 64;      // the map's directional samples, as the simulation lights
+};
+
+// sqrt(mean |fitted − truth|²) / sqrt(mean |truth|²) over every view, turn and channel of the
+// swatch's radiance under `map` (capture_simulation.h's evaluation). Throws std::invalid_argument
+// when the truth renders black.
+double appearance_relative_rmse(const Fabric& truth, const Fabric& fitted, const EnvMap& map,
+                                const AppearanceCheckOptions& options = {});
+
+// A check as `weft capture DIR --check-map MAP --truth TRUTH` records it in the fitted file.
+struct AppearanceCheck {
+  std::string map;     // as named on the command line
+  std::string truth;   // the truth fabric's name
+  double relative_rmse = 0;
+  int views = 0;       // elevations × turns
+};
+
+}  // namespace weft
