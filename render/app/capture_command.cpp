@@ -1,10 +1,5 @@
-// `weft capture`: a fabric file from photos of a swatch on the printed capture card beside a
-// mirror ball (docs/capture.md). Three uses:
-//   weft capture --card OUT.png [--dpi N]                 the card, for printing
-//   weft capture --simulate FABRIC --map MAP --out DIR    photos of a known fabric, for testing
-//   weft capture DIR --out fitted.json                    the fit
-//     [--check-map MAP --truth TRUTH]                     its appearance against a simulated truth
-#include <cstdio>
+// `weft capture`: the printed card (--card), simulated photos of a known fabric (--simulate), and
+// a fabric file fitted to photos of the card (DIR --out F); docs/capture.md.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -27,19 +22,9 @@ namespace weft {
 namespace {
 
 struct CaptureArgs {
-  std::string photos_dir;
-  std::string card_out;
-  int dpi = 300;
-  std::string simulate;
-  std::string map;
-  std::string out;
-  int photos = 4;
+  std::string photos_dir, card_out, simulate, map, out, truth_out, report, check_map, truth;
+  int dpi = 300, photos = 4, width = 1024, height = 768;
   unsigned seed = 1;
-  int width = 1024, height = 768;
-  std::string truth_out;
-  std::string report;
-  std::string check_map;
-  std::string truth;
 };
 
 EnvMap load_named_map(const std::string& name) {
@@ -106,18 +91,7 @@ int run_fit(const CaptureArgs& a) {
   }
   write_fitted_fabric(r, assets_dir() / "fabrics", out, check);
   write_side_by_side(r, report);
-  std::cout << "weave family " << r.fit.preset << ", RMS relative residual " << r.fit.rms_relative << " over "
-            << r.observations.size() << " cells of " << r.photos.size() << " photos, " << r.seconds << " s\n";
-  for (int j = 0; j < 2; ++j) {
-    const ThreadParams& t = r.fit.fabric.threads[j];
-    const ThreadUncertainty& s = r.fit.sigma[j];
-    std::printf("thread %d: A (%.4f %.4f %.4f) ±(%.4f %.4f %.4f)  kd %.3f ±%.3f  γs %.2f° ±%.2f  γv %.2f° ±%.2f\n", j + 1,
-                t.albedo.r, t.albedo.g, t.albedo.b, s.albedo.r, s.albedo.g, s.albedo.b, t.kd, s.kd, glm::degrees(t.gamma_s),
-                glm::degrees(s.gamma_s), glm::degrees(t.gamma_v), glm::degrees(s.gamma_v));
-  }
-  if (check)
-    std::printf("appearance under %s: relative RMSE %.4f against %s over %d views\n", check->map.c_str(),
-                check->relative_rmse, check->truth.c_str(), check->views);
+  std::cout << fit_summary(r, check);
   std::cout << "wrote " << out.string() << " and " << report.string() << "\n";
   return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -102,6 +103,28 @@ void write_side_by_side(const CaptureFitResult& result, const std::filesystem::p
       }
   }
   write_png_rgb8(w, h, rgb, file);
+}
+
+std::string fit_summary(const CaptureFitResult& r, const std::optional<AppearanceCheck>& check) {
+  char line[512];
+  std::string out;
+  std::snprintf(line, sizeof line, "weave family %s, RMS relative residual %g over %zu cells of %zu photos, %g s\n",
+                r.fit.preset.c_str(), r.fit.rms_relative, r.observations.size(), r.photos.size(), r.seconds);
+  out += line;
+  for (int j = 0; j < 2; ++j) {
+    const ThreadParams& t = r.fit.fabric.threads[j];
+    const ThreadUncertainty& s = r.fit.sigma[j];
+    std::snprintf(line, sizeof line, "thread %d: A (%.4f %.4f %.4f) ±(%.4f %.4f %.4f)  kd %.3f ±%.3f  γs %.2f° ±%.2f  γv %.2f° ±%.2f\n",
+                  j + 1, t.albedo.r, t.albedo.g, t.albedo.b, s.albedo.r, s.albedo.g, s.albedo.b, t.kd, s.kd,
+                  glm::degrees(t.gamma_s), glm::degrees(s.gamma_s), glm::degrees(t.gamma_v), glm::degrees(s.gamma_v));
+    out += line;
+  }
+  if (check) {
+    std::snprintf(line, sizeof line, "appearance under %s: relative RMSE %.4f against %s over %d views\n", check->map.c_str(),
+                  check->relative_rmse, check->truth.c_str(), check->views);
+    out += line;
+  }
+  return out;
 }
 
 }  // namespace weft

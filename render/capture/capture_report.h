@@ -6,6 +6,7 @@
 // their difference ×4.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "capture/appearance_check.h"
 #include "capture/capture_fit.h"
@@ -16,5 +17,8 @@ namespace weft {
 void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::path& presets_dir,
                          const std::filesystem::path& file, const std::optional<AppearanceCheck>& check = std::nullopt);
 void write_side_by_side(const CaptureFitResult& result, const std::filesystem::path& file);
+// The fit for a person in a terminal: the weave family, the residual, each thread's parameters
+// with their 1σ, and the appearance check when given; one line each.
+std::string fit_summary(const CaptureFitResult& result, const std::optional<AppearanceCheck>& check = std::nullopt);
 
 }  // namespace weft
