@@ -9,6 +9,7 @@
 #include <tag36h11.h>
 
 #include "image/image.h"
+#include "image/tone_map.h"
 
 namespace weft {
 
@@ -98,8 +99,7 @@ void write_card_png(const std::filesystem::path& file, int dpi) {
       // Paper prints as 255, ink as 0, a patch as the sRGB code of its reflectance relative to the paper's.
       const double r = card_reflectance({(x + 0.5) / px_per_mm, (y + 0.5) / px_per_mm}, true);
       const double lin = r <= c.ink_reflectance ? 0.0 : std::clamp(r / c.paper_reflectance, 0.0, 1.0);
-      const double enc = lin <= 0.0031308 ? 12.92 * lin : 1.055 * std::pow(lin, 1.0 / 2.4) - 0.055;
-      const unsigned char v = static_cast<unsigned char>(std::lround(255.0 * enc));
+      const unsigned char v = static_cast<unsigned char>(std::lround(255.0 * srgb_encode(lin)));
       for (int k = 0; k < 3; ++k) rgb[(static_cast<size_t>(y) * w + x) * 3 + k] = v;
     }
   write_png_rgb8(w, h, rgb, file);

@@ -9,6 +9,7 @@
 
 #include "capture/capture_card.h"
 #include "image/image.h"
+#include "image/tone_map.h"
 
 namespace weft {
 
@@ -16,11 +17,7 @@ namespace {
 
 double round_to(double x, double step) { return std::round(x / step) * step; }
 
-unsigned char display(double v) {
-  const double lin = std::clamp(v, 0.0, 1.0);
-  const double enc = lin <= 0.0031308 ? 12.92 * lin : 1.055 * std::pow(lin, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(255.0 * enc));
-}
+unsigned char display(double v) { return static_cast<unsigned char>(std::lround(255.0 * srgb_encode(v))); }
 
 }  // namespace
 

@@ -6,15 +6,12 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/tone_map.h"
 
 namespace weft {
 
 namespace {
-unsigned char to_srgb8(double linear) {
-  const double c = std::clamp(linear, 0.0, 1.0);
-  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(s * 255.0));
-}
+unsigned char to_srgb8(double linear) { return static_cast<unsigned char>(std::lround(srgb_encode(linear) * 255.0)); }
 }  // namespace
 
 void write_preview_png(const std::filesystem::path& path, std::span<const EnvMap> maps, int width) {
