@@ -1,8 +1,6 @@
 #include "bench/sky_sweep.h"
 
 #include <algorithm>
-#include <array>
-#include <iterator>
 #include <ctime>
 #include <sstream>
 #include <map>

@@ -180,11 +180,11 @@ float horizon_fraction(float theta, float phi, float sigma_l, float sp, vec3 hz)
 // taken open there (iwasaki.h's on_side_shaded). A caller that turns the normal to the eye itself
 // (cloth_pixel_frame) sets iwasaki_behind where the mesh normal faced away.
 bool iwasaki_behind = false;
-bool iwasaki_baked_side = false;
-float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz) {
+// `sdf_shadows`: the lobe is cut by the baked SDF (sdf) as well as by the horizon.
+float lobe_integral(float theta_l, float sigma_l, float phi_k, float sp, vec3 sdf, float theta_k, vec3 hz, bool sdf_shadows) {
   float i = pair_integral(theta_l, sigma_l, sp);
   float h = horizon_fraction(theta_l, phi_k, sigma_l, sp, hz);
-  if (!iwasaki_baked_side || u_visibility_open_share) return i * h;
+  if (!sdf_shadows) return i * h;
   return i * min(h, visibility_h(sigma_l, sp, vec3(sdf.x + sdf.y * (theta_l - theta_k), sdf.yz)));
 }
 
@@ -234,7 +234,8 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
     n = -n;
     behind = true;
   }
-  iwasaki_baked_side = u_visibility && !behind;
+  bool baked_side = u_visibility && !behind;
+  bool sdf_shadows = baked_side && !u_visibility_open_share;
   vec3 u = normalize(warp - dot(warp, n) * n);
   vec3 v = cross(n, u);
   vec3 wo_local = vec3(dot(wo, u), dot(wo, v), dot(wo, n));
@@ -277,7 +278,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
       float w_peak = clamp(0.5 * log2(lambda_k / 2.0), 0.0, 1.0);  // iwasaki.cpp's lobe_peak_weight
       vec2 xi_tc = node_texcoord(node_square_from_hemisphere(vec3(dot(xi, u), dot(xi, v), dot(xi, n))), u_xi_n);
       vec3 vis_k = vec3(0.0);
-      if (iwasaki_baked_side) {
+      if (baked_side) {
         vis_k = bary.x * sg_visibility(corners.x, k);
         // Per vertex the weights are (1, 0, 0): the other corners cost two fetches for nothing.
         if (bary.y != 0.0 || bary.z != 0.0)
@@ -304,7 +305,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
           Lobe light = Lobe(1.0, theta_k, sigma_k);
           float spread_k = separable_spread(lambda_k, theta_k, sigma_k);
           vec3 hz = vec3(dot(t, n), dot(np, n), dot(axis, n));
-          vec3 sdf = iwasaki_baked_side && !u_visibility_open_share ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
+          vec3 sdf = sdf_shadows ? sdf_in_sample_frame(n, u, v, t, np, axis, theta_k, phi_k, vis_k) : vec3(0.0);
           float phi_d = wrap_angle(phi_k - fo.phi);
           float cos_half = cos(0.5 * phi_d);
           // iwasaki.cpp's sample_lobe_width: each lobe widened by the tilts of the sample's arc; seed bandwidths.
@@ -327,7 +328,7 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float cos_d = cos(0.5 * (l.mu - fo.theta));
             float fr = fresnel_dielectric(p.eta, cos_d * cos_half);
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
-            surf += m * T_lobe * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) *
+            surf += m * T_lobe * l.alpha * fr * cos_half * geo * lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz, sdf_shadows) *
                     lobe_spread(spread_k, l.sigma, sigma_k);
           }
           // Volume lobe and the isotropic k_d part.
@@ -338,13 +339,13 @@ vec3 iwasaki_sg_split(vec3 position, vec3 normal, vec3 warp, ivec3 corners, vec3
             float geo = cos(l.mu) * cos(l.mu) / max(cos_d * cos_d, DENOMINATOR_FLOOR);
             float sp = sigma_prime(sigma_k, l.mu, theta_k);
             float lobe = (1.0 - p.kd) * l.alpha * tr * tr * geo / max(cos(l.mu) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz) * lobe_spread(spread_k, l.sigma, sigma_k);
+                         lobe_integral(l.mu, l.sigma, phi_k, sp, sdf, theta_k, hz, sdf_shadows) * lobe_spread(spread_k, l.sigma, sigma_k);
             float cos_dk = cos(0.5 * (theta_k - fo.theta));
             float tk = 1.0 - fresnel_dielectric(p.eta, cos_dk * cos_half);
             float geok = cos(theta_k) * cos(theta_k) / max(cos_dk * cos_dk, DENOMINATOR_FLOOR);
             float spk = sigma_prime(sigma_k, theta_k, theta_k);
             float iso = p.kd * tk * tk * geok / max(cos(theta_k) + cos(fo.theta), DENOMINATOR_FLOOR) *
-                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz) * spread_k;
+                        lobe_integral(theta_k, sigma_k, phi_k, spk, sdf, theta_k, hz, sdf_shadows) * spread_k;
             vol += m * (T_lobe * lobe + T * iso);
           }
         }
