@@ -17,6 +17,7 @@
 #include "methods/weave/weave_layer.h"
 #include "scene/weave_scale.h"
 #include "shaders/embedded_shaders.h"
+#include "scene/bounds.h"
 
 namespace weft::gpu {
 
@@ -58,6 +59,10 @@ struct SceneRenderer::Object {
   const ObjectVisibility* sdf = nullptr;
   const VisibilityMask* mask = nullptr;
 };
+
+ShadingParts frame_bake_reads(const methods::RuntimeMethod& method) {
+  return method.bake_reads() | ShadingParts{.tables = false, .visibility = true, .masks = true};
+}
 
 SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, const methods::RuntimeMethod& method,
                              int tangent_samples,
@@ -117,10 +122,9 @@ SceneRenderer::SceneRenderer(const Scene& scene, std::vector<Fabric> fabrics, co
     }
     objects_.push_back(std::move(obj));
   }
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const auto& o : scene.objects)
-    for (const auto& q : o.mesh.positions) lo = glm::min(lo, q), hi = glm::max(hi, q);
-  if (lo.x <= hi.x) bounds_centre_ = 0.5 * (lo + hi), bounds_radius_ = 0.5 * glm::length(hi - lo);
+  Bounds all;
+  for (const auto& o : scene.objects) all.add(o.mesh.positions);
+  if (!all.empty()) bounds_centre_ = all.centre(), bounds_radius_ = 0.5 * glm::length(all.extent());
 }
 
 SceneRenderer::~SceneRenderer() = default;

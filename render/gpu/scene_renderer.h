@@ -41,6 +41,11 @@ SgLighting softened_environment(const SgLighting& sgs, double blur_sharpness = k
 // was behind, so any alpha > 0 is cloth). Metering and cloth masks read this, never the colour.
 bool is_cloth_alpha(float alpha);
 
+// The parts of a bundle's shading data a frame drawn with `method` reads: the method's own
+// (RuntimeMethod::bake_reads), and under every method the floors' and occluders' visibility and the
+// weave layer's lights' (visibility and masks). The weighting tables only where the method reads them.
+ShadingParts frame_bake_reads(const methods::RuntimeMethod& method);
+
 class SceneRenderer {
 public:
   // Needs a current GLES 3 context. `fabrics[i]` is the fabric of the i-th cloth object. The

@@ -7,6 +7,7 @@
 
 #include "hashing/fnv1a_hash.h"
 #include "kiosk/kiosk_config_error.h"
+#include "gpu/scene_renderer.h"
 #include "methods/registry.h"
 #include "scene/scene.h"
 
@@ -35,10 +36,9 @@ const methods::RuntimeMethod& tableless_rung() {
 // Every occluded cloth object has a visibility mask (weft bake writes them unless --no-masks), or
 // none is occluded.
 bool masks_cover_occluded_cloth(const KioskBundle& bundle) {
-  if (!bundle.shading) return false;
-  for (const auto& [i, v] : bundle.shading->visibility)
-    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth() &&
-        !bundle.shading->masks.count(i))
+  if (!bundle.baked.tables) return false;
+  for (size_t i : bundle.baked.visibility)
+    if (i < bundle.scene.scene.objects.size() && bundle.scene.scene.objects[i].is_cloth() && !bundle.baked.masks.count(i))
       return false;
   return true;
 }
@@ -46,7 +46,7 @@ bool masks_cover_occluded_cloth(const KioskBundle& bundle) {
 // --method auto (header).
 const methods::RuntimeMethod& auto_method(const KioskBundle& bundle) {
   using methods::RuntimeMethod, methods::Shading;
-  if (!bundle.shading) return tableless_rung();
+  if (!bundle.baked.tables) return tableless_rung();
   bool sheer = false;  // a cloth object shown as a sheer (an optical thickness of its fabric's or its own)
   for (const auto& o : bundle.scene.scene.cloth_objects())
     sheer = sheer || object_fabric(o, bundle.scene.fabrics.at(o.fabric)).optical_thickness > 0.0;
@@ -84,11 +84,15 @@ std::uint64_t bundle_fingerprint(const bundle::BundleReader& reader) {
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method) {
   KioskBundle b;
   b.scene = read_scene_bundle(reader);
-  if (has_shading_data(reader) && method != tableless_rung().name) {
-    b.shading = std::make_shared<ShadingData>(read_scene_shading_data(reader, b.scene.scene));
-  }
+  b.baked = read_shading_contents(reader);
   if (reader.has("bake/selection")) b.baked_for = selected_method(reader.json("bake/selection"));
   b.fingerprint = bundle_fingerprint(reader);
+  // The payload the method draws with reads, nothing else (an unknown name: the caller's mistake,
+  // reported by kiosk_method).
+  const methods::RuntimeMethod* m = method == "auto" ? &auto_method(b) : methods::find_method(method);
+  const ShadingParts parts = m ? gpu::frame_bake_reads(*m) : ShadingParts::none();
+  if (b.baked.tables && parts.any())
+    b.shading = std::make_shared<ShadingData>(read_scene_shading_data(reader, b.scene.scene, parts));
   return b;
 }
 
@@ -102,11 +106,11 @@ std::string selected_method(std::string_view selection_json) {
 const methods::RuntimeMethod& kiosk_method(const std::string& method, const KioskBundle& bundle,
                                            const std::filesystem::path& file) {
   const methods::RuntimeMethod& m = method != "auto" ? methods::method(method) : auto_method(bundle);
-  if (m.needs_weighting_tables() && !bundle.shading)
+  if (m.needs_weighting_tables() && !bundle.baked.tables)
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no weighting tables (weft bake without --no-tables)");
   // The masks' open share replaces the SDF's visibility: an occluded cloth object needs its mask.
-  if (m.masks.open_share && bundle.shading && !masks_cover_occluded_cloth(bundle))
+  if (m.masks.open_share && bundle.baked.tables && !masks_cover_occluded_cloth(bundle))
     throw KioskConfigError("--method " + m.name + ": bundle " + file.string() +
                            " has no visibility mask for its occluded cloth (weft bake without --no-masks)");
   return m;

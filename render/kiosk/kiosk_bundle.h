@@ -1,6 +1,6 @@
 #pragma once
 // A scene bundle as the kiosk shows it: what it reads from a verified bundle (the scene, every
-// fabric preset, and the weighting tables unless it draws with the kiosk's rung that needs none),
+// fabric preset, what the bake holds, and of its shading data the parts its method reads),
 // the runtime method it draws with, and a fingerprint of the content. Read at boot (through the last-good fallback)
 // and for each content update (kiosk/bundle_watcher.h), the same way both times.
 #include <cstdint>
@@ -18,7 +18,9 @@ namespace weft {
 
 struct KioskBundle {
   SceneBundle scene;
-  std::shared_ptr<const ShadingData> shading;  // null: no weighting tables (or the tableless rung asked for)
+  ShadingContents baked;                       // what the bake holds (its indices)
+  // The parts of it the method reads (gpu::frame_bake_reads); null: none baked, or none read.
+  std::shared_ptr<const ShadingData> shading;
   std::uint64_t fingerprint = 0;                     // of the section table: equal content, equal value
   // The method `weft bake --target-error` or `--choose-rung` measured (bake/selection); empty: none.
   std::string baked_for;
@@ -28,8 +30,9 @@ struct KioskBundle {
 // (readers may ignore that section).
 std::string selected_method(std::string_view selection_json);
 
-// Reads what the kiosk needs; `method` is --method (auto, or a registry name). Throws
-// bundle::BundleError naming the section when something is missing or invalid.
+// Reads what the kiosk needs; `method` is --method (auto, or a registry name), whose reads decide
+// which of the bake's parts are loaded. Throws bundle::BundleError naming the section when
+// something is missing or invalid.
 KioskBundle read_kiosk_bundle(const bundle::BundleReader& reader, const std::string& method);
 
 // The method for a bundle: --method, or for auto the first of the registry's kiosk rungs

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/cloth_bsdf.h"
+#include "runtime/shading_data.h"
 #include "runtime/table_source.h"
 #include "core/spherical_gaussian.h"
 #include "methods/cloth_method.h"
@@ -55,6 +56,8 @@ struct RuntimeMethod {
   WeightingTablesUse weighting_tables = WeightingTablesUse::unused;
   Shading shading = Shading::per_pixel;
   MaskUse masks;
+  // It reads the bundle's per-vertex visibility SDF and κ (shadows on the cloth).
+  bool baked_visibility = false;
   // `weft run --method auto` may choose it: the kiosk takes the first such method, in the
   // registry's order, whose traits fit the bundle (kiosk/kiosk_bundle.h).
   bool kiosk_rung = false;
@@ -67,6 +70,10 @@ struct RuntimeMethod {
   bool needs_weighting_tables() const { return weighting_tables == WeightingTablesUse::required; }
   bool reads_weighting_tables() const { return weighting_tables != WeightingTablesUse::unused; }
   bool reads_visibility_masks() const { return masks.any(); }
+  // The parts of a bundle's shading data its GPU side reads (runtime/shading_data.h).
+  ShadingParts bake_reads() const {
+    return {reads_weighting_tables(), baked_visibility || masks.any(), masks.any()};
+  }
 };
 
 }  // namespace weft::methods

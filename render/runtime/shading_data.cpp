@@ -1,6 +1,7 @@
 #include "runtime/shading_data.h"
 
 #include <cmath>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 
@@ -41,33 +42,10 @@ std::vector<float> floats(const bundle::BundleReader& r, const std::string& name
   return a;
 }
 
-}  // namespace
+using PassRows = std::function<const VertexPassMesh*(size_t object)>;
 
-bool has_shading_data(const bundle::BundleReader& r) { return r.has(shading_data_section::kTablesIndex); }
-
-ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
-  return read_shading_data(r, vertex_counts, {});
-}
-
-ShadingData read_scene_shading_data(const bundle::BundleReader& r, const Scene& scene) {
-  std::map<size_t, size_t> counts;
-  std::map<size_t, const VertexPassMesh*> passes;
-  for (size_t i = 0; i < scene.objects.size(); ++i) {
-    const TriangleMesh& m = scene.objects[i].mesh;
-    counts[i] = m.positions.size();
-    if (!pass_of(m).whole()) passes[i] = &pass_of(m);
-  }
-  return read_shading_data(r, counts, passes);
-}
-
-ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
-                                        const std::map<size_t, const VertexPassMesh*>& passes) {
-  // Rows stored at an object's pass vertices only: how many, where it has a pass subset.
-  auto pass_rows = [&](size_t object) -> const VertexPassMesh* {
-    const auto p = passes.find(object);
-    return p == passes.end() ? nullptr : p->second;
-  };
-  ShadingData out;
+// The weighting tables of each baked fabric preset.
+void read_tables(const bundle::BundleReader& r, ShadingData& out) {
   const std::string TI = shading_data_section::kTablesIndex;
   const json index = parse(r, TI);
   if (!index.is_object()) throw bad(r, TI, "expected an object of fabric presets");
@@ -124,7 +102,11 @@ ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size
     }
     out.tables.emplace(preset, std::move(t));
   }
+}
 
+// Each occluded object's visibility SDF (PCA), and the κ table it needs.
+void read_visibility(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
+                     const PassRows& pass_rows, ShadingData& out) {
   const std::string VI = shading_data_section::kVisIndex;
   const json vis = parse(r, VI);
   if (!vis.is_object()) throw bad(r, VI, "expected an object keyed by scene object index");
@@ -183,7 +165,11 @@ ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size
     }
   }
   if (!out.visibility.empty() && !out.kappa) throw bad(r, shading_data_section::kKappa, "missing: visibility needs κ");
+}
 
+// Each occluded cloth object's visibility mask.
+void read_masks(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts, const PassRows& pass_rows,
+                ShadingData& out) {
   if (r.has(shading_data_section::kMaskIndex)) {
     const std::string MI = shading_data_section::kMaskIndex;
     const json masks = parse(r, MI);
@@ -214,6 +200,62 @@ ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size
       out.masks.emplace(object, std::move(m));
     }
   }
+}
+
+}  // namespace
+
+bool has_shading_data(const bundle::BundleReader& r) { return r.has(shading_data_section::kTablesIndex); }
+
+ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts) {
+  return read_shading_data(r, vertex_counts, {});
+}
+
+ShadingContents read_shading_contents(const bundle::BundleReader& r) {
+  ShadingContents c;
+  c.tables = has_shading_data(r);
+  auto keys = [&](const char* index, std::set<size_t>& out) {
+    if (!r.has(index)) return;
+    const json j = parse(r, index);
+    if (!j.is_object()) throw bad(r, index, "expected an object keyed by scene object index");
+    for (const auto& item : j.items()) {
+      const std::string& key = item.key();
+      size_t used = 0;
+      size_t object = 0;
+      try {
+        object = std::stoul(key, &used);
+      } catch (const std::exception&) {
+      }
+      if (used == 0 || used != key.size()) throw bad(r, index, "entry '" + key + "': not a scene object index");
+      out.insert(object);
+    }
+  };
+  keys(shading_data_section::kVisIndex, c.visibility);
+  keys(shading_data_section::kMaskIndex, c.masks);
+  return c;
+}
+
+ShadingData read_scene_shading_data(const bundle::BundleReader& r, const Scene& scene, ShadingParts parts) {
+  std::map<size_t, size_t> counts;
+  std::map<size_t, const VertexPassMesh*> passes;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const TriangleMesh& m = scene.objects[i].mesh;
+    counts[i] = m.positions.size();
+    if (!pass_of(m).whole()) passes[i] = &pass_of(m);
+  }
+  return read_shading_data(r, counts, passes, parts);
+}
+
+ShadingData read_shading_data(const bundle::BundleReader& r, const std::map<size_t, size_t>& vertex_counts,
+                              const std::map<size_t, const VertexPassMesh*>& passes, ShadingParts parts) {
+  // Rows stored at an object's pass vertices only: how many, where it has a pass subset.
+  auto pass_rows = [&](size_t object) -> const VertexPassMesh* {
+    const auto p = passes.find(object);
+    return p == passes.end() ? nullptr : p->second;
+  };
+  ShadingData out;
+  if (parts.tables) read_tables(r, out);
+  if (parts.visibility) read_visibility(r, vertex_counts, pass_rows, out);
+  if (parts.masks) read_masks(r, vertex_counts, pass_rows, out);
   return out;
 }
 

@@ -275,6 +275,8 @@ class Checker:
         data, functions = set(), set()
         for line in m.group(1).split("\n"):
             line = line.split("//")[0].rstrip()
+            if re.match(r"^\s+return\b", line):  # a member function's body
+                continue
             f = re.match(r"^\s+[\w:<>, ]+?[\s>&*](\w+)\(.*\).*\{", line)
             if f:
                 functions.add(f.group(1))

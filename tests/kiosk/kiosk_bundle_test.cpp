@@ -17,16 +17,14 @@ KioskBundle cloth_bundle(const std::string& preset, bool tables) {
   o.material = Material::cloth;
   o.fabric = preset;
   b.scene.scene.objects.push_back(o);
-  if (tables) b.shading = std::make_shared<ShadingData>();
+  b.baked.tables = tables;
   return b;
 }
 
 // Occluded cloth without masks: the quadrature rungs would light it unoccluded, so the search's choice stands.
 KioskBundle occluded_without_masks(const std::string& preset) {
   KioskBundle b = cloth_bundle(preset, true);
-  auto data = std::make_shared<ShadingData>();
-  data->visibility.emplace(0, ObjectVisibility{});
-  b.shading = data;
+  b.baked.visibility.insert(0);
   return b;
 }
 
@@ -36,9 +34,7 @@ TEST(KioskMethod, AutoTakesTheQuadratureRungWhereMasksCoverTheOccludedCloth) {
   open.baked_for = "iwasaki";
   EXPECT_EQ(kiosk_method("auto", open, "x.weft").name, "iwasaki_quadrature");
   KioskBundle masked = occluded_without_masks("linen_plain");
-  auto data = std::make_shared<ShadingData>(*masked.shading);
-  data->masks.emplace(0, VisibilityMask{});
-  masked.shading = data;
+  masked.baked.masks.insert(0);
   EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_vertex_quadrature");
   EXPECT_EQ(kiosk_method("iwasaki_vertex", masked, "x.weft").name, "iwasaki_vertex");  // --method wins
 }
@@ -58,9 +54,7 @@ TEST(KioskMethod, AutoTakesTheMethodTheBakeSearchChose) {
 
 TEST(KioskMethod, AutoTakesTheRungTheBakeChoseWhereMasksCoverTheOccludedCloth) {
   KioskBundle masked = occluded_without_masks("linen_plain");
-  auto data = std::make_shared<ShadingData>(*masked.shading);
-  data->masks.emplace(0, VisibilityMask{});
-  masked.shading = data;
+  masked.baked.masks.insert(0);
   masked.baked_for = "iwasaki_vertex_mask_quadrature";  // weft bake --choose-rung
   EXPECT_EQ(kiosk_method("auto", masked, "x.weft").name, "iwasaki_vertex_mask_quadrature");
   masked.baked_for = "iwasaki_mask_quadrature";

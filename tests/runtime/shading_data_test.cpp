@@ -2,6 +2,8 @@
 // reads back bit for bit, and a bundle with a section missing or of the wrong size is refused
 // with a BundleError naming that section (visibility masks included).
 #include <cmath>
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -110,6 +112,41 @@ TEST(ShadingData, RoundTrips) {
   ASSERT_EQ(back.masks.count(1), 1u);
   EXPECT_EQ(back.masks.at(1).resolution, 16);
   EXPECT_EQ(back.masks.at(1).words, d.masks.at(1).words);
+}
+
+// A reader asks for the parts its method reads: the others are not read at all (a broken section
+// there goes unnoticed), and the indices alone tell what the bake holds.
+TEST(ShadingData, ReadsOnlyThePartsAskedFor) {
+  const ShadingData d = sample_data();
+  const auto bytes = write(d);
+  const auto r = bundle::BundleReader::view(bytes, "mem");
+  const ShadingContents c = read_shading_contents(r);
+  EXPECT_TRUE(c.tables);
+  EXPECT_EQ(c.visibility, std::set<size_t>{1});
+  EXPECT_EQ(c.masks, std::set<size_t>{1});
+
+  const ShadingData tables_only = read_shading_data(r, kVertices, {}, {.tables = true, .visibility = false, .masks = false});
+  EXPECT_EQ(tables_only.tables.count("linen_plain"), 1u);
+  EXPECT_TRUE(tables_only.visibility.empty());
+  EXPECT_FALSE(tables_only.kappa);
+  EXPECT_TRUE(tables_only.masks.empty());
+  const ShadingData shadows = read_shading_data(r, kVertices, {}, {.tables = false, .visibility = true, .masks = true});
+  EXPECT_TRUE(shadows.tables.empty());
+  EXPECT_EQ(shadows.visibility.at(1).coefficients, d.visibility.at(1).coefficients);
+  EXPECT_TRUE(shadows.kappa);
+  EXPECT_EQ(shadows.masks.at(1).words, d.masks.at(1).words);
+
+  // A corrupt table is an error for a reader of tables only.
+  const auto broken = edited(bytes, "T/0/v");
+  const auto br = bundle::BundleReader::view(broken, "mem");
+  EXPECT_THROW(read_shading_data(br, kVertices, {}, {.tables = true, .visibility = false, .masks = false}), bundle::BundleError);
+  EXPECT_NO_THROW(read_shading_data(br, kVertices, {}, {.tables = false, .visibility = true, .masks = true}));
+  EXPECT_TRUE(read_shading_contents(br).tables);
+
+  const auto unmasked = edited(bytes, "bake/mask");  // weft bake --no-masks
+  EXPECT_TRUE(read_shading_contents(bundle::BundleReader::view(unmasked, "mem")).masks.empty());
+  const auto bad_index = edited(bytes, "", "bake/vis");
+  EXPECT_THROW(read_shading_contents(bundle::BundleReader::view(bad_index, "mem")), bundle::BundleError);
 }
 
 // A part whose vertices all see the same sky compresses to its mean alone (no PCA term: a real

@@ -25,6 +25,7 @@ RuntimeMethod weighting_table_rung(gpu::IwasakiCloth::Evaluation evaluation, Run
   RuntimeMethod m;
   m.name = std::string(per_vertex ? "iwasaki_vertex" : "iwasaki") + rung.suffix;
   m.weighting_tables = WeightingTablesUse::required;
+  m.baked_visibility = true;
   m.shading = per_vertex ? Shading::per_vertex : Shading::per_pixel;
   m.masks = masks;
   m.kiosk_rung = true;

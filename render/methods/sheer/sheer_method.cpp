@@ -46,6 +46,7 @@ RuntimeMethod sheer_entry(gpu::IwasakiCloth::Evaluation evaluation) {
   RuntimeMethod m;
   m.see_through = true;
   m.weighting_tables = WeightingTablesUse::required;
+  m.baked_visibility = true;
   m.shading = evaluation == gpu::IwasakiCloth::Evaluation::per_vertex ? Shading::per_vertex : Shading::per_pixel;
   m.glsl = sheer_glsl();
   m.make_gpu = [evaluation](const gpu::ClothMethodSetup& s) {
