@@ -237,21 +237,10 @@ void Kiosk::tick() {
   ++ticks_;
   hang_if_injected();
   const auto tick_start = Clock::now();
-  follow_display(tick_start);
   const double turn = config_.turntable * std::chrono::duration<double>(tick_start - loop_start_).count();
-  const int64_t report_ns = knobs_->last_report_ns();
-  const bool knobs_changed = poll_knobs();
-  if (knobs_changed) idle_.touched(tick_start);
-  const bool look_returning = return_when_idle(tick_start);
-  poll_light();
-  const bool light_changed = take_prepared_lighting();
-  const bool scene_changed = poll_bundle();
-  const bool view_changed = move_view(tick_start, turn);
-  const bool was_asleep = screen_off_;
-  const bool asleep = screen_asleep(tick_start);
-  const bool redraw = !asleep && (knobs_changed || look_returning || light_changed || scene_changed || view_changed ||
-                                  exposure_.adapting() || was_asleep);
-  const bool label_changed = !asleep && !redraw && label_ && label_->changed(tick_start);
+  const TickNews news = poll_inputs(tick_start, turn);
+  const bool redraw = news.redraw() || (!news.asleep && exposure_.adapting());
+  const bool label_changed = !news.asleep && !redraw && label_ && label_->changed(tick_start);
   if (label_changed) {
     present(tick_start);
     ++drawn_;
@@ -261,19 +250,35 @@ void Kiosk::tick() {
     shown_turn_ = turn;
     zoom_drawn_ = zoom_shown_;
     ++drawn_;
-    if (scene_changed) {
+    if (news.scene) {
       swap_->log_shown(*scene_, method_->name);
       notifier_.status("showing '" + scene_->scene.name + "' on " + display_->description());
     }
-    if (knobs_changed && report_ns != 0)
-      latency_ms_.push(double(Clock::now().time_since_epoch().count() - report_ns) / 1e6);
+    if (news.knobs && news.knob_report_ns != 0)
+      latency_ms_.push(double(Clock::now().time_since_epoch().count() - news.knob_report_ns) / 1e6);
   }
-  knob_changes_ += knobs_changed;
+  knob_changes_ += news.knobs;
   notifier_.tick();
   if (status_) status_->update(status("running"), tick_start);
   if (config_.stats_every > 0 && tick_start - last_stats_ >= std::chrono::duration<double>(config_.stats_every))
     log_stats(tick_start);
   wait_for_next_tick(tick_start, redraw || label_changed);
+}
+
+Kiosk::TickNews Kiosk::poll_inputs(Clock::time_point now, double turn_deg) {
+  TickNews news;
+  follow_display(now);
+  news.knob_report_ns = knobs_->last_report_ns();
+  news.knobs = poll_knobs();
+  if (news.knobs) idle_.touched(now);
+  news.look_returning = return_when_idle(now);
+  poll_light();
+  news.light = take_prepared_lighting();
+  news.scene = poll_bundle();
+  news.view = move_view(now, turn_deg);
+  news.woke = screen_off_;
+  news.asleep = screen_asleep(now);
+  return news;
 }
 
 void Kiosk::hang_if_injected() {

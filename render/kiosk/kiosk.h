@@ -100,6 +100,24 @@ private:
   void tick();
   void shut_down();
 
+  // What one tick's inputs changed (poll_inputs).
+  struct TickNews {
+    bool knobs = false;           // a new knob state was applied
+    std::int64_t knob_report_ns = 0;  // when its panel report arrived (0: none timed)
+    bool look_returning = false;  // the way home moved the look
+    bool light = false;           // new lighting was uploaded
+    bool scene = false;           // a new bundle was swapped in
+    bool view = false;            // the turntable or the zoom moved
+    bool woke = false;            // the screen schedule had the screen off until now
+    bool asleep = false;          // the screen schedule has it off: nothing is drawn
+    bool redraw() const { return !asleep && (knobs || look_returning || light || scene || view || woke); }
+  };
+  // Polls the kiosk's inputs once each, in this order: the screen (hotplug), the knobs, the way
+  // home when idle, the light probe, the lighting worker, the bundle swap, the view, the screen
+  // schedule. The order is part of the behaviour: a later input reads what an earlier one set this
+  // tick (a bundle swapped in is lit with the light turn the knobs and the probe set).
+  TickNews poll_inputs(Clock::time_point now, double turn_deg);
+
   // Parts of a tick.
   void hang_if_injected();
   bool poll_knobs();             // applies a new knob state; true when there was one

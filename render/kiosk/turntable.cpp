@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/bounds.h"
+
 namespace weft {
 
 SgLighting rotated_about_z(const SgLighting& sgs, double deg) {
@@ -14,12 +16,8 @@ SgLighting rotated_about_z(const SgLighting& sgs, double deg) {
 }
 
 glm::dvec3 turntable_pivot(const Scene& scene) {
-  const bool any_cloth = !scene.cloth_objects().empty();
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const SceneObject& o : scene.objects)
-    if (o.is_cloth() || !any_cloth)
-      for (const glm::dvec3& p : o.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+  const Bounds b = product_bounds(scene);
+  return b.empty() ? glm::dvec3(0.0) : b.centre();
 }
 
 Camera turned_about_z(const Camera& camera, double deg, const glm::dvec3& pivot) {

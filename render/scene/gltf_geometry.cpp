@@ -12,6 +12,7 @@
 
 #include "scene/gltf_names.h"
 #include "scene/gltf_scene.h"
+#include "scene/bounds.h"
 
 namespace weft {
 
@@ -325,9 +326,9 @@ void GltfGeometry::add_primitive(const tinygltf::Primitive& p, const glm::dmat4&
   // Merge into the material's object.
   TriangleMesh& g = groups_[p.material + 1];
   if (const MeshOrientation o = mesh_orientation(mesh); o.closed && o.inward()) {
+    const Bounds b = bounds_of(mesh.positions);
     InwardPart part{size_t(p.material + 1), g.positions.size(), mesh.positions.size(), g.triangles.size(),
-                    mesh.triangles.size(), mesh.positions.front(), mesh.positions.front(), o, where};
-    for (const auto& q : mesh.positions) part.lo = glm::min(part.lo, q), part.hi = glm::max(part.hi, q);
+                    mesh.triangles.size(), b.lo, b.hi, o, where};
     inward_.push_back(std::move(part));
   }
   MeshRepairReport& r = reports_[p.material + 1];

@@ -21,6 +21,7 @@
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_sheen_fabric.h"
 #include "scene/gltf_variants.h"
+#include "scene/bounds.h"
 
 namespace weft {
 
@@ -70,18 +71,11 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
 // Looks at the bounds' centre from the front left and above (Weft's cameras face +y), far enough
 // that the bounding sphere fills the vertical field of view.
 Camera framed_camera(const Scene& s) {
-  const bool any_cloth = !s.cloth_objects().empty();
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const auto& o : s.objects)
-    if (!any_cloth || o.is_cloth())
-      for (const auto& p : o.mesh.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-      }
+  const Bounds b = product_bounds(s);
   Camera c;
   c.fov_deg = 40.0;
-  const glm::dvec3 centre = 0.5 * (lo + hi);
-  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+  const glm::dvec3 centre = b.centre();
+  const double radius = std::max(0.5 * glm::length(b.extent()), 1e-3);
   const double distance = 1.1 * radius / std::sin(0.5 * c.fov_deg * 3.14159265358979323846 / 180.0);
   c.target = centre;
   c.position = centre + distance * glm::normalize(glm::dvec3(0.45, -1.0, 0.55));

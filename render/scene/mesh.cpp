@@ -5,6 +5,9 @@
 #include <map>
 #include <tuple>
 
+#include "scene/bounds.h"
+#include "scene/vertex_weld.h"
+
 namespace weft {
 
 namespace {
@@ -36,12 +39,8 @@ MeshRepairReport repair_mesh(TriangleMesh& mesh, bool needs_uvs, const std::stri
   check_finite(mesh.normals, "normal", name);
   check_finite(mesh.uvs, "UV", name);
 
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (const auto& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  const double diag2 = glm::dot(hi - lo, hi - lo);
+  const glm::dvec3 extent = bounds_of(mesh.positions).extent();
+  const double diag2 = glm::dot(extent, extent);
   const double min_area2 = std::pow(1e-12 * diag2, 2);  // compares |cross|² (= 4·area²)
 
   MeshRepairReport report;
@@ -131,23 +130,14 @@ MeshRepairReport finish_mesh(TriangleMesh& mesh, bool is_cloth, const std::strin
 }
 
 void weld_vertices(TriangleMesh& mesh, double tolerance) {
-  using Key = std::tuple<long long, long long, long long, long long, long long>;
-  std::map<Key, uint32_t> first;
-  std::vector<uint32_t> remap(mesh.positions.size());
-  TriangleMesh out;
   const bool has_uv = !mesh.uvs.empty();
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    const glm::dvec3 q = glm::round(mesh.positions[i] / tolerance);
-    const glm::dvec2 quv = has_uv ? glm::round(mesh.uvs[i] / tolerance) : glm::dvec2(0.0);
-    const Key key{static_cast<long long>(q.x), static_cast<long long>(q.y), static_cast<long long>(q.z),
-                  static_cast<long long>(quv.x), static_cast<long long>(quv.y)};
-    auto [it, inserted] = first.emplace(key, static_cast<uint32_t>(out.positions.size()));
-    if (inserted) {
+  const std::vector<uint32_t> remap = welded_ids(mesh.positions, tolerance, glm::dvec3(0.0), mesh.uvs);
+  TriangleMesh out;
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    if (remap[i] == out.positions.size()) {  // the first of its id
       out.positions.push_back(mesh.positions[i]);
       if (has_uv) out.uvs.push_back(mesh.uvs[i]);
     }
-    remap[i] = it->second;
-  }
   for (auto& t : mesh.triangles)
     for (auto& i : t) i = remap[i];
   mesh.positions = std::move(out.positions);

@@ -6,6 +6,9 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "scene/bounds.h"
+#include "scene/vertex_weld.h"
+
 namespace weft {
 
 namespace {
@@ -13,17 +16,8 @@ namespace {
 // Each vertex's id after welding by position (a UV or normal seam splits vertices a closed surface
 // shares): positions rounded to a millionth of the mesh's extent.
 std::vector<uint32_t> welded_ids(const TriangleMesh& mesh) {
-  glm::dvec3 lo = mesh.positions.front(), hi = lo;
-  for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const double step = std::max(1e-12, 1e-6 * glm::length(hi - lo));
-  std::map<std::tuple<long long, long long, long long>, uint32_t> first;
-  std::vector<uint32_t> id(mesh.positions.size());
-  for (size_t i = 0; i < id.size(); ++i) {
-    const glm::dvec3 q = glm::round((mesh.positions[i] - lo) / step);
-    id[i] = first.emplace(std::make_tuple((long long)q.x, (long long)q.y, (long long)q.z), uint32_t(first.size()))
-                .first->second;
-  }
-  return id;
+  const Bounds b = bounds_of(mesh.positions);
+  return weft::welded_ids(mesh.positions, std::max(1e-12, 1e-6 * glm::length(b.extent())), b.lo);
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 #include <meshoptimizer.h>
 
+#include "scene/vertex_pass_rows.h"
+
 namespace weft {
 
 namespace {
@@ -308,13 +310,7 @@ std::string pass_mesh_report(const Scene& scene, const std::string& prefix) {
 std::vector<glm::dvec3> blend_pass_values(const VertexPassMesh& pass, const std::vector<glm::dvec3>& pass_values) {
   if (pass.whole()) return pass_values;
   if (pass_values.size() != pass.vertices.size()) throw std::invalid_argument("blend_pass_values: a value per pass vertex");
-  std::vector<glm::dvec3> out(pass.corners.size());
-  for (size_t v = 0; v < out.size(); ++v) {
-    const auto& c = pass.corners[v];
-    const glm::vec3 w = pass.weights[v];
-    out[v] = double(w.x) * pass_values[c[0]] + double(w.y) * pass_values[c[1]] + double(w.z) * pass_values[c[2]];
-  }
-  return out;
+  return blended_rows(pass, pass_values, 1);
 }
 
 }  // namespace weft

@@ -5,6 +5,7 @@
 // mask's bits) take their heaviest corner's. Header-only: the kiosk's bundle reader uses it.
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "scene/vertex_pass_mesh.h"
@@ -20,14 +21,28 @@ std::vector<T> pass_vertex_rows(const VertexPassMesh& pass, const std::vector<T>
   return out;
 }
 
-// Every mesh vertex's row blended from its corners' (pass-vertex rows in).
-inline std::vector<float> blended_rows(const VertexPassMesh& pass, const std::vector<float>& rows, size_t width) {
-  std::vector<float> out(pass.corners.size() * width);
+// Every mesh vertex's row blended from its corners' (pass-vertex rows in): values of T (a float,
+// or a glm vector), weighted in T's own precision.
+template <class T>
+struct RowScalar {
+  using type = typename T::value_type;  // a glm vector's component
+};
+template <class T>
+  requires std::is_arithmetic_v<T>
+struct RowScalar<T> {
+  using type = T;
+};
+
+template <class T>
+std::vector<T> blended_rows(const VertexPassMesh& pass, const std::vector<T>& rows, size_t width) {
+  using Scalar = typename RowScalar<T>::type;
+  std::vector<T> out(pass.corners.size() * width);
   for (size_t v = 0; v < pass.corners.size(); ++v) {
     const auto& c = pass.corners[v];
     const glm::vec3 w = pass.weights[v];
     for (size_t i = 0; i < width; ++i)
-      out[v * width + i] = w.x * rows[c[0] * width + i] + w.y * rows[c[1] * width + i] + w.z * rows[c[2] * width + i];
+      out[v * width + i] = Scalar(w.x) * rows[c[0] * width + i] + Scalar(w.y) * rows[c[1] * width + i] +
+                           Scalar(w.z) * rows[c[2] * width + i];
   }
   return out;
 }

@@ -8,8 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/mesh.h"
+#include "scene/bounds.h"
 #include "scene/procedural_meshes.h"
 #include "scene/scene_file.h"
+#include "scene/vertex_weld.h"
 
 using namespace weft;
 using glm::dvec3;
@@ -148,6 +150,44 @@ static std::string mesh_error(TriangleMesh m, bool cloth) {
     return e.what();
   }
   return "";
+}
+
+// Two quads side by side, their shared edge's vertices duplicated (a UV seam): welding by position
+// merges the duplicates, by position and UV keeps those whose UVs differ.
+TEST(Mesh, WeldMergesVerticesByPositionAndUv) {
+  const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 0, 1e-9}, {1, 1, 0}, {2, 0, 0}};
+  const std::vector<glm::dvec2> uv{{0, 0}, {1, 0}, {1, 1}, {1, 0}, {0, 1}, {1, 0}};
+  EXPECT_EQ(welded_ids(p, 1e-6), (std::vector<uint32_t>{0, 1, 2, 1, 2, 3}));
+  EXPECT_EQ(welded_ids(p, 1e-6, glm::dvec3(0.0), uv), (std::vector<uint32_t>{0, 1, 2, 1, 3, 4}));
+  // Rounded from the origin given: 0.4 and 0.6 fall apart from 0, together from 0.5.
+  const std::vector<glm::dvec3> q{{0.4, 0, 0}, {0.6, 0, 0}};
+  EXPECT_EQ(welded_ids(q, 1.0), (std::vector<uint32_t>{0, 1}));
+  EXPECT_EQ(welded_ids(q, 1.0, glm::dvec3(0.5, 0, 0)), (std::vector<uint32_t>{0, 0}));
+
+  TriangleMesh m;
+  m.positions = p;
+  m.uvs = uv;
+  m.triangles = {{0, 1, 2}, {3, 5, 4}};
+  weld_vertices(m, 1e-6);
+  EXPECT_EQ(m.positions.size(), 5u);
+  EXPECT_EQ(m.triangles[1], (std::array<uint32_t, 3>{1, 4, 3}));
+}
+
+// The product's bounds: its cloth, or everything where nothing is cloth; none for an empty scene.
+TEST(Scene, ProductBoundsAreTheClothsOrEverything) {
+  Scene s;
+  SceneObject floor, cloth;
+  floor.mesh.positions = {{-5, -5, 0}, {5, 5, 0}};
+  cloth.material = Material::cloth;
+  cloth.mesh.positions = {{0, 1, 2}, {1, 3, 4}, {0.5, 2, 3}};
+  s.objects = {floor};
+  EXPECT_EQ(product_bounds(s).lo, glm::dvec3(-5, -5, 0));
+  s.objects.push_back(cloth);
+  const Bounds b = product_bounds(s);
+  EXPECT_EQ(b.lo, glm::dvec3(0, 1, 2));
+  EXPECT_EQ(b.hi, glm::dvec3(1, 3, 4));
+  EXPECT_EQ(b.centre(), glm::dvec3(0.5, 2, 3));
+  EXPECT_TRUE(product_bounds(Scene{}).empty());
 }
 
 TEST(Mesh, MalformedMeshesAreRejectedClearly) {
