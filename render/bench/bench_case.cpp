@@ -6,6 +6,7 @@
 #include "lighting/env_map.h"
 #include "lighting/env_spec.h"
 #include "lighting/sg_fit.h"
+#include "scene/scene_fabrics.h"
 #include "scene/scene_file.h"
 
 namespace weft::bench {
@@ -19,14 +20,12 @@ Case make_case(const BenchOptions& a, const std::string& scene_name, const std::
   } catch (const SceneError& e) {
     throw InvalidOption(e.what());
   }
-  for (auto& o : c.scene.cloth_objects()) {
-    if (fabric_arg != "scene") o.fabric = fabric_arg;
-    if (c.fabrics.count(o.fabric)) continue;
-    try {
-      c.fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
-    } catch (const FabricError& e) {
-      throw InvalidOption(std::string("--fabrics: ") + e.what());
-    }
+  if (fabric_arg != "scene")
+    for (auto& o : c.scene.cloth_objects()) o.fabric = fabric_arg;
+  try {
+    c.fabrics = load_scene_fabrics(c.scene, a.assets / "fabrics");
+  } catch (const FabricError& e) {
+    throw InvalidOption(std::string("--fabrics: ") + e.what());
   }
   if (c.fabrics.empty()) throw InvalidOption("--scenes: " + scene_name + " has no cloth");
   c.fabric_label = fabric_arg == "scene" ? c.fabrics.begin()->first : fabric_arg;

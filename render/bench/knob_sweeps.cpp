@@ -14,6 +14,7 @@
 #include "frame/frame_render.h"
 #include "lighting/env_map.h"
 #include "lighting/sg_fit.h"
+#include "scene/scene_fabrics.h"
 #include "scene/scene_file.h"
 
 namespace weft::bench {
@@ -22,10 +23,7 @@ void sweep_sg_counts(const BenchOptions& a, const std::vector<LadderEntry>& run,
                      ReferenceSet& references, const std::filesystem::path& out, BenchResults& results) {
   if (a.sweep_sg_counts.empty()) return;
   const Scene s = load_scene_named(a.scenes.front(), a.assets);
-  std::map<std::string, Fabric> fabrics;
-  for (const auto& o : s.cloth_objects())
-    if (!fabrics.count(o.fabric))
-      fabrics.emplace(o.fabric, load_fabric_named(o.fabric, a.assets / "fabrics"));
+  const std::map<std::string, Fabric> fabrics = load_scene_fabrics(s, a.assets / "fabrics");
   const auto env_file = env_map_file(s.environment, a.assets / "envmaps");
   auto map = std::make_shared<EnvMap>(load_env_map(env_file, NonFinitePolicy::clamp, nullptr));
   results.sweep_case = s.name + " / " + fabrics.begin()->first + " / " + s.environment + " (map-lit reference, 128x64 cells)";

@@ -9,6 +9,7 @@
 #include "lighting/sg_fit.h"
 #include "lighting/sg_set_io.h"
 #include "reference/environment_samples.h"
+#include "scene/scene_fabrics.h"
 #include "scene/scene_file.h"
 #include "scene/vertex_pass_mesh.h"
 
@@ -45,9 +46,7 @@ FrameInputs load_frame_inputs(const FrameInputOptions& a) {
     std::cerr << set_pass_meshes(in.scene, "weft render: mesh " + in.scene.name + "/");
   }
   try {
-    for (const auto& obj : in.scene.objects)
-      if (obj.is_cloth() && !in.fabrics.count(obj.fabric))
-        in.fabrics.emplace(obj.fabric, load_fabric_named(obj.fabric, a.assets / "fabrics"));
+    in.fabrics = load_scene_fabrics(in.scene, a.assets / "fabrics");
   } catch (const FabricError& e) {
     throw FrameInputError(std::string("--fabric: ") + e.what());
   }

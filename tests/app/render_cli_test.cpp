@@ -93,6 +93,20 @@ TEST(RenderCli, GltfSceneFabricFileAndMapByPath) {
   fs::remove(exr), fs::remove(temp("gltf.png")), fs::remove(fabric), fs::remove(map);
 }
 
+// A fabric file drawn by a rung of the weighting tables: the tables baked in memory are found under
+// the name the scene gives the fabric (the file's path), whatever name the file gives itself.
+TEST(RenderCli, AFabricFileDrawsWithTheTablesBakedForIt) {
+  const fs::path fabric = temp("fitted_linen.json"), exr = temp("fabric_file.exr"), png = temp("fabric_file.png");
+  const fs::path sgs = temp("fabric_file_sgs.json");
+  fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "fabrics/linen_plain.json", fabric, fs::copy_options::overwrite_existing);
+  std::ofstream(sgs) << R"({"sgs":[{"axis":[0.3,-0.2,0.93],"sharpness":8,"amplitude":[1,1,1]}]})";
+  const CliResult r = weft("render --scene swatch --fabric " + fabric.string() + " --method iwasaki_vertex --sgs " +
+                           sgs.string() + " --width 24 --height 16 --frames 1 --out " + exr.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(is_png(png));
+  fs::remove(exr), fs::remove(png), fs::remove(fabric), fs::remove(sgs);
+}
+
 // A broken glTF is bad input for render and bake alike: exit 2, the file and the reason on
 // stderr, no bundle written.
 TEST(RenderCli, BrokenGltfExitsWithTwoNamingFileAndReason) {
