@@ -1,12 +1,12 @@
 #include "image/texture_image.h"
 
 #include <cmath>
-#include <csetjmp>
 #include <cstdio>
 #include <cstring>
 
-#include <jpeglib.h>
 #include <png.h>
+
+#include "image/jpeg_error.h"
 
 namespace weft {
 
@@ -51,27 +51,13 @@ TextureImage decode_png(std::span<const std::uint8_t> bytes, const std::string& 
   return out;
 }
 
-struct JpegError {
-  jpeg_error_mgr manager;
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX];
-};
-
-void jpeg_fail(j_common_ptr info) {
-  auto* e = reinterpret_cast<JpegError*>(info->err);
-  (*info->err->format_message)(info, e->message);
-  std::longjmp(e->jump, 1);
-}
-void jpeg_quiet(j_common_ptr, int) {}  // warnings (e.g. extraneous bytes) decode fine
-
-// libjpeg reports errors by its error_exit; a longjmp back here keeps them out of the caller.
-// Nothing with a destructor lives between the setjmp and the calls that may jump.
+// libjpeg reports errors by its error_exit; a longjmp back here (image/jpeg_error.h) keeps them
+// out of the caller, a truncated file among them. Nothing with a destructor lives between the
+// setjmp and the calls that may jump.
 TextureImage decode_jpeg(std::span<const std::uint8_t> bytes, const std::string& what) {
   jpeg_decompress_struct info;
-  JpegError error;
-  info.err = jpeg_std_error(&error.manager);
-  error.manager.error_exit = jpeg_fail;
-  error.manager.emit_message = jpeg_quiet;
+  jpeg_detail::ErrorManager error;
+  jpeg_detail::install(reinterpret_cast<jpeg_common_struct*>(&info), error);
   TextureImage out;
   if (setjmp(error.jump)) {
     jpeg_destroy_decompress(&info);
