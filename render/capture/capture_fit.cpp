@@ -8,6 +8,7 @@
 #include "capture/capture_card.h"
 #include "capture/capture_rejection.h"
 #include "capture/card_detection.h"
+#include "capture/card_samples.h"
 #include "capture/photo_files.h"
 
 namespace weft {
@@ -18,50 +19,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kCellMm = 6.0;
 constexpr double kMarkerClearMm = 11.0;  // the marker's 10-cell square, half diagonal and a margin
 
-// Blank paper on the card (mm), away from every print: the response's white samples, spread
-// over the image so vignetting shows.
-constexpr std::array<CardRect, 11> kPaper{{{45, 4, 85, 16}, {85, 4, 125, 16}, {125, 4, 165, 16}, {165, 4, 205, 16},
-                                            {5, 45, 44, 85}, {5, 85, 44, 125}, {212, 45, 246, 85}, {212, 95, 246, 125},
-                                            {52, 115, 102, 130}, {102, 115, 152, 130}, {152, 115, 205, 130}}};
-
 std::array<std::uint8_t, 3> code_at(const Photo& p, int x, int y) { return {p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2)}; }
-
-double radius2(const Photo& p, double x, double y) {
-  return ((x - p.width / 2.0) * (x - p.width / 2.0) + (y - p.height / 2.0) * (y - p.height / 2.0)) /
-         ((p.width * p.width + p.height * p.height) / 4.0);
-}
-
-// Every pixel whose centre maps into the card region `inside` (world point → bool), within the
-// image box of `corners` (world).
-template <class Inside, class Visit>
-void for_pixels(const Photo& p, const CardView& view, const std::vector<glm::dvec3>& corners, Inside inside, Visit visit) {
-  glm::dvec2 lo(1e30), hi(-1e30);
-  for (const auto& c : corners) {
-    const glm::dvec2 q = view.to_image(c);
-    lo = glm::min(lo, q);
-    hi = glm::max(hi, q);
-  }
-  const int x0 = std::max(0, static_cast<int>(lo.x)), x1 = std::min(p.width, static_cast<int>(hi.x) + 1);
-  const int y0 = std::max(0, static_cast<int>(lo.y)), y1 = std::min(p.height, static_cast<int>(hi.y) + 1);
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const glm::dvec3 w = view.to_world({x + 0.5, y + 0.5});
-      if (inside(w)) visit(x, y, w);
-    }
-}
-
-ResponseSample sample_rect(const Photo& p, const CardView& view, const CardRect& r, double reflectance, double margin) {
-  const CardRect in{r.x0 + margin, r.y0 + margin, r.x1 - margin, r.y1 - margin};
-  ResponseSample s;
-  s.reflectance = reflectance;
-  const std::vector<glm::dvec3> corners{card_to_world({in.x0, in.y0}), card_to_world({in.x1, in.y0}),
-                                        card_to_world({in.x1, in.y1}), card_to_world({in.x0, in.y1})};
-  for_pixels(p, view, corners, [&](const glm::dvec3& w) { return in.contains(world_to_card(w)); },
-             [&](int x, int y, const glm::dvec3&) { s.add(code_at(p, x, y)); });
-  const glm::dvec2 c = view.to_image(card_to_world(in.centre()));
-  s.r2 = radius2(p, c.x, c.y);
-  return s;
-}
 
 int distinct_turns(std::vector<double> turns) {
   // Turns closer than 20° count as one.
@@ -89,7 +47,12 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
   const auto files = list_photos(dir);
   if (files.size() < 3)
     throw CaptureRejection(dir.string() + ": " + std::to_string(files.size()) + " photos; a capture needs 3 to 8, the swatch turned between them");
-  const auto info = read_capture_info(dir / "capture.json");
+  std::optional<CaptureInfo> info;
+  try {
+    info = read_capture_info(dir / "capture.json");
+  } catch (const PhotoError& e) {
+    throw CaptureRejection(e.what());
+  }
   const std::optional<double> focal = info ? info->focal_px : std::nullopt;
   auto progress = options.open_progress ? options.open_progress("photos") : std::function<void(double)>();
 
@@ -97,20 +60,37 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
   std::vector<BallView> balls;
   const glm::dvec3 window = card_to_world(card.swatch_window.centre());
   const double radius = card.swatch_radius / 1000.0;
-  for (size_t i = 0; i < files.size(); ++i) {
-    const std::string name = files[i].filename().string();
-    Photo photo;
+  auto load = [](const std::filesystem::path& file) {
     try {
-      photo = read_photo(files[i]);
+      return read_photo(file);
     } catch (const PhotoError& e) {
       throw CaptureRejection(e.what());
     }
+  };
+  // First the cards and their grey samples: the response is fitted across all the photos.
+  std::vector<CardView> views;
+  std::vector<std::vector<ResponseSample>> samples;
+  for (size_t i = 0; i < files.size(); ++i) {
+    const std::string name = files[i].filename().string();
+    const Photo photo = load(files[i]);
     const CardView view = locate_card(photo, focal, name);
     if (view.edge_width > options.max_edge_width_px)
       throw CaptureRejection(name + ": blurred (the tags' edges are " + std::to_string(view.edge_width) +
                              " px wide; hold the camera still, focus on the card)");
     if (!view.marker_turn)
       throw CaptureRejection(name + ": the swatch marker (tag 4, cut from the card's strip) is not on the swatch");
+    samples.push_back(card_response_samples(photo, view));
+    if (usable_samples(samples.back()) < 4)
+      throw CaptureRejection(name + ": too few usable grey samples on the card (over- or under-exposed?)");
+    views.push_back(view);
+    if (progress) progress(0.5 * (i + 1) / files.size());
+  }
+  const std::vector<ResponseFit> responses = fit_shared_response(samples);
+
+  for (size_t i = 0; i < files.size(); ++i) {
+    const std::string name = files[i].filename().string();
+    const Photo photo = load(files[i]);
+    const CardView& view = views[i];
     CapturedPhoto shot;
     shot.file = name;
     shot.turn = *view.marker_turn;
@@ -119,15 +99,7 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     shot.edge_width_px = view.edge_width;
     shot.focal_estimated = view.focal_estimated;
     shot.camera_centre = view.camera.C;
-
-    std::vector<ResponseSample> samples;
-    for (const GreyPatch& g : card.patches) samples.push_back(sample_rect(photo, view, g.rect, g.reflectance, 2.5));
-    for (const CardRect& r : kPaper) samples.push_back(sample_rect(photo, view, r, card.paper_reflectance, 1.0));
-    try {
-      shot.response = fit_response(samples);
-    } catch (const std::runtime_error& e) {
-      throw CaptureRejection(name + ": " + e.what() + " (over- or under-exposed?)");
-    }
+    shot.response = responses[i];
     const ResponseModel& response = shot.response.model;
 
     // The swatch's cells: mean relative value and where they were seen from.
@@ -138,7 +110,7 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     auto near_marker = [&](const glm::dvec3& w) { return glm::length(w - view.marker_centre) * 1000.0 < kMarkerClearMm; };
     const std::vector<glm::dvec3> box{window + glm::dvec3(-radius, -radius, 0), window + glm::dvec3(radius, -radius, 0),
                                       window + glm::dvec3(radius, radius, 0), window + glm::dvec3(-radius, radius, 0)};
-    for_pixels(photo, view, box, [&](const glm::dvec3& w) { return glm::length(w - window) < radius && !near_marker(w); },
+    for_card_pixels(photo, view, box, [&](const glm::dvec3& w) { return glm::length(w - window) < radius && !near_marker(w); },
                [&](int x, int y, const glm::dvec3& w) {
                  const auto code = code_at(photo, x, y);
                  ++pixels;
@@ -146,7 +118,7 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
                  const int cx = std::clamp(static_cast<int>((w.x - window.x + radius) * 1000.0 / kCellMm), 0, cells_per_side - 1);
                  const int cy = std::clamp(static_cast<int>((w.y - window.y + radius) * 1000.0 / kCellMm), 0, cells_per_side - 1);
                  const size_t c = static_cast<size_t>(cy) * cells_per_side + cx;
-                 sum[c] += response.relative(code, radius2(photo, x + 0.5, y + 0.5));
+                 sum[c] += response.relative(code, image_radius2(photo, x + 0.5, y + 0.5));
                  where[c] += w;
                  ++count[c];
                });
@@ -171,15 +143,26 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
         const glm::dvec3 w = window + glm::dvec3((px + 0.5) / kPanel * 2 * radius - radius, radius - (py + 0.5) / kPanel * 2 * radius, 0);
         const glm::dvec2 q = view.to_image(w);
         const int x = std::clamp(static_cast<int>(q.x), 0, photo.width - 1), y = std::clamp(static_cast<int>(q.y), 0, photo.height - 1);
-        shot.panel[py * kPanel + px] = response.relative(code_at(photo, x, y), radius2(photo, x + 0.5, y + 0.5));
+        shot.panel[py * kPanel + px] = response.relative(code_at(photo, x, y), image_radius2(photo, x + 0.5, y + 0.5));
         shot.panel_marker[py * kPanel + px] = near_marker(w);
       }
 
-    BallView ball = read_ball(photo, view, response);
+    // The ball's darker exposures, when the photographer bracketed it.
+    const std::vector<BracketFile> bracket_files = list_brackets(files[i]);
+    std::vector<Photo> brackets;
+    for (const BracketFile& b : bracket_files) {
+      brackets.push_back(load(b.file));
+      if (brackets.back().width != photo.width || brackets.back().height != photo.height)
+        throw CaptureRejection(b.file.filename().string() + ": not the size of " + name + ", which it brackets");
+    }
+    std::vector<BallExposure> exposures{{&photo, 0.0}};
+    for (size_t k = 0; k < brackets.size(); ++k) exposures.push_back({&brackets[k], bracket_files[k].ev});
+    BallView ball = read_ball(exposures, view, response);
+    shot.brackets = static_cast<int>(brackets.size());
     shot.ball_clipped = ball.clipped_fraction;
     balls.push_back(std::move(ball));
     result.photos.push_back(std::move(shot));
-    if (progress) progress(static_cast<double>(i + 1) / files.size());
+    if (progress) progress(0.5 + 0.5 * (i + 1) / files.size());
   }
   std::vector<double> turns;
   for (const auto& p : result.photos) turns.push_back(p.turn);

@@ -1,9 +1,10 @@
 #pragma once
-// `weft capture DIR`: the whole fit of a capture folder. Per photo: the card (card_detection.h),
-// its response from the grey patches and the paper (response_calibration.h), the swatch's cells
-// and the mirror ball read through them; then the lighting from every ball (capture_lighting.h)
-// and the fabric (fabric_fit.h). Unusable input is a CaptureRejection: the card not found, the
-// swatch marker missing, a blurred or saturated photo, fewer than three photos or swatch turns.
+// `weft capture DIR`: the whole fit of a capture folder. Per photo: the card (card_detection.h)
+// and its grey patches and paper (card_samples.h); the response, fitted across every photo
+// (response_calibration.h); per photo again, the swatch's cells and the mirror ball read through
+// it; then the lighting from every ball (capture_lighting.h) and the fabric (fabric_fit.h).
+// Unusable input is a CaptureRejection: the card not found, the swatch marker missing, a blurred
+// or saturated photo, fewer than three photos or swatch turns.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -23,7 +24,8 @@ struct CapturedPhoto {
   double edge_width_px = 0;
   bool focal_estimated = false;
   ResponseFit response;
-  double ball_clipped = 0;
+  int brackets = 0;           // darker exposures of the ball beside it
+  double ball_clipped = 0;    // the ball's pixels clipped in every exposure
   int cells = 0;
   glm::dvec3 camera_centre{0.0};
   // The rectified swatch, kPanel × kPanel over ±30 mm around the window's centre (world axes,

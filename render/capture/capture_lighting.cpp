@@ -7,14 +7,14 @@
 
 #include "camera/hdr_merge.h"
 #include "capture/capture_card.h"
-#include "lighting/sg_fit.h"
+#include "capture/light_cells.h"
 #include "probe/mirror_ball_unwrap.h"
-#include "reference/environment_samples.h"
 
 namespace weft {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+constexpr int kBallClip = 240;
 
 glm::dvec3 irradiance_up(const EnvMap& map) {
   glm::dvec3 e(0);
@@ -27,7 +27,9 @@ glm::dvec3 irradiance_up(const EnvMap& map) {
 }
 }  // namespace
 
-BallView read_ball(const Photo& photo, const CardView& view, const ResponseModel& response) {
+BallView read_ball(const std::vector<BallExposure>& exposures, const CardView& view, const ResponseModel& response) {
+  if (exposures.empty()) throw std::invalid_argument("read_ball: no exposures");
+  const Photo& photo = *exposures[0].photo;
   const CaptureCard& card = capture_card();
   const CardCamera& cam = view.camera;
   const double R = card.ball_radius / 1000.0;
@@ -43,14 +45,28 @@ BallView read_ball(const Photo& photo, const CardView& view, const ResponseModel
   const int y0 = std::max(0, static_cast<int>(centre->y - r_px - 2)), y1 = std::min(photo.height, static_cast<int>(centre->y + r_px + 3));
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
-      const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
       const double r2 = ((x + 0.5 - photo.width / 2.0) * (x + 0.5 - photo.width / 2.0) +
                          (y + 0.5 - photo.height / 2.0) * (y + 0.5 - photo.height / 2.0)) / half_diag2;
-      image.radiance[static_cast<size_t>(y) * photo.width + x] = glm::vec3(response.relative(code, r2));
+      // Each exposure's value scaled back to the photo's, weighted by its exposure squared (the
+      // codes' noise is about constant, so a longer exposure measures better); clipped codes, and
+      // JPEG's ringing just below them, say only that the value is higher.
+      glm::dvec3 sum(0);
+      double weight = 0;
+      glm::dvec3 darkest(0);
+      for (const BallExposure& e : exposures) {
+        const std::array<std::uint8_t, 3> code{e.photo->at(x, y, 0), e.photo->at(x, y, 1), e.photo->at(x, y, 2)};
+        const double t = std::exp2(e.ev);
+        darkest = response.relative(code, r2) / t;
+        if (std::max({code[0], code[1], code[2]}) >= kBallClip) continue;
+        sum += t * t * darkest;
+        weight += t * t;
+      }
+      const bool all_clipped = weight == 0;
+      image.radiance[static_cast<size_t>(y) * photo.width + x] = glm::vec3(all_clipped ? darkest : sum / weight);
       const double a = (x + 0.5 - centre->x) / r_px, b = (y + 0.5 - centre->y) / r_px;
       if (a * a + b * b < 1) {
         ++on_ball;
-        clipped += std::max({code[0], code[1], code[2]}) >= 250;
+        clipped += all_clipped;
       }
     }
   // Unwrapped in the ball's camera convention (camera/mirror_ball.h), then turned into the world:
@@ -69,7 +85,7 @@ BallView read_ball(const Photo& photo, const CardView& view, const ResponseModel
   return out;
 }
 
-CaptureLighting capture_lighting(const std::vector<BallView>& balls, int sg_count) {
+CaptureLighting capture_lighting(const std::vector<BallView>& balls, const LightCellOptions& cells) {
   if (balls.empty()) throw std::invalid_argument("capture_lighting: no ball views");
   CaptureLighting out;
   out.map = EnvMap(balls[0].map.width, balls[0].map.height);
@@ -78,24 +94,9 @@ CaptureLighting capture_lighting(const std::vector<BallView>& balls, int sg_coun
   const glm::dvec3 e = irradiance_up(out.map);
   const glm::dvec3 to_units = kPi / glm::max(e, glm::dvec3(1e-9));
   for (auto& t : out.map.texels) t *= glm::vec3(to_units);
-  SgFitOptions fit;
-  fit.count = sg_count;
-  fit.grid_width = 128;
-  out.sgs = fit_sgs(out.map, fit);
-  // The SGs as directional lights: their map cut into cells, each at its power's centroid.
-  EnvMap sg_map(256, 128);
-  for (int y = 0; y < sg_map.height; ++y)
-    for (int x = 0; x < sg_map.width; ++x) sg_map.at(x, y) = glm::vec3(evaluate(out.sgs, sg_map.direction(x, y)));
-  glm::dvec3 e_sg(0);
-  for (const DirectionalSample& s : environment_samples(sg_map, 32))
-    if (s.direction.z > 0) {
-      out.lights.push_back({s.direction, s.power});
-      e_sg += s.power * s.direction.z;
-    }
-  // The fit keeps the card's irradiance, which the grey patches measured, exactly.
-  const glm::dvec3 fix = kPi / glm::max(e_sg, glm::dvec3(1e-9));
-  for (auto& l : out.lights) l.power *= fix;
-  for (auto& g : out.sgs) g.amplitude *= fix;
+  // The ball's own radiance as directional lights, as the reference renderer takes a map: a
+  // sharp highlight keeps its direction and spread, which a few SGs would blur.
+  out.lights = light_cells(out.map, cells);
   return out;
 }
 

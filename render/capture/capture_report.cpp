@@ -56,7 +56,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     capture["photos"].push_back({{"file", p.file}, {"turn_deg", glm::degrees(p.turn)}, {"cells", p.cells},
                                  {"corner_tags", p.corner_tags}, {"reprojection_px", p.reprojection_px},
                                  {"edge_width_px", p.edge_width_px}, {"response_beta", p.response.model.beta},
-                                 {"vignetting", p.response.model.vignetting}, {"ball_clipped", p.ball_clipped}});
+                                 {"vignetting", p.response.model.vignetting}, {"ball_brackets", p.brackets},
+                                 {"ball_clipped", p.ball_clipped}});
   if (check)
     capture["appearance_check"] = {{"map", check->map}, {"truth", check->truth}, {"views", check->views},
                                    {"relative_rmse", check->relative_rmse}};

@@ -24,6 +24,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kSwatchHalf = 0.035;  // a 70 mm swatch
 constexpr int kClothGrid = 9;          // view points across the swatch per side
+constexpr int kBracketStep = 3;        // stops between the ball's bracketed exposures
+constexpr int kMaxBrackets = 6;
 
 // The camera that simulations stand in for.
 struct TrueCamera {
@@ -32,6 +34,9 @@ struct TrueCamera {
   double shot_noise = 1.0 / 3000.0;  // variance per unit linear value
   double read_noise = 0.002;
   int jpeg_quality = 90;
+  // Full colour resolution: halved, it tints a lamp a few pixels wide on the ball toward grey
+  // (docs/capture.md asks for a camera's 4:4:4 setting or PNG).
+  JpegChroma jpeg_chroma = JpegChroma::full;
 };
 
 struct Lights {
@@ -174,54 +179,90 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
     mock.seed = options.seed * 131 + i;
     MockProbeSource ball_camera(map_in_ball_frame(map, cam, ball), mock);
     ball_camera.open();
-    const ProbeFrame ball_frame = ball_camera.capture(ProbeExposure{1.0, 1.0});
-    auto ball_linear = [&](int x, int y) {
-      const int bx = std::clamp(x - ox, 0, box - 1), by = std::clamp(y - oy, 0, box - 1);
-      const size_t q = (static_cast<size_t>(by) * box + bx) * 3;
-      return glm::dvec3(mock.calibration.response.decode(ball_frame.rgb[q]), mock.calibration.response.decode(ball_frame.rgb[q + 1]),
-                        mock.calibration.response.decode(ball_frame.rgb[q + 2]));
-    };
-
-    Photo photo{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 3)};
     const CameraResponse curve = truth_cam.response.curve();
     const double half_diag2 = (w * w + h * h) / 4.0;
+    // The photo at `exposure` times the metered one: the card and cloth scaled, the ball as the
+    // mock camera takes it at that exposure (clipping where it does).
+    auto shoot = [&](double exposure, int shot_index, bool count_progress) {
+      const ProbeFrame ball_frame = ball_camera.capture(ProbeExposure{exposure, 1.0});
+      auto ball_linear = [&](int x, int y) {
+        const int bx = std::clamp(x - ox, 0, box - 1), by = std::clamp(y - oy, 0, box - 1);
+        const size_t q = (static_cast<size_t>(by) * box + bx) * 3;
+        return glm::dvec3(mock.calibration.response.decode(ball_frame.rgb[q]), mock.calibration.response.decode(ball_frame.rgb[q + 1]),
+                          mock.calibration.response.decode(ball_frame.rgb[q + 2]));
+      };
+      Photo photo{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 3)};
 #pragma omp parallel for schedule(dynamic, 8)
-    for (int y = 0; y < h; ++y) {
-      std::mt19937_64 noise_rng(options.seed * 7919 + static_cast<std::uint64_t>(i) * 100003 + y);
-      std::normal_distribution<double> unit(0.0, 1.0);
-      for (int x = 0; x < w; ++x) {
-        // 2×2 samples: tag edges need their partial pixels for the detector's edge fit.
-        glm::dvec3 linear(0);
-        int on_ball = 0;
-        for (int s = 0; s < 4; ++s) {
-          const double sx = x + 0.25 + 0.5 * (s & 1), sy = y + 0.25 + 0.5 * (s >> 1);
-          const glm::dvec3 d = cam.ray(sx, sy);
-          if (sphere_hit(cam.C, d, ball, ball_r)) {
-            ++on_ball;
-            continue;
+      for (int y = 0; y < h; ++y) {
+        std::mt19937_64 noise_rng(options.seed * 7919 + static_cast<std::uint64_t>(shot_index) * 100003 + y);
+        std::normal_distribution<double> unit(0.0, 1.0);
+        for (int x = 0; x < w; ++x) {
+          // 2×2 samples: tag edges need their partial pixels for the detector's edge fit.
+          glm::dvec3 linear(0);
+          int on_ball = 0;
+          for (int s = 0; s < 4; ++s) {
+            const double sx = x + 0.25 + 0.5 * (s & 1), sy = y + 0.25 + 0.5 * (s >> 1);
+            const glm::dvec3 d = cam.ray(sx, sy);
+            if (sphere_hit(cam.C, d, ball, ball_r)) {
+              ++on_ball;
+              continue;
+            }
+            if (const auto p = cam.on_card(sx, sy)) linear += exposure * k * plane_radiance(*p);
           }
-          if (const auto p = cam.on_card(sx, sy)) linear += k * plane_radiance(*p);
+          linear = (linear + static_cast<double>(on_ball) * ball_linear(x, y)) / 4.0;
+          const double r2 = ((x + 0.5 - w / 2.0) * (x + 0.5 - w / 2.0) + (y + 0.5 - h / 2.0) * (y + 0.5 - h / 2.0)) / half_diag2;
+          linear *= truth_cam.white_balance * (1.0 - truth_cam.response.vignetting * r2);
+          for (int c = 0; c < 3; ++c) {
+            const double sigma = std::sqrt(std::max(linear[c], 0.0) * truth_cam.shot_noise + truth_cam.read_noise * truth_cam.read_noise);
+            photo.rgb[(static_cast<size_t>(y) * w + x) * 3 + c] = curve.encode(linear[c] + sigma * unit(noise_rng));
+          }
         }
-        linear = (linear + static_cast<double>(on_ball) * ball_linear(x, y)) / 4.0;
-        const double r2 = ((x + 0.5 - w / 2.0) * (x + 0.5 - w / 2.0) + (y + 0.5 - h / 2.0) * (y + 0.5 - h / 2.0)) / half_diag2;
-        linear *= truth_cam.white_balance * (1.0 - truth_cam.response.vignetting * r2);
-        for (int c = 0; c < 3; ++c) {
-          const double sigma = std::sqrt(std::max(linear[c], 0.0) * truth_cam.shot_noise + truth_cam.read_noise * truth_cam.read_noise);
-          photo.rgb[(static_cast<size_t>(y) * w + x) * 3 + c] = curve.encode(linear[c] + sigma * unit(noise_rng));
-        }
-      }
-      const int done = ++rows_done;
-      if (options.progress && done % 64 == 0) {
+        if (count_progress) {
+          const int done = ++rows_done;
+          if (options.progress && done % 64 == 0) {
 #pragma omp critical
-        options.progress(static_cast<double>(done) / rows_total);
+            options.progress(static_cast<double>(done) / rows_total);
+          }
+        }
       }
+      // The ball's pixels that a fit would take as clipped (capture_lighting.cpp's threshold).
+      int ball_clipped = 0;
+      for (int y = std::max(0, oy); y < std::min(h, oy + box); ++y)
+        for (int x = std::max(0, ox); x < std::min(w, ox + box); ++x) {
+          const double a = (x + 0.5 - ball_px->x) / r_px, b = (y + 0.5 - ball_px->y) / r_px;
+          const std::uint8_t* q = &photo.rgb[(static_cast<size_t>(y) * w + x) * 3];
+          ball_clipped += a * a + b * b < 1 && std::max({q[0], q[1], q[2]}) >= 240;
+        }
+      return std::pair(std::move(photo), ball_clipped);
+    };
+    // The photographer's exposure: whole stops down from the metered one until the swatch's
+    // brightest point sits below 90 % of full scale (a satin facing a lamp outshines the paper
+    // many times; the fit refuses a clipped swatch).
+    double peak = 0;
+    for (const glm::dvec3& c : cloth) {
+      const glm::dvec3 linear = k * c * truth_cam.white_balance;
+      peak = std::max({peak, linear.r, linear.g, linear.b});
     }
+    const int stops_down = peak > 0.9 ? std::min(10, static_cast<int>(std::ceil(std::log2(peak / 0.9)))) : 0;
+    const double exposure = std::exp2(-stops_down);
     char name[32];
     std::snprintf(name, sizeof name, "photo_%02d.jpg", i + 1);
-    write_jpeg(photo, dir / name, truth_cam.jpeg_quality);
+    auto [photo, clipped] = shoot(exposure, i, true);
+    write_jpeg(photo, dir / name, truth_cam.jpeg_quality, truth_cam.jpeg_chroma);
+    // Darker exposures, kBracketStep stops apart, until the ball's highlights are no longer
+    // clipped, as a photographer brackets them.
+    int brackets = 0;
+    for (int ev = -kBracketStep; options.bracket_ball && clipped > 0 && ev >= -kBracketStep * kMaxBrackets; ev -= kBracketStep) {
+      auto [dark, dark_clipped] = shoot(exposure * std::exp2(ev), i + options.photos * (-ev / kBracketStep), false);
+      write_jpeg(dark, bracket_path(dir / name, ev), truth_cam.jpeg_quality, truth_cam.jpeg_chroma);
+      clipped = dark_clipped;
+      ++brackets;
+    }
     nlohmann::ordered_json shot;
     shot["file"] = name;
     shot["turn_deg"] = glm::degrees(turn);
+    shot["ball_brackets"] = brackets;
+    shot["exposure_stops"] = -stops_down;
     shot["camera_centre"] = {cam.C.x, cam.C.y, cam.C.z};
     truth["photos"].push_back(shot);
   }

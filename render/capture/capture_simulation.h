@@ -7,9 +7,11 @@
 //  - the card, the marker and the table: Lambertian under the map's irradiance at +Z;
 //  - the mirror ball: drawn by the mock probe camera (probe/mock_probe_source.h) in the map turned
 //    into that camera's frame;
-//  - then the camera: vignetting, sensor noise, a response curve about sRGB, white balance, JPEG.
-// It writes only what a real capture has: the photos and capture.json. The truth goes to its own
-// file when asked.
+//  - then the camera: vignetting, sensor noise, a response curve about sRGB, white balance, JPEG;
+//  - while the ball's highlights clip, the same photo 3, 6, … stops darker (photo_files.h's
+//    brackets), as a photographer brackets the exposure.
+// It writes only what a real capture has: the photos, their brackets and capture.json. The truth
+// goes to its own file when asked.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -31,6 +33,7 @@ struct CaptureSimulationOptions {
   int tangent_samples = 32;    // N_j per thread (docs/design.md §2: ≥ 32 for ground truth)
   int light_cells = 64;        // the map's directional samples: light_cells × light_cells/2
   bool record_focal = true;    // capture.json carries the focal length (a camera's EXIF)
+  bool bracket_ball = true;    // darker exposures beside each photo while the ball clips
   std::function<void(double)> progress;
 };
 
@@ -42,7 +45,7 @@ std::vector<FitLight> simulated_swatch_lights(const EnvMap& map, int light_cells
 // swatch's frame under those lights. The photos' swatch pixels are drawn from this.
 glm::dvec3 simulated_swatch_radiance(ClothBsdf::Point& point, const std::vector<FitLight>& lights, const glm::dvec3& wo);
 
-// Writes DIR/photo_<i>.jpg and DIR/capture.json (DIR is created); the truth (fabric, turns,
+// Writes DIR/photo_<i>.jpg, its brackets and DIR/capture.json (DIR is created); the truth (fabric, turns,
 // cameras, response) as JSON to `truth_out` when given.
 void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimulationOptions& options,
                       const std::filesystem::path& dir, const std::optional<std::filesystem::path>& truth_out = {});

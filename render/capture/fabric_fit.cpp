@@ -9,6 +9,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "capture/fit_uncertainty.h"
 #include "core/cloth_bsdf.h"
 #include "core/fresnel.h"
 
@@ -138,6 +139,9 @@ double to_z(int i, double v) {
 
 constexpr double kHuber = 2.0;
 constexpr double kPriorWeight = 0.5;
+// 1σ of a level error common to every cell, per channel (the response's scale, the ball's
+// calibration): taken as the 2 % a cell's residual unit allows.
+constexpr double kLevelSigma = 0.02;
 
 struct Residuals {
   using Scalar = double;
@@ -255,15 +259,18 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
           rel += d * d;
         }
       best.rms_relative = std::sqrt(rel / (3.0 * g.observations));
-      // 1σ: the Gauss–Newton covariance of the plain least-squares problem at the optimum, scaled
-      // by its residual variance, carried through the logistic maps.
+      // 1σ (fit_uncertainty.h), carried through the logistic maps.
       r.robust = false;
       Eigen::MatrixXd J(r.values(), kParams);
       diff.df(z, J);
       Eigen::VectorXd f2(r.values());
       r(z, f2);
-      const double s2 = f2.squaredNorm() / std::max(1, r.values() - kParams);
-      const Eigen::MatrixXd cov = (J.transpose() * J + 1e-9 * Eigen::MatrixXd::Identity(kParams, kParams)).inverse() * s2;
+      std::array<Eigen::VectorXd, 3> level;
+      for (int c = 0; c < 3; ++c) {
+        level[c] = Eigen::VectorXd::Zero(r.values());
+        for (int o = 0; o < g.observations; ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
+      }
+      const Eigen::MatrixXd cov = fit_covariance(J, f2, level, kLevelSigma);
       for (int j = 0; j < 2; ++j) {
         double sd[6];
         for (int i = 0; i < 6; ++i) {

@@ -2,39 +2,28 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <regex>
+#include <span>
+#include <system_error>
 
-#include <jpeglib.h>
 #include <nlohmann/json.hpp>
 
+#include "files/atomic_file.h"
 #include "image/texture_image.h"
 
 namespace weft {
 
-void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quality) {
-  std::FILE* out = std::fopen(file.c_str(), "wb");
-  if (!out) throw PhotoError(file.string() + ": cannot write");
-  jpeg_compress_struct info;
-  jpeg_error_mgr error;
-  info.err = jpeg_std_error(&error);
-  jpeg_create_compress(&info);
-  jpeg_stdio_dest(&info, out);
-  info.image_width = static_cast<JDIMENSION>(photo.width);
-  info.image_height = static_cast<JDIMENSION>(photo.height);
-  info.input_components = 3;
-  info.in_color_space = JCS_RGB;
-  jpeg_set_defaults(&info);
-  jpeg_set_quality(&info, quality, TRUE);
-  jpeg_start_compress(&info, TRUE);
-  while (info.next_scanline < info.image_height) {
-    JSAMPROW row = const_cast<JSAMPROW>(photo.rgb.data() + static_cast<size_t>(info.next_scanline) * photo.width * 3);
-    jpeg_write_scanlines(&info, &row, 1);
+void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quality, JpegChroma chroma) {
+  try {
+    const std::vector<std::uint8_t> bytes = encode_jpeg(photo.rgb, photo.width, photo.height, quality, chroma);
+    write_file_atomically(file, std::as_bytes(std::span(bytes)));
+  } catch (const JpegEncodeError& e) {
+    throw PhotoError(file.string() + ": " + e.what());
+  } catch (const std::system_error& e) {
+    throw PhotoError(file.string() + ": cannot write (" + e.what() + ")");
   }
-  jpeg_finish_compress(&info);
-  jpeg_destroy_compress(&info);
-  if (std::fclose(out) != 0) throw PhotoError(file.string() + ": cannot write");
 }
 
 Photo read_photo(const std::filesystem::path& file) {
@@ -53,15 +42,46 @@ Photo read_photo(const std::filesystem::path& file) {
   return photo;
 }
 
+namespace {
+
+bool is_photo(const std::filesystem::directory_entry& entry) {
+  std::string ext = entry.path().extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return entry.is_regular_file() && (ext == ".jpg" || ext == ".jpeg" || ext == ".png");
+}
+
+// "<stem>_ev<N>": the stem of the photo it brackets and N.
+std::optional<std::pair<std::string, double>> bracket_of(const std::filesystem::path& file) {
+  static const std::regex pattern(R"((.+)_ev([+-]?[0-9]+(\.[0-9]+)?))");
+  std::smatch m;
+  const std::string stem = file.stem().string();
+  if (!std::regex_match(stem, m, pattern)) return std::nullopt;
+  return std::pair(m[1].str(), std::stod(m[2].str()));
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> list_photos(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    std::string ext = entry.path().extension().string();
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (entry.is_regular_file() && (ext == ".jpg" || ext == ".jpeg" || ext == ".png")) files.push_back(entry.path());
-  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (is_photo(entry) && !bracket_of(entry.path())) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+std::vector<BracketFile> list_brackets(const std::filesystem::path& photo) {
+  std::vector<BracketFile> out;
+  const std::filesystem::path dir = photo.has_parent_path() ? photo.parent_path() : std::filesystem::path(".");
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (is_photo(entry))
+      if (const auto b = bracket_of(entry.path()); b && b->first == photo.stem().string())
+        out.push_back({entry.path(), b->second});
+  std::sort(out.begin(), out.end(), [](const BracketFile& a, const BracketFile& b) { return a.ev > b.ev; });
+  return out;
+}
+
+std::filesystem::path bracket_path(const std::filesystem::path& photo, int ev) {
+  return photo.parent_path() / (photo.stem().string() + "_ev" + (ev > 0 ? "+" : "") + std::to_string(ev) + photo.extension().string());
 }
 
 void write_capture_info(const CaptureInfo& info, const std::filesystem::path& file) {

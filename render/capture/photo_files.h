@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "image/jpeg_encode.h"
+
 namespace weft {
 
 struct Photo {
@@ -27,10 +29,24 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quality = 90);
+// Replaces `file` atomically (a reader sees the old photo or the whole new one). Throws PhotoError.
+void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quality = 90,
+                JpegChroma chroma = JpegChroma::halved);
+// Throws PhotoError for an unreadable, corrupt or truncated file.
 Photo read_photo(const std::filesystem::path& file);
-// The photos of a capture folder (*.jpg, *.jpeg, *.png), sorted by name.
+// The photos of a capture folder (*.jpg, *.jpeg, *.png), sorted by name, their brackets left out.
 std::vector<std::filesystem::path> list_photos(const std::filesystem::path& dir);
+
+// A photo's darker exposures for the mirror ball's highlights (a camera's exposure bracketing,
+// shot from the same pose right after it): <stem>_ev-3.jpg, <stem>_ev-6.jpg, … beside
+// <stem>.jpg, the number being the exposure in stops relative to the photo.
+struct BracketFile {
+  std::filesystem::path file;
+  double ev = 0;
+};
+// The brackets beside `photo`, brightest first.
+std::vector<BracketFile> list_brackets(const std::filesystem::path& photo);
+std::filesystem::path bracket_path(const std::filesystem::path& photo, int ev);
 
 void write_capture_info(const CaptureInfo& info, const std::filesystem::path& file);
 // capture.json, or nothing when the folder has none.

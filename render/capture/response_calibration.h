@@ -5,8 +5,13 @@
 //   linear(z, r) = s_c⁻¹ · srgb⁻¹(z/255)^β / (1 − v·r²),   linear = ρ·E/π in the lighting's units,
 // a curve β about sRGB (a camera's ISP curve is near it, not on it), the lens's vignetting v
 // (r: distance from the image centre over the half diagonal) and a per-channel scale s_c that
-// holds exposure, white balance and E. Fitted by a grid over (β, v) with s_c solved in closed form,
-// on log values: the darkest patch counts as much as the paper.
+// holds exposure, white balance and E. Fitted by a grid over (β, v), refined on a finer grid
+// about the best, with s_c solved in closed form, on log values, each sample alike: the darkest
+// patch counts as much as a paper cell. The photos of one capture share a camera and lens, so β
+// and v are fitted across all of them (the card spans only the image's middle: one photo's paper
+// barely shows v), each photo keeping its own s_c (exposure and white balance may change between shots). Samples that
+// disagree with the fit by far more than the rest (a shadow, a smudge on the paper) are dropped
+// once and the fit repeated.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -48,7 +53,14 @@ struct ResponseFit {
   int samples_used = 0;
 };
 
-// Throws std::runtime_error when fewer than four samples are usable (unclipped, not black).
+// The samples a fit can use: unclipped and not near black.
+int usable_samples(const std::vector<ResponseSample>& samples);
+
+// One photo's fit. Throws std::runtime_error when fewer than four samples are usable.
 ResponseFit fit_response(const std::vector<ResponseSample>& samples);
+
+// The photos' fits with β and v shared, in the order of `photos` (each a photo's samples).
+// Throws std::runtime_error when a photo has fewer than four usable samples.
+std::vector<ResponseFit> fit_shared_response(const std::vector<std::vector<ResponseSample>>& photos);
 
 }  // namespace weft

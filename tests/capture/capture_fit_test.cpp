@@ -1,7 +1,7 @@
 // `weft capture` end to end: photos of two presets simulated under one map, fitted back. The weave
 // family must come back, each thread's colour A within ΔE2000 ≤ 3, and the fitted fabric under
 // another map within 5 % relative RMSE of the truth; a folder of photos with no card in them must
-// be rejected with exit code 2.
+// be rejected with exit code 2, and so must one with a truncated photo.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -156,34 +156,45 @@ FitErrors simulate_and_fit(const std::string& preset, bool check_colours) {
     std::printf("%s thread %d: ΔE2000 %.2f (A %.4f %.4f %.4f, truth %.4f %.4f %.4f)\n", preset.c_str(), j + 1, de,
                 got.threads[j].albedo.r, got.threads[j].albedo.g, got.threads[j].albedo.b, truth.threads[j].albedo.r,
                 truth.threads[j].albedo.g, truth.threads[j].albedo.b);
-    if (check_colours) EXPECT_LE(de, 3.0) << preset << " thread " << j + 1;
+    if (check_colours) {
+      EXPECT_LE(de, 3.0) << preset << " thread " << j + 1;
+    }
     errors.delta_e[j] = de;
   }
   fs::remove_all(dir);
   return errors;
 }
 
-TEST(CaptureFit, LinenWeaveFamilyComesBack) {
-  // Both threads of the fitted linen within ΔE2000 ≤ 6, and its appearance under another map within
-  // 0.2 relative RMSE, about 2.5× what the fit gives (0.082); the issue's targets, 3 and 5 %, are
-  // the disabled test below.
-  const FitErrors e = simulate_and_fit("linen_plain", false);
-  EXPECT_LE(std::max(e.delta_e[0], e.delta_e[1]), 6.0);
-  EXPECT_LT(e.appearance, 0.2);
+TEST(CaptureFit, LinenWithinTheIssuesTargets) {
+  // Both threads of the fitted linen within ΔE2000 ≤ 3 (the fit gives 1.0 and 1.2) and its
+  // appearance under another map within 5 % relative RMSE (the fit gives 2.5 %).
+  const FitErrors e = simulate_and_fit("linen_plain", true);
+  EXPECT_LT(e.appearance, 0.05);
 }
 
-// The issue's acceptance: two presets, family and thread colours within ΔE2000 ≤ 3, and each under
-// another map within 5 % relative RMSE. Not met yet (linen's warp is 4.6 off; shot silk is fitted
-// as linen), so it runs only when asked: capture_fit_test --gtest_also_run_disabled_tests.
-TEST(CaptureFit, DISABLED_TwoPresetsWithinDeltaE3) {
-  for (const char* preset : {"linen_plain", "silk_shot"}) EXPECT_LT(simulate_and_fit(preset, true).appearance, 0.05) << preset;
-}
+// The issue's acceptance for a second preset: shot silk's family and its appearance under
+// another map are within the targets (2.8 %), its dominant warp's colour too (ΔE 2.2), its sparse
+// weft's colour not (ΔE 8.2: 14 % of the swatch), so it runs only when asked:
+// capture_fit_test --gtest_also_run_disabled_tests.
+TEST(CaptureFit, DISABLED_ShotSilkWithinDeltaE3) { EXPECT_LT(simulate_and_fit("silk_shot", true).appearance, 0.05); }
 
 TEST(CaptureRejects, PhotosWithoutTheCard) {
   const fs::path dir = scratch("no_card");
   // Three photos of a plain grey table: no tags anywhere.
   weft::Photo grey{640, 480, std::vector<std::uint8_t>(640 * 480 * 3, 90)};
   for (int i = 0; i < 3; ++i) weft::write_jpeg(grey, dir / ("photo_0" + std::to_string(i + 1) + ".jpg"));
+  EXPECT_EQ(run("capture " + dir.string() + " --out " + (dir / "fitted.json").string() + " 2>/dev/null"), 2);
+  EXPECT_FALSE(fs::exists(dir / "fitted.json"));
+  fs::remove_all(dir);
+}
+
+TEST(CaptureRejects, TruncatedPhoto) {
+  const fs::path dir = scratch("truncated");
+  weft::Photo grey{640, 480, std::vector<std::uint8_t>(640 * 480 * 3, 90)};
+  for (int i = 0; i < 3; ++i) weft::write_jpeg(grey, dir / ("photo_0" + std::to_string(i + 1) + ".jpg"));
+  const fs::path cut = dir / "photo_02.jpg";
+  const auto size = fs::file_size(cut);
+  fs::resize_file(cut, size / 2);
   EXPECT_EQ(run("capture " + dir.string() + " --out " + (dir / "fitted.json").string() + " 2>/dev/null"), 2);
   EXPECT_FALSE(fs::exists(dir / "fitted.json"));
   fs::remove_all(dir);
