@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""weft capture on captures nobody tuned for: every opaque preset and random fabrics within the
+presets' ranges, each simulated under one map and checked under another. Per case: the weave
+family found, each thread's colour A (albedo × albedo_scale) against the truth in ΔE2000, the
+fitted fabric's relative RMSE against the truth under the other map, the fit's wall time.
+
+    tests/capture/capture_sweep.py --random 4 --out docs/capture/sweep.md     # ~10 min on 2 cores
+
+A benchmark (ctest label bench): the issue's figures are ≤ 5 % RMSE, ΔE ≤ 3, the family right.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+MAPS = ["interior", "courtyard", "studio", "city"]
+
+
+def lab(rgb):
+    """Linear sRGB (D65) to CIE L*a*b*."""
+    r, g, b = rgb
+    x = 0.4124564 * r + 0.3575761 * g + 0.1804375 * b
+    y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b
+    z = 0.0193339 * r + 0.1191920 * g + 0.9503041 * b
+    f = lambda t: t ** (1 / 3) if t > 216 / 24389 else (24389 / 27 * t + 16) / 116
+    fx, fy, fz = f(x / 0.95047), f(y), f(z / 1.08883)
+    return 116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)
+
+
+def delta_e2000(c1, c2):
+    """CIEDE2000 (Sharma, Wu, Dalal 2005), k_L = k_C = k_H = 1."""
+    (L1, a1, b1), (L2, a2, b2) = c1, c2
+    cbar = (math.hypot(a1, b1) + math.hypot(a2, b2)) / 2
+    g = 0.5 * (1 - math.sqrt(cbar ** 7 / (cbar ** 7 + 25 ** 7)))
+    a1p, a2p = (1 + g) * a1, (1 + g) * a2
+    c1p, c2p = math.hypot(a1p, b1), math.hypot(a2p, b2)
+    hue = lambda b, a: 0.0 if a == 0 and b == 0 else math.degrees(math.atan2(b, a)) % 360
+    h1, h2 = hue(b1, a1p), hue(b2, a2p)
+    dh = 0.0
+    if c1p * c2p:
+        dh = h2 - h1
+        dh = dh - 360 if dh > 180 else dh + 360 if dh < -180 else dh
+    dH = 2 * math.sqrt(c1p * c2p) * math.sin(math.radians(dh / 2))
+    lbar, cpbar = (L1 + L2) / 2, (c1p + c2p) / 2
+    hbar = h1 + h2
+    if c1p * c2p:
+        hbar = (h1 + h2) / 2 if abs(h1 - h2) <= 180 else (h1 + h2 + 360) / 2 if h1 + h2 < 360 else (h1 + h2 - 360) / 2
+    t = (1 - 0.17 * math.cos(math.radians(hbar - 30)) + 0.24 * math.cos(math.radians(2 * hbar))
+         + 0.32 * math.cos(math.radians(3 * hbar + 6)) - 0.20 * math.cos(math.radians(4 * hbar - 63)))
+    dtheta = 30 * math.exp(-((hbar - 275) / 25) ** 2)
+    rc = 2 * math.sqrt(cpbar ** 7 / (cpbar ** 7 + 25 ** 7))
+    sl = 1 + 0.015 * (lbar - 50) ** 2 / math.sqrt(20 + (lbar - 50) ** 2)
+    sc, sh = 1 + 0.045 * cpbar, 1 + 0.015 * cpbar * t
+    rt = -math.sin(math.radians(2 * dtheta)) * rc
+    dL, dC = L2 - L1, c2p - c1p
+    return math.sqrt((dL / sl) ** 2 + (dC / sc) ** 2 + (dH / sh) ** 2 + rt * (dC / sc) * (dH / sh))
+
+
+def thread_colours(fabric):
+    return [[c * t["albedo_scale"] for c in t["albedo"]] for t in fabric["threads"]]
+
+
+def opaque_presets():
+    out = {}
+    for p in sorted((ROOT / "assets/fabrics").glob("*.json")):
+        f = json.loads(p.read_text())
+        if not any(t.get("optical_thickness", 0) > 0 for t in f["threads"]) and f.get("optical_thickness", 0) <= 0:
+            out[p.stem] = f
+    return out
+
+
+def random_fabric(presets, rng, k):
+    """A preset's weave (its tangent curves, coverage, η) with each thread's colour, k_d, γ_s and γ_v
+    drawn within the range the opaque presets span."""
+    base = json.loads(json.dumps(presets[rng.choice(sorted(presets))]))
+    threads = [t for f in presets.values() for t in f["threads"]]
+    span = lambda key: (min(t[key] for t in threads), max(t[key] for t in threads))
+    for t in base["threads"]:
+        t["albedo"] = [round(rng.uniform(0.05, 1.0), 3) for _ in range(3)]
+        t["albedo_scale"] = round(rng.uniform(*span("albedo_scale")), 3)
+        for key in ("kd", "gamma_s_deg", "gamma_v_deg"):
+            t[key] = round(rng.uniform(*span(key)), 3)
+    base["name"] = f"random_{k}_{base['name']}"
+    base["description"] = "random fabric for the capture sweep"
+    return base
+
+
+def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
+    shots = work / f"{name}_shots"
+    subprocess.run([weft, "capture", "--simulate", str(truth_file), "--map", photo_map, "--out", str(shots),
+                    "--photos", "4", "--seed", str(seed)], check=True, capture_output=True)
+    fitted = work / f"{name}_fitted.json"
+    t0 = time.monotonic()
+    r = subprocess.run([weft, "capture", str(shots), "--out", str(fitted), "--truth", str(truth_file),
+                        "--check-map", check_map], capture_output=True, text=True)
+    seconds = time.monotonic() - t0
+    if r.returncode != 0:
+        return {"name": name, "maps": f"{photo_map} → {check_map}", "error": r.stderr.strip().splitlines()[-1:]}
+    got = json.loads(fitted.read_text())
+    truth = json.loads(Path(truth_file).read_text())
+    de = [delta_e2000(lab(a), lab(b)) for a, b in zip(thread_colours(truth), thread_colours(got))]
+    cap = got["capture"]
+    return {"name": name, "maps": f"{photo_map} → {check_map}", "family": cap["weave_family"], "family_right": cap["weave_family"] == family,
+            "delta_e": de, "rmse": cap["appearance_check"]["relative_rmse"], "seconds": seconds}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--weft", default=str(ROOT / "build/render/app/weft"))
+    ap.add_argument("--random", type=int, default=4, help="random fabrics besides the presets")
+    ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--presets", nargs="*", help="default: every opaque preset")
+    ap.add_argument("--out", help="markdown table (and .json beside it)")
+    a = ap.parse_args()
+    os.environ.setdefault("WEFT_ASSETS", str(ROOT / "assets"))
+    rng = random.Random(a.seed)
+    presets = opaque_presets()
+    names = a.presets if a.presets is not None else sorted(presets)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp)
+        cases = [(n, ROOT / "assets/fabrics" / f"{n}.json", n) for n in names]
+        for k in range(a.random):
+            f = random_fabric(presets, rng, k)
+            path = work / f"{f['name']}.json"
+            path.write_text(json.dumps(f, indent=2))
+            cases.append((f["name"], path, f["name"].split("_", 2)[2]))
+        for i, (name, path, family) in enumerate(cases):
+            photo_map, check_map = rng.sample(MAPS, 2)
+            print(f"[{i + 1}/{len(cases)}] {name}: photos under {photo_map}, checked under {check_map}", file=sys.stderr, flush=True)
+            row = run_case(a.weft, name, path, family, photo_map, check_map, work, seed=100 + i)
+            print("   ", json.dumps(row), file=sys.stderr, flush=True)
+            rows.append(row)
+    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        if "error" in r:
+            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | |")
+        else:
+            fam = r["family"] if r["family_right"] else f"**{r['family']} (wrong)**"
+            lines.append(f"| {r['name']} | {r['maps']} | {fam} | {r['delta_e'][0]:.1f}, {r['delta_e'][1]:.1f} | "
+                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} |")
+    ok = [r for r in rows if "error" not in r]
+    met = sum(r["family_right"] and max(r["delta_e"]) <= 3 and r["rmse"] <= 0.05 for r in ok)
+    lines.append("")
+    lines.append(f"{met} of {len(rows)} within the issue's figures (family right, ΔE ≤ 3 for both threads, RMSE ≤ 5 %).")
+    text = "\n".join(lines)
+    print(text)
+    if a.out:
+        Path(a.out).write_text(text + "\n")
+        Path(a.out).with_suffix(".json").write_text(json.dumps(rows, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
