@@ -139,6 +139,8 @@ double to_z(int i, double v) {
 
 constexpr double kHuber = 2.0;
 constexpr double kPriorWeight = 0.5;
+constexpr double kBroadStart[2] = {20.0, 40.0};  // γ_s, γ_v in degrees: the second start's lobes
+constexpr double kSecondStartWithin = 4.0;        // × the lowest cost after the first starts
 // 1σ of a level error common to every cell, per channel (the response's scale, the ball's
 // calibration): taken as the 2 % a cell's residual unit allows.
 constexpr double kLevelSigma = 0.02;
@@ -214,74 +216,115 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
   for (const auto& o : observations) mean += o.value;
   mean /= static_cast<double>(observations.size());
   const double level = (mean.r + mean.g + mean.b) / 3;
-  FabricFit best;
-  best.cost = std::numeric_limits<double>::infinity();
-  for (size_t p = 0; p < presets.size(); ++p) {
-    const Fabric& preset = presets[p];
-    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
+  // One family from one start: the preset's own lobes, or broad ones (a fabric of the family whose
+  // lobes are far wider than its preset's lies beyond the preset start's local minimum).
+  struct Run {
+    double cost = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd z;
+    int iterations = 0;
+  };
+  auto residuals = [&](const Geometry& g, const Fabric& preset) {
     Residuals r{&g, &lights, &observations, {}, true, {}, {}};
     // The residual's unit: 2 % of the value (JPEG, noise, the response's fit), floored at 0.5 % of the
     // swatch's mean so a black channel does not count for more than it can be measured.
     for (const auto& o : observations) r.scale.push_back(0.02 * glm::max(o.value, glm::dvec3(0.25 * level)));
-    Eigen::VectorXd z(kParams);
+    r.prior = Eigen::VectorXd(kParams);
     for (int j = 0; j < 2; ++j) {
       const ThreadParams& t = preset.threads[j];
       const double start[6] = {t.albedo.r, t.albedo.g, t.albedo.b, t.kd, t.gamma_s, t.gamma_v};
-      for (int i = 0; i < 6; ++i) z[6 * j + i] = to_z(i, start[i]);
+      for (int i = 0; i < 6; ++i) r.prior[6 * j + i] = to_z(i, start[i]);
     }
-    r.prior = z;
+    return r;
+  };
+  auto run_family = [&](const Fabric& preset, bool broad) {
+    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
+    Residuals r = residuals(g, preset);
+    Run run;
+    run.z = r.prior;
+    if (broad)
+      for (int j = 0; j < 2; ++j) {
+        run.z[6 * j + 4] = to_z(4, glm::radians(kBroadStart[0]));
+        run.z[6 * j + 5] = to_z(5, glm::radians(kBroadStart[1]));
+      }
     Eigen::NumericalDiff<Residuals> diff(r);
     Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(diff);
     lm.parameters.maxfev = 60 * (kParams + 1);
     lm.parameters.xtol = 1e-8;
-    lm.minimize(z);
+    lm.minimize(run.z);
+    run.iterations = static_cast<int>(lm.iter);
     Eigen::VectorXd f(r.values());
-    r(z, f);
-    const double cost = f.squaredNorm();
-    best.family_costs.emplace_back(preset.name, cost);
-    if (cost < best.cost) {
-      best.cost = cost;
-      best.preset = preset.name;
-      best.iterations = static_cast<int>(lm.iter);
-      best.fabric = preset;
-      for (int j = 0; j < 2; ++j) {
-        ThreadParams& t = best.fabric.threads[j];
-        t.albedo = glm::dvec3(to_value(0, z[6 * j]), to_value(1, z[6 * j + 1]), to_value(2, z[6 * j + 2]));
-        t.kd = to_value(3, z[6 * j + 3]);
-        t.gamma_s = to_value(4, z[6 * j + 4]);
-        t.gamma_v = to_value(5, z[6 * j + 5]);
-      }
-      const auto m = r.model(z);
-      double rel = 0;
-      for (int o = 0; o < g.observations; ++o)
-        for (int c = 0; c < 3; ++c) {
-          const double d = (m[o][c] - observations[o].value[c]) / std::max(observations[o].value[c], 0.05 * level);
-          rel += d * d;
-        }
-      best.rms_relative = std::sqrt(rel / (3.0 * g.observations));
-      // 1σ (fit_uncertainty.h), carried through the logistic maps.
-      r.robust = false;
-      Eigen::MatrixXd J(r.values(), kParams);
-      diff.df(z, J);
-      Eigen::VectorXd f2(r.values());
-      r(z, f2);
-      std::array<Eigen::VectorXd, 3> level;
-      for (int c = 0; c < 3; ++c) {
-        level[c] = Eigen::VectorXd::Zero(r.values());
-        for (int o = 0; o < g.observations; ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
-      }
-      const Eigen::MatrixXd cov = fit_covariance(J, f2, level, kLevelSigma);
-      for (int j = 0; j < 2; ++j) {
-        double sd[6];
-        for (int i = 0; i < 6; ++i) {
-          const int k = 6 * j + i;
-          const double s = logistic(z[k]);
-          sd[i] = std::sqrt(std::max(cov(k, k), 0.0)) * (kBounds[i].hi - kBounds[i].lo) * s * (1 - s);
-        }
-        best.sigma[j] = ThreadUncertainty{{sd[0], sd[1], sd[2]}, sd[3], sd[4], sd[5]};
-      }
+    r(run.z, f);
+    run.cost = f.squaredNorm();
+    return run;
+  };
+  // Every family from its preset, then again from broad lobes for those within kSecondStartWithin
+  // of the lowest cost (the others cannot win).
+  std::vector<Run> runs;
+  for (size_t p = 0; p < presets.size(); ++p) {
+    runs.push_back(run_family(presets[p], false));
+    if (options.progress) options.progress(0.75 * static_cast<double>(p + 1) / presets.size());
+  }
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Run& run : runs) lowest = std::min(lowest, run.cost);
+  for (size_t p = 0; p < presets.size(); ++p) {
+    if (runs[p].cost <= kSecondStartWithin * lowest)
+      if (Run again = run_family(presets[p], true); again.cost < runs[p].cost) runs[p] = std::move(again);
+    if (options.progress) options.progress(0.75 + 0.25 * static_cast<double>(p + 1) / presets.size());
+  }
+  FabricFit best;
+  size_t chosen = 0;
+  for (size_t p = 0; p < presets.size(); ++p) {
+    best.family_costs.emplace_back(presets[p].name, runs[p].cost);
+    if (runs[p].cost < runs[chosen].cost) chosen = p;
+  }
+  {
+    const Fabric& preset = presets[chosen];
+    const Run& run = runs[chosen];
+    const Eigen::VectorXd& z = run.z;
+    const double cost = run.cost;
+    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
+    Residuals r = residuals(g, preset);
+    Eigen::NumericalDiff<Residuals> diff(r);
+    best.cost = cost;
+    best.preset = preset.name;
+    best.iterations = run.iterations;
+    best.fabric = preset;
+    for (int j = 0; j < 2; ++j) {
+      ThreadParams& t = best.fabric.threads[j];
+      t.albedo = glm::dvec3(to_value(0, z[6 * j]), to_value(1, z[6 * j + 1]), to_value(2, z[6 * j + 2]));
+      t.kd = to_value(3, z[6 * j + 3]);
+      t.gamma_s = to_value(4, z[6 * j + 4]);
+      t.gamma_v = to_value(5, z[6 * j + 5]);
     }
-    if (options.progress) options.progress(static_cast<double>(p + 1) / presets.size());
+    const auto m = r.model(z);
+    double rel = 0;
+    for (int o = 0; o < g.observations; ++o)
+      for (int c = 0; c < 3; ++c) {
+        const double d = (m[o][c] - observations[o].value[c]) / std::max(observations[o].value[c], 0.05 * level);
+        rel += d * d;
+      }
+    best.rms_relative = std::sqrt(rel / (3.0 * g.observations));
+    // 1σ (fit_uncertainty.h), carried through the logistic maps.
+    r.robust = false;
+    Eigen::MatrixXd J(r.values(), kParams);
+    diff.df(z, J);
+    Eigen::VectorXd f2(r.values());
+    r(z, f2);
+    std::array<Eigen::VectorXd, 3> level;
+    for (int c = 0; c < 3; ++c) {
+      level[c] = Eigen::VectorXd::Zero(r.values());
+      for (int o = 0; o < g.observations; ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
+    }
+    const Eigen::MatrixXd cov = fit_covariance(J, f2, level, kLevelSigma);
+    for (int j = 0; j < 2; ++j) {
+      double sd[6];
+      for (int i = 0; i < 6; ++i) {
+        const int k = 6 * j + i;
+        const double s = logistic(z[k]);
+        sd[i] = std::sqrt(std::max(cov(k, k), 0.0)) * (kBounds[i].hi - kBounds[i].lo) * s * (1 - s);
+      }
+      best.sigma[j] = ThreadUncertainty{{sd[0], sd[1], sd[2]}, sd[3], sd[4], sd[5]};
+    }
   }
   return best;
 }
