@@ -68,11 +68,12 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     }
   };
   // First the cards and their grey samples: the response is fitted across all the photos.
+  std::vector<Photo> photos;
   std::vector<CardView> views;
   std::vector<std::vector<ResponseSample>> samples;
   for (size_t i = 0; i < files.size(); ++i) {
     const std::string name = files[i].filename().string();
-    const Photo photo = load(files[i]);
+    const Photo& photo = photos.emplace_back(load(files[i]));
     const CardView view = locate_card(photo, focal, name);
     if (view.edge_width > options.max_edge_width_px)
       throw CaptureRejection(name + ": blurred (the tags' edges are " + std::to_string(view.edge_width) +
@@ -89,7 +90,7 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
 
   for (size_t i = 0; i < files.size(); ++i) {
     const std::string name = files[i].filename().string();
-    const Photo photo = load(files[i]);
+    const Photo& photo = photos[i];
     const CardView& view = views[i];
     CapturedPhoto shot;
     shot.file = name;

@@ -7,6 +7,7 @@
 
 #include "camera/hdr_merge.h"
 #include "capture/capture_card.h"
+#include "capture/card_samples.h"
 #include "capture/light_cells.h"
 #include "probe/mirror_ball_unwrap.h"
 
@@ -14,7 +15,6 @@ namespace weft {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-constexpr int kBallClip = 240;
 
 glm::dvec3 irradiance_up(const EnvMap& map) {
   glm::dvec3 e(0);
@@ -39,14 +39,12 @@ BallView read_ball(const std::vector<BallExposure>& exposures, const CardView& v
   const double d = glm::length(ball - cam.C);
   const double r_px = cam.f * R / std::sqrt(d * d - R * R);
   HdrImage image{photo.width, photo.height, std::vector<glm::vec3>(static_cast<size_t>(photo.width) * photo.height, glm::vec3(0))};
-  const double half_diag2 = (photo.width * photo.width + photo.height * photo.height) / 4.0;
   int on_ball = 0, clipped = 0;
   const int x0 = std::max(0, static_cast<int>(centre->x - r_px - 2)), x1 = std::min(photo.width, static_cast<int>(centre->x + r_px + 3));
   const int y0 = std::max(0, static_cast<int>(centre->y - r_px - 2)), y1 = std::min(photo.height, static_cast<int>(centre->y + r_px + 3));
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
-      const double r2 = ((x + 0.5 - photo.width / 2.0) * (x + 0.5 - photo.width / 2.0) +
-                         (y + 0.5 - photo.height / 2.0) * (y + 0.5 - photo.height / 2.0)) / half_diag2;
+      const double r2 = image_radius2(photo, x + 0.5, y + 0.5);
       // Each exposure's value scaled back to the photo's, weighted by its exposure squared (the
       // codes' noise is about constant, so a longer exposure measures better); clipped codes, and
       // JPEG's ringing just below them, say only that the value is higher.
@@ -57,7 +55,7 @@ BallView read_ball(const std::vector<BallExposure>& exposures, const CardView& v
         const std::array<std::uint8_t, 3> code{e.photo->at(x, y, 0), e.photo->at(x, y, 1), e.photo->at(x, y, 2)};
         const double t = std::exp2(e.ev);
         darkest = response.relative(code, r2) / t;
-        if (std::max({code[0], code[1], code[2]}) >= kBallClip) continue;
+        if (std::max({code[0], code[1], code[2]}) >= kBallClipCode) continue;
         sum += t * t * darkest;
         weight += t * t;
       }

@@ -22,6 +22,9 @@ struct BallView {
   double clipped_fraction;   // ball pixels with a channel clipped in every exposure
 };
 
+// A ball pixel with a code from this up in any channel is clipped (JPEG rings just below 255).
+inline constexpr int kBallClipCode = 240;
+
 // One exposure of the ball: the photo itself (ev 0) or one of its brackets (photo_files.h),
 // shot from the same pose, read through the photo's response scaled by 2^ev.
 struct BallExposure {

@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "capture/capture_card.h"
+#include "capture/capture_lighting.h"
 #include "capture/card_camera.h"
+#include "capture/card_samples.h"
 #include "capture/photo_files.h"
 #include "capture/response_calibration.h"
 #include "core/cloth_bsdf.h"
@@ -63,14 +65,6 @@ EnvMap map_in_ball_frame(const EnvMap& map, const CardCamera& cam, const glm::dv
       out.at(x, y) = glm::vec3(map.lookup(d.x * right + d.y * forward + d.z * up));
     }
   return out;
-}
-
-std::optional<double> sphere_hit(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& centre, double radius) {
-  const glm::dvec3 oc = o - centre;
-  const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius, disc = b * b - c;
-  if (disc < 0) return std::nullopt;
-  const double t = -b - std::sqrt(disc);
-  return t > 0 ? std::optional(t) : std::nullopt;
 }
 
 }  // namespace
@@ -180,7 +174,6 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
     MockProbeSource ball_camera(map_in_ball_frame(map, cam, ball), mock);
     ball_camera.open();
     const CameraResponse curve = truth_cam.response.curve();
-    const double half_diag2 = (w * w + h * h) / 4.0;
     // The photo at `exposure` times the metered one: the card and cloth scaled, the ball as the
     // mock camera takes it at that exposure (clipping where it does).
     auto shoot = [&](double exposure, int shot_index, bool count_progress) {
@@ -202,15 +195,14 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
           int on_ball = 0;
           for (int s = 0; s < 4; ++s) {
             const double sx = x + 0.25 + 0.5 * (s & 1), sy = y + 0.25 + 0.5 * (s >> 1);
-            const glm::dvec3 d = cam.ray(sx, sy);
-            if (sphere_hit(cam.C, d, ball, ball_r)) {
+            if (cam.sees_sphere(sx, sy, ball, ball_r)) {
               ++on_ball;
               continue;
             }
             if (const auto p = cam.on_card(sx, sy)) linear += exposure * k * plane_radiance(*p);
           }
           linear = (linear + static_cast<double>(on_ball) * ball_linear(x, y)) / 4.0;
-          const double r2 = ((x + 0.5 - w / 2.0) * (x + 0.5 - w / 2.0) + (y + 0.5 - h / 2.0) * (y + 0.5 - h / 2.0)) / half_diag2;
+          const double r2 = image_radius2(photo, x + 0.5, y + 0.5);
           linear *= truth_cam.white_balance * (1.0 - truth_cam.response.vignetting * r2);
           for (int c = 0; c < 3; ++c) {
             const double sigma = std::sqrt(std::max(linear[c], 0.0) * truth_cam.shot_noise + truth_cam.read_noise * truth_cam.read_noise);
@@ -225,13 +217,13 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
           }
         }
       }
-      // The ball's pixels that a fit would take as clipped (capture_lighting.cpp's threshold).
+      // The ball's pixels that a fit would take as clipped.
       int ball_clipped = 0;
       for (int y = std::max(0, oy); y < std::min(h, oy + box); ++y)
         for (int x = std::max(0, ox); x < std::min(w, ox + box); ++x) {
           const double a = (x + 0.5 - ball_px->x) / r_px, b = (y + 0.5 - ball_px->y) / r_px;
           const std::uint8_t* q = &photo.rgb[(static_cast<size_t>(y) * w + x) * 3];
-          ball_clipped += a * a + b * b < 1 && std::max({q[0], q[1], q[2]}) >= 240;
+          ball_clipped += a * a + b * b < 1 && std::max({q[0], q[1], q[2]}) >= kBallClipCode;
         }
       return std::pair(std::move(photo), ball_clipped);
     };

@@ -21,6 +21,12 @@ std::optional<glm::dvec3> CardCamera::on_card(double x, double y) const {
   return C + d * (-C.z / d.z);
 }
 
+bool CardCamera::sees_sphere(double x, double y, const glm::dvec3& centre, double radius) const {
+  const glm::dvec3 oc = C - centre, d = ray(x, y);
+  const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius;
+  return b * b - c >= 0 && -b - std::sqrt(std::max(b * b - c, 0.0)) > 0;
+}
+
 CardCamera CardCamera::look_at(int width, int height, double f, const glm::dvec3& centre, const glm::dvec3& target,
                                double roll) {
   const glm::dvec3 forward = glm::normalize(target - centre);

@@ -21,6 +21,8 @@ struct CardCamera {
   glm::dvec3 ray(double x, double y) const;
   // Where that ray meets the card's plane Z = 0, or nothing.
   std::optional<glm::dvec3> on_card(double x, double y) const;
+  // Whether that ray meets the sphere (the mirror ball) in front of the camera.
+  bool sees_sphere(double x, double y, const glm::dvec3& centre, double radius) const;
   glm::dvec3 right() const { return R[0]; }
   glm::dvec3 down() const { return R[1]; }
   glm::dvec3 forward() const { return R[2]; }

@@ -18,12 +18,6 @@ constexpr int kMinPixels = 24;
 
 std::array<std::uint8_t, 3> code_at(const Photo& p, int x, int y) { return {p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2)}; }
 
-bool ray_hits_sphere(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& centre, double radius) {
-  const glm::dvec3 oc = o - centre;
-  const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius;
-  return b * b - c >= 0 && -b > 0;
-}
-
 // Whether the whole rectangle, with its margin, is blank paper: tested every 0.3 mm, finer than
 // the card's finest print (a 0.7 mm outline).
 bool blank_paper(const CardRect& r) {
@@ -65,7 +59,7 @@ ResponseSample sample_rect(const Photo& p, const CardView& view, const CardRect&
   double r2 = 0;
   for_card_pixels(p, view, corners, [&](const glm::dvec3& w) { return in.contains(world_to_card(w)); },
                   [&](int x, int y, const glm::dvec3&) {
-                    if (ray_hits_sphere(view.camera.C, view.camera.ray(x + 0.5, y + 0.5), ball, ball_r)) return;
+                    if (view.camera.sees_sphere(x + 0.5, y + 0.5, ball, ball_r)) return;
                     s.add(code_at(p, x, y));
                     r2 += image_radius2(p, x + 0.5, y + 0.5);
                   });
