@@ -29,14 +29,13 @@ struct RenderArgs {
   std::string method = "reference";
   std::string lighting = "sg";
   std::string sgs_file, out;
-  int width = 320, height = 240, sg_grid = 8, map_width = 128, sg_count = 10;
+  int width = 320, height = 240, sg_grid = 8, map_width = 128, sg_count = 10, check_stride = 6, timed_frames = 20;
   int tangent_samples = 32;  // docs/design.md §2: the reference converges in N_j ≥ 32
-  int check_stride = 6, timed_frames = 20;
+  int supersample = 0, table_grid = 0;  // 0: 4 with --weave (else 1); 0: the paper's 48×48 tables baked in memory
   bool no_check = false, weave = false;
   std::string weave_terms = "pixel", backdrop = "showroom";
   double exposure = 0.0, exposure_bias = 0.0;  // exposure 0: automatic
   std::string bundle;  // iwasaki: scene and tables from a baked bundle instead of baking in memory
-  int supersample = 0;  // 0: 4 with --weave, else 1
   std::string camera = "scene";  // or "closeup", or "EYE:TARGET[:FOV]"
 };
 
@@ -79,7 +78,7 @@ int run_render(const RenderArgs& a) {
   if (method && method->needs_weighting_tables() && !in.shading) {
     std::cerr << "weft render: baking the weighting tables in memory (weft bake stores them in a bundle)\n";
     ShadingDataBakeOptions o;
-    o.progress = open_progress_bar;
+    o.grid = a.table_grid, o.progress = open_progress_bar;
     if (method->reads_visibility_masks()) o.mask_resolution = kMaskResolution;
     in.shading = std::make_shared<ShadingData>(bake_shading_data(in.scene, in.fabrics, o));
   }
@@ -134,6 +133,7 @@ CommandAction add_render_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--no-convergence-check", a->no_check, "Skip the convergence check");
   sub->add_option("--bundle", a->bundle, "iwasaki, iwasaki_vertex, mizutani: take the scene and weighting tables from this bundle (weft bake) instead of baking them");
+  sub->add_option("--table-grid", a->table_grid, "Methods reading weighting tables, without --bundle: direction grids of the tables baked in memory, N x N (default: the paper's 48; smaller bakes faster, as weft bake --table-grid)")->check(CLI::Range(4, 128));
   sub->add_option("--frames", a->timed_frames, "GPU methods: frames timed after a warm-up (median reported)")
       ->capture_default_str();
   sub->add_option("--exposure", a->exposure, "PNG: fixed exposure before the filmic curve and sRGB (0: metered on the cloth)")

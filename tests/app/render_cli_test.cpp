@@ -100,7 +100,7 @@ TEST(RenderCli, AFabricFileDrawsWithTheTablesBakedForIt) {
   const fs::path sgs = temp("fabric_file_sgs.json");
   fs::copy_file(fs::path(WEFT_SOURCE_ASSETS) / "fabrics/linen_plain.json", fabric, fs::copy_options::overwrite_existing);
   std::ofstream(sgs) << R"({"sgs":[{"axis":[0.3,-0.2,0.93],"sharpness":8,"amplitude":[1,1,1]}]})";
-  const CliResult r = weft("render --scene swatch --fabric " + fabric.string() + " --method iwasaki_vertex --sgs " +
+  const CliResult r = weft("render --scene swatch --fabric " + fabric.string() + " --method iwasaki_vertex --table-grid 8 --sgs " +
                            sgs.string() + " --width 24 --height 16 --frames 1 --out " + exr.string());
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(is_png(png));
