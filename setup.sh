@@ -14,6 +14,7 @@ PACKAGES=(
   libembree-dev libtbb-dev libopenexr-dev libimath-dev libpng-dev libtinygltf-dev
   libjpeg62-turbo-dev  # JPEG textures in glTF files (render/image/texture_image.h), the capture photos
   libapriltag-dev  # the capture card's markers (render/capture/card_detection.h)
+  liblcms2-dev  # CIEDE2000 for fitted thread colours (render/capture/colour_difference.h)
   libdraco-dev libmeshoptimizer-dev  # compressed glTF meshes: Draco and meshopt (render/scene/gltf_draco.h, gltf_meshopt.h)
   libegl-dev libgles-dev libgbm-dev libdrm-dev libegl-mesa0 libgl1-mesa-dri
   libhidapi-dev libgpiod-dev libcamera-dev libsystemd-dev systemd

@@ -87,7 +87,7 @@ int run_fit(const CaptureArgs& a) {
   if (truth) {
     const AppearanceCheckOptions co;
     check = AppearanceCheck{a.check_map, truth->name, appearance_relative_rmse(*truth, r.fit.fabric, check_map, co),
-                            co.elevations * co.turns};
+                            co.elevations * co.turns, thread_delta_e2000(*truth, r.fit.fabric)};
   }
   write_fitted_fabric(r, assets_dir() / "fabrics", out, check);
   write_side_by_side(r, report);

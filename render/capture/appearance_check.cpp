@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "capture/capture_simulation.h"
+#include "capture/colour_difference.h"
 #include "core/cloth_bsdf.h"
 
 namespace weft {
@@ -33,6 +34,11 @@ double appearance_relative_rmse(const Fabric& truth, const Fabric& fitted, const
   if (!(truth2 > 0)) throw std::invalid_argument("appearance check: the truth renders black under this map");
   // The sample counts cancel in the ratio of the two means.
   return std::sqrt(diff2 / truth2);
+}
+
+std::array<double, 2> thread_delta_e2000(const Fabric& truth, const Fabric& fitted) {
+  return {delta_e2000(truth.threads[0].albedo, fitted.threads[0].albedo),
+          delta_e2000(truth.threads[1].albedo, fitted.threads[1].albedo)};
 }
 
 }  // namespace weft

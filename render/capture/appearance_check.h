@@ -2,6 +2,7 @@
 // The acceptance measure of a fit to simulated photos: the fitted fabric and the truth rendered as
 // a flat swatch under another environment map than the one photographed, compared by relative
 // RMSE. Only simulated captures have a truth to compare with.
+#include <array>
 #include <string>
 
 #include "core/fabric.h"
@@ -22,12 +23,17 @@ struct AppearanceCheckOptions {
 double appearance_relative_rmse(const Fabric& truth, const Fabric& fitted, const EnvMap& map,
                                 const AppearanceCheckOptions& options = {});
 
+// Each thread's colour A (albedo × albedo_scale, as the model reads it) of the fit against the
+// truth's, in CIEDE2000 (capture/colour_difference.h).
+std::array<double, 2> thread_delta_e2000(const Fabric& truth, const Fabric& fitted);
+
 // A check as `weft capture DIR --check-map MAP --truth TRUTH` records it in the fitted file.
 struct AppearanceCheck {
   std::string map;     // as named on the command line
   std::string truth;   // the truth fabric's name
   double relative_rmse = 0;
   int views = 0;       // elevations × turns
+  std::array<double, 2> thread_delta_e2000{};
 };
 
 }  // namespace weft

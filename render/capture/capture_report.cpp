@@ -60,7 +60,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
                                  {"ball_clipped", p.ball_clipped}});
   if (check)
     capture["appearance_check"] = {{"map", check->map}, {"truth", check->truth}, {"views", check->views},
-                                   {"relative_rmse", check->relative_rmse}};
+                                   {"relative_rmse", check->relative_rmse},
+                                   {"thread_delta_e2000", check->thread_delta_e2000}};
   doc["capture"] = capture;
   std::ofstream(file) << doc.dump(2) << "\n";
 }
@@ -118,8 +119,10 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
     out += line;
   }
   if (check) {
-    std::snprintf(line, sizeof line, "appearance under %s: relative RMSE %.4f against %s over %d views\n", check->map.c_str(),
-                  check->relative_rmse, check->truth.c_str(), check->views);
+    std::snprintf(line, sizeof line,
+                  "appearance under %s: relative RMSE %.4f against %s over %d views; thread colours ΔE2000 %.2f, %.2f\n",
+                  check->map.c_str(), check->relative_rmse, check->truth.c_str(), check->views,
+                  check->thread_delta_e2000[0], check->thread_delta_e2000[1]);
     out += line;
   }
   return out;

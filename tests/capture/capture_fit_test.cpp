@@ -13,12 +13,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "capture/appearance_check.h"
+#include "capture/colour_difference.h"
 #include "capture/photo_files.h"
 #include "core/fabric.h"
 #include "lighting/env_map.h"
@@ -26,63 +26,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kPi = std::numbers::pi;
 
 int run(const std::string& args) {
   const int status = std::system((std::string(WEFT_BINARY) + " " + args).c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-struct Lab {
-  double L, a, b;
-};
-
-// Linear sRGB (D65) → CIE L*a*b* with the D65 white.
-Lab to_lab(const glm::dvec3& rgb) {
-  const double X = 0.4124564 * rgb.r + 0.3575761 * rgb.g + 0.1804375 * rgb.b;
-  const double Y = 0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b;
-  const double Z = 0.0193339 * rgb.r + 0.1191920 * rgb.g + 0.9503041 * rgb.b;
-  auto f = [](double t) { return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16.0) / 116.0; };
-  const double fx = f(X / 0.95047), fy = f(Y / 1.0), fz = f(Z / 1.08883);
-  return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
-}
-
-// CIEDE2000 (G. Sharma, W. Wu, E. N. Dalal, Color Res. Appl. 30(1), 2005, Eq. 1–24), k_L = k_C = k_H = 1.
-double delta_e2000(const Lab& c1, const Lab& c2) {
-  auto deg = [](double r) { return r * 180.0 / kPi; };
-  auto rad = [](double d) { return d * kPi / 180.0; };
-  const double C1 = std::hypot(c1.a, c1.b), C2 = std::hypot(c2.a, c2.b), Cbar = (C1 + C2) / 2;
-  const double G = 0.5 * (1 - std::sqrt(std::pow(Cbar, 7) / (std::pow(Cbar, 7) + std::pow(25.0, 7))));
-  const double a1 = (1 + G) * c1.a, a2 = (1 + G) * c2.a;
-  const double Cp1 = std::hypot(a1, c1.b), Cp2 = std::hypot(a2, c2.b);
-  auto hue = [&](double b, double a) {
-    if (a == 0 && b == 0) return 0.0;
-    const double h = deg(std::atan2(b, a));
-    return h < 0 ? h + 360 : h;
-  };
-  const double h1 = hue(c1.b, a1), h2 = hue(c2.b, a2);
-  const double dL = c2.L - c1.L, dC = Cp2 - Cp1;
-  double dh = 0;
-  if (Cp1 * Cp2 != 0) {
-    dh = h2 - h1;
-    if (dh > 180) dh -= 360;
-    else if (dh < -180) dh += 360;
-  }
-  const double dH = 2 * std::sqrt(Cp1 * Cp2) * std::sin(rad(dh / 2));
-  const double Lbar = (c1.L + c2.L) / 2, Cpbar = (Cp1 + Cp2) / 2;
-  double hbar = h1 + h2;
-  if (Cp1 * Cp2 != 0) {
-    if (std::abs(h1 - h2) <= 180) hbar = (h1 + h2) / 2;
-    else hbar = h1 + h2 < 360 ? (h1 + h2 + 360) / 2 : (h1 + h2 - 360) / 2;
-  }
-  const double T = 1 - 0.17 * std::cos(rad(hbar - 30)) + 0.24 * std::cos(rad(2 * hbar)) + 0.32 * std::cos(rad(3 * hbar + 6)) -
-                   0.20 * std::cos(rad(4 * hbar - 63));
-  const double dtheta = 30 * std::exp(-std::pow((hbar - 275) / 25, 2));
-  const double RC = 2 * std::sqrt(std::pow(Cpbar, 7) / (std::pow(Cpbar, 7) + std::pow(25.0, 7)));
-  const double SL = 1 + 0.015 * std::pow(Lbar - 50, 2) / std::sqrt(20 + std::pow(Lbar - 50, 2));
-  const double SC = 1 + 0.045 * Cpbar, SH = 1 + 0.015 * Cpbar * T;
-  const double RT = -std::sin(rad(2 * dtheta)) * RC;
-  return std::sqrt(std::pow(dL / SL, 2) + std::pow(dC / SC, 2) + std::pow(dH / SH, 2) + RT * (dC / SC) * (dH / SH));
 }
 
 fs::path scratch(const std::string& name) {
@@ -93,13 +40,6 @@ fs::path scratch(const std::string& name) {
 }
 
 }  // namespace
-
-TEST(DeltaE2000, SharmaTestData) {
-  // Pairs 1, 7 and 17 of the paper's Table 1.
-  EXPECT_NEAR(delta_e2000({50, 2.6772, -79.7751}, {50, 0, -82.7485}), 2.0425, 1e-4);
-  EXPECT_NEAR(delta_e2000({50, 0, 0}, {50, -1, 2}), 2.3669, 1e-4);
-  EXPECT_NEAR(delta_e2000({50, 2.5, 0}, {73, 25, -18}), 27.1492, 1e-4);
-}
 
 weft::EnvMap source_map(const std::string& name) {
   return weft::load_env_map(weft::env_map_file(name, WEFT_SOURCE_ASSETS "/envmaps"), weft::NonFinitePolicy::clamp);
@@ -152,7 +92,12 @@ FitErrors simulate_and_fit(const std::string& preset, bool check_colours) {
   const weft::Fabric got = weft::load_fabric(out);
   const weft::Fabric truth = weft::load_fabric_preset(preset, WEFT_SOURCE_ASSETS "/fabrics");
   for (int j = 0; j < 2; ++j) {
-    const double de = delta_e2000(to_lab(truth.threads[j].albedo), to_lab(got.threads[j].albedo));
+    const double de = weft::delta_e2000(truth.threads[j].albedo, got.threads[j].albedo);
+    // The check the file records is this one (of the fit before its albedos are written rounded).
+    if (check.is_object() && check["thread_delta_e2000"].is_array())
+      EXPECT_NEAR(check["thread_delta_e2000"][j].get<double>(), de, 0.01);
+    else
+      ADD_FAILURE() << "no thread_delta_e2000 in the fitted file's appearance_check";
     std::printf("%s thread %d: ΔE2000 %.2f (A %.4f %.4f %.4f, truth %.4f %.4f %.4f)\n", preset.c_str(), j + 1, de,
                 got.threads[j].albedo.r, got.threads[j].albedo.g, got.threads[j].albedo.b, truth.threads[j].albedo.r,
                 truth.threads[j].albedo.g, truth.threads[j].albedo.b);

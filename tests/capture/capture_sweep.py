@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """weft capture on captures nobody tuned for: every opaque preset and random fabrics within the
 presets' ranges, each simulated under one map and checked under another. Per case: the weave
-family found, each thread's colour A (albedo × albedo_scale) against the truth in ΔE2000, the
-fitted fabric's relative RMSE against the truth under the other map, the fit's wall time.
+family found, each thread's colour A (albedo × albedo_scale) against the truth in ΔE2000 and the
+fitted fabric's relative RMSE against the truth under the other map (both as weft records them in
+the fitted file's appearance_check), the fit's wall time.
 
     tests/capture/capture_sweep.py --random 4 --out docs/capture/sweep.md     # ~10 min on 2 cores
 
@@ -10,7 +11,6 @@ A benchmark (ctest label bench): the issue's figures are ≤ 5 % RMSE, ΔE ≤ 3
 """
 import argparse
 import json
-import math
 import os
 import random
 import subprocess
@@ -21,50 +21,6 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 MAPS = ["interior", "courtyard", "studio", "city"]
-
-
-def lab(rgb):
-    """Linear sRGB (D65) to CIE L*a*b*."""
-    r, g, b = rgb
-    x = 0.4124564 * r + 0.3575761 * g + 0.1804375 * b
-    y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b
-    z = 0.0193339 * r + 0.1191920 * g + 0.9503041 * b
-    f = lambda t: t ** (1 / 3) if t > 216 / 24389 else (24389 / 27 * t + 16) / 116
-    fx, fy, fz = f(x / 0.95047), f(y), f(z / 1.08883)
-    return 116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)
-
-
-def delta_e2000(c1, c2):
-    """CIEDE2000 (Sharma, Wu, Dalal 2005), k_L = k_C = k_H = 1."""
-    (L1, a1, b1), (L2, a2, b2) = c1, c2
-    cbar = (math.hypot(a1, b1) + math.hypot(a2, b2)) / 2
-    g = 0.5 * (1 - math.sqrt(cbar ** 7 / (cbar ** 7 + 25 ** 7)))
-    a1p, a2p = (1 + g) * a1, (1 + g) * a2
-    c1p, c2p = math.hypot(a1p, b1), math.hypot(a2p, b2)
-    hue = lambda b, a: 0.0 if a == 0 and b == 0 else math.degrees(math.atan2(b, a)) % 360
-    h1, h2 = hue(b1, a1p), hue(b2, a2p)
-    dh = 0.0
-    if c1p * c2p:
-        dh = h2 - h1
-        dh = dh - 360 if dh > 180 else dh + 360 if dh < -180 else dh
-    dH = 2 * math.sqrt(c1p * c2p) * math.sin(math.radians(dh / 2))
-    lbar, cpbar = (L1 + L2) / 2, (c1p + c2p) / 2
-    hbar = h1 + h2
-    if c1p * c2p:
-        hbar = (h1 + h2) / 2 if abs(h1 - h2) <= 180 else (h1 + h2 + 360) / 2 if h1 + h2 < 360 else (h1 + h2 - 360) / 2
-    t = (1 - 0.17 * math.cos(math.radians(hbar - 30)) + 0.24 * math.cos(math.radians(2 * hbar))
-         + 0.32 * math.cos(math.radians(3 * hbar + 6)) - 0.20 * math.cos(math.radians(4 * hbar - 63)))
-    dtheta = 30 * math.exp(-((hbar - 275) / 25) ** 2)
-    rc = 2 * math.sqrt(cpbar ** 7 / (cpbar ** 7 + 25 ** 7))
-    sl = 1 + 0.015 * (lbar - 50) ** 2 / math.sqrt(20 + (lbar - 50) ** 2)
-    sc, sh = 1 + 0.045 * cpbar, 1 + 0.015 * cpbar * t
-    rt = -math.sin(math.radians(2 * dtheta)) * rc
-    dL, dC = L2 - L1, c2p - c1p
-    return math.sqrt((dL / sl) ** 2 + (dC / sc) ** 2 + (dH / sh) ** 2 + rt * (dC / sc) * (dH / sh))
-
-
-def thread_colours(fabric):
-    return [[c * t["albedo_scale"] for c in t["albedo"]] for t in fabric["threads"]]
 
 
 def opaque_presets():
@@ -103,10 +59,8 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     seconds = time.monotonic() - t0
     if r.returncode != 0:
         return {"name": name, "maps": f"{photo_map} → {check_map}", "error": r.stderr.strip().splitlines()[-1:]}
-    got = json.loads(fitted.read_text())
-    truth = json.loads(Path(truth_file).read_text())
-    de = [delta_e2000(lab(a), lab(b)) for a, b in zip(thread_colours(truth), thread_colours(got))]
-    cap = got["capture"]
+    cap = json.loads(fitted.read_text())["capture"]
+    de = cap["appearance_check"]["thread_delta_e2000"]  # weft's CIEDE2000 of each thread's colour A
     return {"name": name, "maps": f"{photo_map} → {check_map}", "family": cap["weave_family"], "family_right": cap["weave_family"] == family,
             "delta_e": de, "rmse": cap["appearance_check"]["relative_rmse"], "seconds": seconds}
 
