@@ -328,7 +328,9 @@ void main() {
       const size_t t = (size_t(b) * rows * width + size_t(i)) * 4;
       for (int c = 0; c < 3; ++c)
         ASSERT_NEAR(texels[t + c], float(sheet.positions[size_t(i)][c] + b), 1e-4) << "vertex " << i << " block " << b;
-      if (kept[size_t(i)]) ASSERT_EQ(texels[t + 3], float(i)) << "pass vertex " << i;
+      if (kept[size_t(i)]) {
+        ASSERT_EQ(texels[t + 3], float(i)) << "pass vertex " << i;
+      }
     }
   // With the view's marks, only the marked mesh vertices are blended anew (here: the first third,
   // after the pass writes its positions shifted by 10); the others keep their last blend.
