@@ -35,21 +35,25 @@ public:
       double t0, t1, p0, p1;
       dvec3 value;
       double error;
+      std::array<dvec3, 4> quarters;  // the rule over each quarter, in the order refine() splits
       bool operator<(const Cell& o) const { return error < o.error; }
     };
     std::priority_queue<Cell> heap;
     dvec3 total(0.0);
     double error = 0.0;
-    auto make = [&](double t0, double t1, double p0, double p1) {
-      const dvec3 coarse = gauss(t0, t1, p0, p1);
+    // A cell's value is the rule over its four quarters, its error their difference from the rule
+    // over the whole (`coarse`, which a refined cell's parent already holds as its quarter).
+    auto make = [&](double t0, double t1, double p0, double p1, const dvec3& coarse) {
       const double tm = 0.5 * (t0 + t1), pm = 0.5 * (p0 + p1);
-      const dvec3 fine = gauss(t0, tm, p0, pm) + gauss(tm, t1, p0, pm) + gauss(t0, tm, pm, p1) + gauss(tm, t1, pm, p1);
-      return Cell{t0, t1, p0, p1, fine, glm::length(fine - coarse)};
+      const std::array<dvec3, 4> q{gauss(t0, tm, p0, pm), gauss(tm, t1, p0, pm), gauss(t0, tm, pm, p1), gauss(tm, t1, pm, p1)};
+      const dvec3 fine = q[0] + q[1] + q[2] + q[3];
+      return Cell{t0, t1, p0, p1, fine, glm::length(fine - coarse), q};
     };
     const int nt = 24, np = 96;
     for (int i = 0; i < nt; ++i)
       for (int k = 0; k < np; ++k) {
-        Cell c = make(0.5 * kPi * i / nt, 0.5 * kPi * (i + 1) / nt, 2 * kPi * k / np, 2 * kPi * (k + 1) / np);
+        const double t0 = 0.5 * kPi * i / nt, t1 = 0.5 * kPi * (i + 1) / nt, p0 = 2 * kPi * k / np, p1 = 2 * kPi * (k + 1) / np;
+        Cell c = make(t0, t1, p0, p1, gauss(t0, t1, p0, p1));
         total += c.value;
         error += c.error;
         heap.push(c);
@@ -61,9 +65,11 @@ public:
       total -= c.value;
       error -= c.error;
       const double tm = 0.5 * (c.t0 + c.t1), pm = 0.5 * (c.p0 + c.p1);
-      for (const auto& [a, b, d, e] : {std::array{c.t0, tm, c.p0, pm}, std::array{tm, c.t1, c.p0, pm},
-                                       std::array{c.t0, tm, pm, c.p1}, std::array{tm, c.t1, pm, c.p1}}) {
-        Cell child = make(a, b, d, e);
+      const std::array<std::array<double, 4>, 4> parts{std::array{c.t0, tm, c.p0, pm}, std::array{tm, c.t1, c.p0, pm},
+                                                       std::array{c.t0, tm, pm, c.p1}, std::array{tm, c.t1, pm, c.p1}};
+      for (int q = 0; q < 4; ++q) {
+        const auto& [a, b, d, e] = parts[q];
+        Cell child = make(a, b, d, e, c.quarters[q]);
         total += child.value;
         error += child.error;
         heap.push(child);
