@@ -25,6 +25,7 @@ struct CaptureArgs {
   std::string photos_dir, card_out, simulate, map, out, truth_out, report, check_map, truth;
   int dpi = 300, photos = 4, width = 1024, height = 768;
   unsigned seed = 1;
+  int jpeg_quality = CaptureSimulationOptions{}.jpeg_quality;
 };
 
 EnvMap load_named_map(const std::string& name) {
@@ -53,6 +54,7 @@ int run_simulate(const CaptureArgs& a) {
   CaptureSimulationOptions o;
   o.photos = a.photos;
   o.seed = a.seed;
+  o.jpeg_quality = a.jpeg_quality;
   o.width = a.width;
   o.height = a.height;
   o.progress = open_progress_bar("simulate");
@@ -126,6 +128,7 @@ CommandAction add_capture_command(CLI::App& app) {
   sub->add_option("--out", a->out, "--simulate: the folder for the photos; a fit: the fabric file to write");
   sub->add_option("--photos", a->photos, "--simulate: how many photos (the swatch turned by 180°/N between them)")->capture_default_str();
   sub->add_option("--seed", a->seed, "--simulate: the random seed (poses, noise)")->capture_default_str();
+  sub->add_option("--jpeg-quality", a->jpeg_quality, "--simulate: the photos' JPEG quality (a camera's finest setting by default)")->check(CLI::Range(50, 100))->capture_default_str();
   sub->add_option("--width", a->width, "--simulate: photo width")->capture_default_str();
   sub->add_option("--height", a->height, "--simulate: photo height")->capture_default_str();
   sub->add_option("--report", a->report, "A fit: the side-by-side PNG (photo, fitted render, difference ×4); default OUT_side_by_side.png");

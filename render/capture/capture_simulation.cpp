@@ -35,7 +35,6 @@ struct TrueCamera {
   glm::dvec3 white_balance{1.04, 1.0, 0.93};
   double shot_noise = 1.0 / 3000.0;  // variance per unit linear value
   double read_noise = 0.002;
-  int jpeg_quality = 90;
   // Full colour resolution: halved, it tints a lamp a few pixels wide on the ball toward grey
   // (docs/capture.md asks for a camera's 4:4:4 setting or PNG).
   JpegChroma jpeg_chroma = JpegChroma::full;
@@ -86,6 +85,7 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
                       const std::filesystem::path& dir, const std::optional<std::filesystem::path>& truth_out) {
   if (options.photos < 1 || options.photos > 64) throw std::invalid_argument("photos must be in [1, 64]");
   if (options.width < 320 || options.height < 240) throw std::invalid_argument("photos must be at least 320×240");
+  if (options.jpeg_quality < 1 || options.jpeg_quality > 100) throw std::invalid_argument("JPEG quality must be in [1, 100]");
   std::filesystem::create_directories(dir);
   const CaptureCard& card = capture_card();
   const TrueCamera truth_cam;
@@ -240,13 +240,13 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
     char name[32];
     std::snprintf(name, sizeof name, "photo_%02d.jpg", i + 1);
     auto [photo, clipped] = shoot(exposure, i, true);
-    write_jpeg(photo, dir / name, truth_cam.jpeg_quality, truth_cam.jpeg_chroma);
+    write_jpeg(photo, dir / name, options.jpeg_quality, truth_cam.jpeg_chroma);
     // Darker exposures, kBracketStep stops apart, until the ball's highlights are no longer
     // clipped, as a photographer brackets them.
     int brackets = 0;
     for (int ev = -kBracketStep; options.bracket_ball && clipped > 0 && ev >= -kBracketStep * kMaxBrackets; ev -= kBracketStep) {
       auto [dark, dark_clipped] = shoot(exposure * std::exp2(ev), i + options.photos * (-ev / kBracketStep), false);
-      write_jpeg(dark, bracket_path(dir / name, ev), truth_cam.jpeg_quality, truth_cam.jpeg_chroma);
+      write_jpeg(dark, bracket_path(dir / name, ev), options.jpeg_quality, truth_cam.jpeg_chroma);
       clipped = dark_clipped;
       ++brackets;
     }

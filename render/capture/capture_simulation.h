@@ -34,6 +34,9 @@ struct CaptureSimulationOptions {
   int light_cells = 64;        // the map's directional samples: light_cells × light_cells/2
   bool record_focal = true;    // capture.json carries the focal length (a camera's EXIF)
   bool bracket_ball = true;    // darker exposures beside each photo while the ball clips
+  // A camera's finest JPEG, as the capture procedure asks (docs/capture.md: at 90 a sparse
+  // thread's colour error doubles, from the ball's few lamp pixels).
+  int jpeg_quality = 95;
   std::function<void(double)> progress;
 };
 
