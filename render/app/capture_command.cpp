@@ -86,11 +86,7 @@ int run_fit(const CaptureArgs& a) {
     return 2;
   }
   std::optional<AppearanceCheck> check;
-  if (truth) {
-    const AppearanceCheckOptions co;
-    check = AppearanceCheck{a.check_map, truth->name, appearance_relative_rmse(*truth, r.fit.fabric, check_map, co),
-                            co.elevations * co.turns, thread_delta_e2000(*truth, r.fit.fabric)};
-  }
+  if (truth) check = check_appearance(*truth, r.fit.fabric, check_map, a.check_map);
   write_fitted_fabric(r, assets_dir() / "fabrics", out, check);
   write_side_by_side(r, report);
   std::cout << fit_summary(r, check);

@@ -41,4 +41,10 @@ std::array<double, 2> thread_delta_e2000(const Fabric& truth, const Fabric& fitt
           delta_e2000(truth.threads[1].albedo, fitted.threads[1].albedo)};
 }
 
+AppearanceCheck check_appearance(const Fabric& truth, const Fabric& fitted, const EnvMap& map, const std::string& map_name,
+                                 const AppearanceCheckOptions& options) {
+  return {map_name, truth.name, appearance_relative_rmse(truth, fitted, map, options), options.elevations * options.turns,
+          thread_delta_e2000(truth, fitted)};
+}
+
 }  // namespace weft

@@ -36,4 +36,9 @@ struct AppearanceCheck {
   std::array<double, 2> thread_delta_e2000{};
 };
 
+// Both measures of `fitted` against `truth`: the relative RMSE under `map` (named `map_name`) and
+// each thread's ΔE2000.
+AppearanceCheck check_appearance(const Fabric& truth, const Fabric& fitted, const EnvMap& map, const std::string& map_name,
+                                 const AppearanceCheckOptions& options = {});
+
 }  // namespace weft

@@ -3,28 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 
 #include "camera/hdr_merge.h"
 #include "capture/capture_card.h"
 #include "capture/card_samples.h"
 #include "capture/light_cells.h"
+#include "lighting/fit_error.h"
 #include "probe/mirror_ball_unwrap.h"
 
 namespace weft {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-
-glm::dvec3 irradiance_up(const EnvMap& map) {
-  glm::dvec3 e(0);
-  for (int y = 0; y < map.height; ++y)
-    for (int x = 0; x < map.width; ++x) {
-      const double z = map.direction(x, y).z;
-      if (z > 0) e += glm::dvec3(map.at(x, y)) * (z * map.solid_angle(y));
-    }
-  return e;
-}
 }  // namespace
 
 BallView read_ball(const std::vector<BallExposure>& exposures, const CardView& view, const ResponseModel& response) {
@@ -89,7 +81,8 @@ CaptureLighting capture_lighting(const std::vector<BallView>& balls, const Light
   out.map = EnvMap(balls[0].map.width, balls[0].map.height);
   for (const BallView& b : balls)
     for (size_t i = 0; i < out.map.texels.size(); ++i) out.map.texels[i] += b.map.texels[i] / static_cast<float>(balls.size());
-  const glm::dvec3 e = irradiance_up(out.map);
+  const glm::dvec3 up(0, 0, 1);
+  const glm::dvec3 e = irradiance(out.map, std::span(&up, 1))[0];
   const glm::dvec3 to_units = kPi / glm::max(e, glm::dvec3(1e-9));
   for (auto& t : out.map.texels) t *= glm::vec3(to_units);
   // The ball's own radiance as directional lights, as the reference renderer takes a map: a

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "image/tone_map.h"
+
 namespace weft {
 
 namespace {
@@ -16,8 +18,6 @@ struct Cell {
     luminous += c.luminous;
   }
 };
-
-double luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 }  // namespace
 
