@@ -9,6 +9,7 @@
 #include "capture/capture_rejection.h"
 #include "capture/card_detection.h"
 #include "capture/card_samples.h"
+#include "capture/closeup_shot.h"
 #include "capture/photo_files.h"
 
 namespace weft {
@@ -179,9 +180,16 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     if (f.optical_thickness > 0) continue;  // a sheer's weave repeats an opaque preset's; the card cannot see through it
     presets.push_back(std::move(f));
   }
+  // The close-up, read with the camera's response (its scale cancels in the clusters' ratio).
+  std::optional<CloseupObservation> closeup;
+  if (const auto file = closeup_photo(dir)) {
+    result.closeup_file = file->filename().string();
+    result.closeup = measure_closeup(load(*file), result.photos.back().response.model, result.closeup_file);
+    closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn};
+  }
   FabricFitOptions fit_options;
   if (options.open_progress) fit_options.progress = options.open_progress("fit");
-  result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options);
+  result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options, closeup);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -2,15 +2,18 @@
 // `weft capture DIR`: the whole fit of a capture folder. Per photo: the card (card_detection.h)
 // and its grey patches and paper (card_samples.h); the response, fitted across every photo
 // (response_calibration.h); per photo again, the swatch's cells and the mirror ball read through
-// it; then the lighting from every ball (capture_lighting.h) and the fabric (fabric_fit.h).
+// it; then the lighting from every ball (capture_lighting.h), the close-up's thread clusters when
+// the folder has one (closeup_shot.h), and the fabric (fabric_fit.h).
 // Unusable input is a CaptureRejection: the card not found, the swatch marker missing, a blurred
 // or saturated photo, fewer than three photos or swatch turns.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "capture/capture_lighting.h"
+#include "capture/closeup_shot.h"
 #include "capture/fabric_fit.h"
 #include "capture/response_calibration.h"
 
@@ -46,6 +49,8 @@ struct CaptureFitResult {
   std::vector<CapturedPhoto> photos;
   CaptureLighting lighting;
   std::vector<SwatchObservation> observations;
+  std::string closeup_file;                // empty without a close-up
+  std::optional<CloseupClusters> closeup;
   FabricFit fit;
   double seconds = 0;
 };

@@ -58,6 +58,26 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
                                  {"edge_width_px", p.edge_width_px}, {"response_beta", p.response.model.beta},
                                  {"vignetting", p.response.model.vignetting}, {"ball_brackets", p.brackets},
                                  {"ball_clipped", p.ball_clipped}});
+  if (result.closeup) {
+    const CloseupClusters& c = *result.closeup;
+    auto rgb = [](const glm::dvec3& v) { return nlohmann::ordered_json{v.r, v.g, v.b}; };
+    nlohmann::ordered_json& j = capture["closeup"];
+    j = {{"file", result.closeup_file}, {"gap_share", c.gap_share}, {"used", fit.closeup && fit.closeup->used}};
+    for (const CloseupSplit& s : c.splits)
+      j["splits"].push_back({{"features", s.lightness ? "colour and lightness" : "colour"}, {"pixels", s.pixels},
+                             {"shares", {s.share[0], s.share[1]}}, {"valley", s.valley}});
+    if (const auto& f = fit.closeup) {
+      j["one_colour"] = f->one_colour;
+      j["one_lightness"] = f->one_lightness;
+      if (!f->used) j["not_used"] = f->rejected;
+      if (f->split >= 0) {
+        j["split"] = f->split;
+        j["warp_share"] = f->warp_share;
+        j["measured_warp_over_weft"] = rgb(f->measured_ratio);
+      }
+      j["fitted_warp_over_weft"] = rgb(f->fitted_ratio);
+    }
+  }
   if (check)
     capture["appearance_check"] = {{"map", check->map}, {"truth", check->truth}, {"views", check->views},
                                    {"relative_rmse", check->relative_rmse},
@@ -110,6 +130,19 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
   std::snprintf(line, sizeof line, "weave family %s, RMS relative residual %g over %zu cells of %zu photos, %g s\n",
                 r.fit.preset.c_str(), r.fit.rms_relative, r.observations.size(), r.photos.size(), r.seconds);
   out += line;
+  if (r.closeup && r.fit.closeup && r.fit.closeup->one_colour) {
+    std::snprintf(line, sizeof line, "close-up %s: one %s (its clusters do not separate): the threads' %s %s\n",
+                  r.closeup_file.c_str(), r.fit.closeup->one_lightness ? "colour" : "hue",
+                  r.fit.closeup->one_lightness ? "colours" : "chromaticities",
+                  r.fit.closeup->used ? "tied" : ("not tied, " + r.fit.closeup->rejected).c_str());
+    out += line;
+  } else if (r.closeup && r.fit.closeup) {
+    const CloseupFit& f = *r.fit.closeup;
+    std::snprintf(line, sizeof line, "close-up %s: warp ÷ weft (%.3f %.3f %.3f) measured, (%.3f %.3f %.3f) fitted%s%s\n",
+                  r.closeup_file.c_str(), f.measured_ratio.r, f.measured_ratio.g, f.measured_ratio.b, f.fitted_ratio.r,
+                  f.fitted_ratio.g, f.fitted_ratio.b, f.used ? "" : "; not used: ", f.rejected.c_str());
+    out += line;
+  }
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& t = r.fit.fabric.threads[j];
     const ThreadUncertainty& s = r.fit.sigma[j];

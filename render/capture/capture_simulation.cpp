@@ -13,8 +13,10 @@
 #include "capture/capture_lighting.h"
 #include "capture/card_camera.h"
 #include "capture/card_samples.h"
+#include "capture/closeup_simulation.h"
 #include "capture/photo_files.h"
 #include "capture/response_calibration.h"
+#include "capture/simulated_camera.h"
 #include "core/cloth_bsdf.h"
 #include "probe/mock_probe_source.h"
 #include "reference/environment_samples.h"
@@ -28,17 +30,6 @@ constexpr double kSwatchHalf = 0.035;  // a 70 mm swatch
 constexpr int kClothGrid = 9;          // view points across the swatch per side
 constexpr int kBracketStep = 3;        // stops between the ball's bracketed exposures
 constexpr int kMaxBrackets = 6;
-
-// The camera that simulations stand in for.
-struct TrueCamera {
-  ResponseModel response{1.12, 0.10, glm::dvec3(1.0)};
-  glm::dvec3 white_balance{1.04, 1.0, 0.93};
-  double shot_noise = 1.0 / 3000.0;  // variance per unit linear value
-  double read_noise = 0.002;
-  // Full colour resolution: halved, it tints a lamp a few pixels wide on the ball toward grey
-  // (docs/capture.md asks for a camera's 4:4:4 setting or PNG).
-  JpegChroma jpeg_chroma = JpegChroma::full;
-};
 
 struct Lights {
   std::vector<FitLight> above;  // the samples above the card's horizon
@@ -88,7 +79,7 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
   if (options.jpeg_quality < 1 || options.jpeg_quality > 100) throw std::invalid_argument("JPEG quality must be in [1, 100]");
   std::filesystem::create_directories(dir);
   const CaptureCard& card = capture_card();
-  const TrueCamera truth_cam;
+  const SimulatedCamera truth_cam;
   const Lights lights = lights_above(map, options.light_cells);
   const glm::dvec3 white = lights.irradiance / kPi;  // radiance of a ρ = 1 diffuser
   // Exposure: the paper at half scale, leaving headroom for the cloth's highlights.
@@ -202,12 +193,8 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
             if (const auto p = cam.on_card(sx, sy)) linear += exposure * k * plane_radiance(*p);
           }
           linear = (linear + static_cast<double>(on_ball) * ball_linear(x, y)) / 4.0;
-          const double r2 = image_radius2(photo, x + 0.5, y + 0.5);
-          linear *= truth_cam.white_balance * (1.0 - truth_cam.response.vignetting * r2);
-          for (int c = 0; c < 3; ++c) {
-            const double sigma = std::sqrt(std::max(linear[c], 0.0) * truth_cam.shot_noise + truth_cam.read_noise * truth_cam.read_noise);
-            photo.rgb[(static_cast<size_t>(y) * w + x) * 3 + c] = curve.encode(linear[c] + sigma * unit(noise_rng));
-          }
+          const auto code = truth_cam.develop(linear, image_radius2(photo, x + 0.5, y + 0.5), curve, noise_rng, unit);
+          std::copy(code.begin(), code.end(), &photo.rgb[(static_cast<size_t>(y) * w + x) * 3]);
         }
         if (count_progress) {
           const int done = ++rows_done;
@@ -257,6 +244,22 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
     shot["exposure_stops"] = -stops_down;
     shot["camera_centre"] = {cam.C.x, cam.C.y, cam.C.z};
     truth["photos"].push_back(shot);
+  }
+  if (options.closeup) {
+    // Straight above the swatch, right after the last photo (the swatch not turned since).
+    CloseupSimulationOptions closeup;
+    closeup.width = w;
+    closeup.height = h;
+    closeup.turn = kPi * (options.photos - 1) / options.photos;
+    closeup.exposure_scale = k;
+    closeup.tangent_samples = options.tangent_samples;
+    closeup.seed = options.seed;
+    const std::string name = std::string(kCloseupStem) + ".jpg";
+    const SimulatedCloseup shot = simulate_closeup(fabric, lights.above, truth_cam, closeup);
+    write_jpeg(shot.photo, dir / name, options.jpeg_quality, truth_cam.jpeg_chroma);
+    const glm::dvec3& q = shot.warp_over_weft;
+    truth["closeup"] = {{"file", name}, {"turn_deg", glm::degrees(closeup.turn)}, {"field_mm", closeup.field_mm},
+                        {"warp_over_weft", {q.r, q.g, q.b}}};
   }
   CaptureInfo info{w, h, std::nullopt};
   if (options.record_focal) info.focal_px = f;

@@ -8,6 +8,7 @@
 //  - the mirror ball: drawn by the mock probe camera (probe/mock_probe_source.h) in the map turned
 //    into that camera's frame;
 //  - then the camera: vignetting, sensor noise, a response curve about sRGB, white balance, JPEG;
+//  - closeup.jpg: the swatch from straight above after the last photo, its threads resolved;
 //  - while the ball's highlights clip, the same photo 3, 6, … stops darker (photo_files.h's
 //    brackets), as a photographer brackets the exposure.
 // It writes only what a real capture has: the photos, their brackets and capture.json. The truth
@@ -37,6 +38,8 @@ struct CaptureSimulationOptions {
   // A camera's finest JPEG, as the capture procedure asks (docs/capture.md: at 90 a sparse
   // thread's colour error doubles, from the ball's few lamp pixels).
   int jpeg_quality = 95;
+  // closeup.jpg beside the photos (capture/closeup_simulation.h): the threads resolved.
+  bool closeup = true;
   std::function<void(double)> progress;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -144,6 +145,13 @@ constexpr double kSecondStartWithin = 4.0;        // × the lowest cost after th
 // 1σ of a level error common to every cell, per channel (the response's scale, the ball's
 // calibration): taken as the 2 % a cell's residual unit allows.
 constexpr double kLevelSigma = 0.02;
+// 1σ of the close-up's log ratio of the threads' means, per channel: the ball's lighting against
+// the room's (the ratio depends on it through each thread's highlight), the k-means' split, JPEG.
+constexpr double kCloseupSigma = 0.05;
+// 1σ of the difference of the chromaticities A/(A_r + A_g + A_b) of two threads a close-up shows
+// as one hue, and of their lightness A_r + A_g + A_b (relative) when it shows one colour.
+constexpr double kOneColourSigma = 0.02;
+constexpr double kOneLightnessSigma = 0.05;
 
 struct Residuals {
   using Scalar = double;
@@ -154,9 +162,14 @@ struct Residuals {
 
   const Geometry* g;
   const std::vector<FitLight>* lights;
-  const std::vector<SwatchObservation>* obs;
+  const std::vector<SwatchObservation>* obs;  // the photos' cells; a close-up is g's last observation
   std::vector<glm::dvec3> scale;  // per observation: the residual's unit
   bool robust = true;
+  // The close-up's cluster means, the warp's first, and the threads' coverages a_j.
+  std::optional<std::array<glm::dvec3, 2>> closeup;
+  bool one_colour = false;     // the threads' chromaticities tied instead
+  bool one_lightness = false;  // ... and their lightness
+  std::array<double, 2> coverage{1, 1};
   // The family's own k_d, γ_s and γ_v as a weak prior (z units): a few turns of a flat swatch
   // leave the threads' lobes partly interchangeable, and the preset is the likeliest cloth.
   Eigen::VectorXd prior;
@@ -168,7 +181,8 @@ struct Residuals {
   mutable std::array<Cache, 4> cache;
 
   int inputs() const { return kParams; }
-  int values() const { return 3 * g->observations + 6; }
+  int cells() const { return static_cast<int>(obs->size()); }
+  int values() const { return 3 * cells() + 6 + (closeup || one_colour ? 3 : 0) + (one_lightness ? 1 : 0); }
 
   const std::vector<glm::dvec3>& lobe(int j, bool volume, double gamma) const {
     Cache& c = cache[2 * j + volume];
@@ -179,21 +193,44 @@ struct Residuals {
     return c.sums;
   }
 
-  std::vector<glm::dvec3> model(const Eigen::VectorXd& z) const {
-    std::vector<glm::dvec3> out(g->observations, glm::dvec3(0));
-    for (int j = 0; j < 2; ++j) {
-      const glm::dvec3 A(to_value(6 * j, z[6 * j]), to_value(6 * j + 1, z[6 * j + 1]), to_value(6 * j + 2, z[6 * j + 2]));
-      const double kd = to_value(6 * j + 3, z[6 * j + 3]);
-      const auto& s = lobe(j, false, to_value(6 * j + 4, z[6 * j + 4]));
-      const auto& v = lobe(j, true, to_value(6 * j + 5, z[6 * j + 5]));
-      for (int o = 0; o < g->observations; ++o) out[o] += s[o] + A * ((1 - kd) * v[o] + kd * g->flat[j][o]);
-    }
+  // Thread j's share of the swatch's radiance at every observation of g.
+  std::vector<glm::dvec3> thread_model(const Eigen::VectorXd& z, int j) const {
+    std::vector<glm::dvec3> out(g->observations);
+    const glm::dvec3 A(to_value(6 * j, z[6 * j]), to_value(6 * j + 1, z[6 * j + 1]), to_value(6 * j + 2, z[6 * j + 2]));
+    const double kd = to_value(6 * j + 3, z[6 * j + 3]);
+    const auto& s = lobe(j, false, to_value(6 * j + 4, z[6 * j + 4]));
+    const auto& v = lobe(j, true, to_value(6 * j + 5, z[6 * j + 5]));
+    for (int o = 0; o < g->observations; ++o) out[o] = s[o] + A * ((1 - kd) * v[o] + kd * g->flat[j][o]);
     return out;
+  }
+
+  std::vector<glm::dvec3> model(const Eigen::VectorXd& z) const {
+    std::vector<glm::dvec3> out = thread_model(z, 0);
+    const std::vector<glm::dvec3> weft = thread_model(z, 1);
+    for (int o = 0; o < g->observations; ++o) out[o] += weft[o];
+    return out;
+  }
+
+  // Warp ÷ weft resolved mean radiance straight above (the close-up's view, g's last observation).
+  glm::dvec3 closeup_ratio(const Eigen::VectorXd& z) const {
+    const glm::dvec3 warp = thread_model(z, 0).back() / coverage[0], weft = thread_model(z, 1).back() / coverage[1];
+    return glm::max(warp, glm::dvec3(1e-12)) / glm::max(weft, glm::dvec3(1e-12));
+  }
+
+  // How far a warp ÷ weft ratio misses the measured one, per channel (log).
+  static glm::dvec3 closeup_miss(const glm::dvec3& fitted, const std::array<glm::dvec3, 2>& measured) {
+    return glm::log(fitted) - glm::log(measured[0] / measured[1]);
+  }
+  // The robust cost of the photos' cells alone.
+  double cells_cost(const Eigen::VectorXd& z) const {
+    Eigen::VectorXd f(values());
+    (*this)(z, f);
+    return f.head(3 * cells()).squaredNorm();
   }
 
   int operator()(const Eigen::VectorXd& z, Eigen::VectorXd& f) const {
     const auto m = model(z);
-    for (int o = 0; o < g->observations; ++o)
+    for (int o = 0; o < cells(); ++o)
       for (int c = 0; c < 3; ++c) {
         double r = (m[o][c] - (*obs)[o].value[c]) / scale[o][c];
         // Huber's loss as a residual: its square is the loss.
@@ -201,15 +238,118 @@ struct Residuals {
         f[3 * o + c] = r;
       }
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 3; ++i) f[3 * g->observations + 3 * j + i] = kPriorWeight * (z[6 * j + 3 + i] - prior[6 * j + 3 + i]);
+      for (int i = 0; i < 3; ++i) f[3 * cells() + 3 * j + i] = kPriorWeight * (z[6 * j + 3 + i] - prior[6 * j + 3 + i]);
+    if (closeup) {
+      const glm::dvec3 d = closeup_miss(closeup_ratio(z), *closeup) / kCloseupSigma;
+      for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c];
+    } else if (one_colour) {
+      const glm::dvec3 a(to_value(0, z[0]), to_value(1, z[1]), to_value(2, z[2])), b(to_value(0, z[6]), to_value(1, z[7]), to_value(2, z[8]));
+      const glm::dvec3 d = a / std::max(a.r + a.g + a.b, 1e-6) - b / std::max(b.r + b.g + b.b, 1e-6);
+      for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c] / kOneColourSigma;
+      if (one_lightness) {
+        const double la = a.r + a.g + a.b, lb = b.r + b.g + b.b;
+        f[3 * cells() + 9] = (la - lb) / (kOneLightnessSigma * std::max(0.5 * (la + lb), 1e-6));
+      }
+    }
     return 0;
   }
 };
 
+// One Levenberg–Marquardt fit of a family from a start: where it ended, its cost.
+struct Run {
+  double cost = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd z;
+  int iterations = 0;
+};
+
+void minimize(const Residuals& r, Run& run) {
+  Eigen::NumericalDiff<Residuals> diff(r);
+  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(diff);
+  lm.parameters.maxfev = 60 * (kParams + 1);
+  lm.parameters.xtol = 1e-8;
+  lm.minimize(run.z);
+  run.iterations += static_cast<int>(lm.iter);
+  Eigen::VectorXd f(r.values());
+  r(run.z, f);
+  run.cost = f.squaredNorm();
+}
+
+// The chosen family fitted again with the close-up (fabric_fit.h): `run` and `r` take it when it is
+// used, and are left as they were when it is not.
+CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& closeup) {
+  CloseupFit fit;
+  const glm::dvec3 ratio = r.closeup_ratio(run.z);
+  const double expected = r.coverage[0] / (r.coverage[0] + r.coverage[1]);
+  std::array<glm::dvec3, 2> measured{};
+  // One hue when the split on colour alone does not separate: a split by lightness then cuts one
+  // colour's shading (or two lightnesses of one dye), which no ratio of two threads describes.
+  fit.one_colour = true;
+  for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
+  double best_share_error = 1;
+  for (size_t k = 0; k < closeup.splits.size() && !fit.one_colour; ++k) {
+    const CloseupSplit& split = closeup.splits[k];
+    if (!split.separated()) continue;
+    const auto& m = split.mean;
+    int warp = std::abs(split.share[1] - expected) < std::abs(split.share[0] - expected);
+    if (std::abs(expected - 0.5) < kCloseupShare / 2) {
+      // Even coverages: the shares cannot tell; the family's fit without the close-up can.
+      const double as_is = glm::length(Residuals::closeup_miss(ratio, {m[0], m[1]}));
+      warp = glm::length(Residuals::closeup_miss(ratio, {m[1], m[0]})) < as_is;
+    }
+    const double share_error = std::abs(split.share[warp] - expected);
+    if (share_error <= kCloseupShare && share_error < best_share_error) {
+      best_share_error = share_error;
+      fit.split = static_cast<int>(k);
+      fit.warp_cluster = warp;
+      fit.warp_share = split.share[warp];
+      measured = {m[warp], m[1 - warp]};
+    }
+  }
+  if (fit.one_colour) {
+    r.one_colour = true;
+    // Neither split separates: one colour, its lightness too.
+    fit.one_lightness = r.one_lightness = !closeup.splits.empty() && std::none_of(closeup.splits.begin(), closeup.splits.end(),
+                                                                                  [](const CloseupSplit& s) { return s.separated(); });
+  } else if (fit.split < 0) {
+    char why[200];
+    const CloseupSplit& s = closeup.splits.front();
+    std::snprintf(why, sizeof why, "no split's clusters cover what the family's threads do (%.0f %% and %.0f %% against %.0f %%)",
+                  100 * std::max(s.share[0], s.share[1]), 100 * std::min(s.share[0], s.share[1]), 100 * std::max(expected, 1 - expected));
+    fit.rejected = why;
+    fit.fitted_ratio = ratio;
+    return fit;
+  } else {
+    fit.measured_ratio = measured[0] / measured[1];
+    r.closeup = measured;
+  }
+  const double cost_without = r.cells_cost(run.z);
+  Run with = run;
+  minimize(r, with);
+  fit.fitted_ratio = r.closeup_ratio(with.z);
+  const glm::dvec3 miss = glm::abs(Residuals::closeup_miss(fit.fitted_ratio, measured));
+  const double worst = fit.one_colour ? 0.0 : std::max({miss.r, miss.g, miss.b}), cost_with = r.cells_cost(with.z);
+  char why[160] = "";
+  if (worst > kCloseupMisses)
+    std::snprintf(why, sizeof why, "the fitted threads miss its warp ÷ weft ratio by %.0f %% in a channel", 100 * (std::exp(worst) - 1));
+  else if (cost_with > kCloseupCostGrowth * cost_without)
+    std::snprintf(why, sizeof why, "matching it costs the photos' fit %.1f× its cost without", cost_with / cost_without);
+  fit.used = why[0] == 0;
+  fit.rejected = why;
+  if (fit.used) {
+    run = with;
+  } else {
+    r.closeup.reset();
+    r.one_colour = r.one_lightness = false;
+    fit.fitted_ratio = ratio;
+  }
+  return fit;
+}
+
 }  // namespace
 
 FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const std::vector<FitLight>& lights,
-                     const std::vector<Fabric>& presets, const FabricFitOptions& options) {
+                     const std::vector<Fabric>& presets, const FabricFitOptions& options,
+                     const std::optional<CloseupObservation>& closeup) {
   if (observations.empty() || lights.empty() || presets.empty())
     throw std::invalid_argument("fit_fabric: needs observations, lights and presets");
   glm::dvec3 mean(0);
@@ -218,13 +358,12 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
   const double level = (mean.r + mean.g + mean.b) / 3;
   // One family from one start: the preset's own lobes, or broad ones (a fabric of the family whose
   // lobes are far wider than its preset's lies beyond the preset start's local minimum).
-  struct Run {
-    double cost = std::numeric_limits<double>::infinity();
-    Eigen::VectorXd z;
-    int iterations = 0;
-  };
   auto residuals = [&](const Geometry& g, const Fabric& preset) {
-    Residuals r{&g, &lights, &observations, {}, true, {}, {}};
+    Residuals r;
+    r.g = &g;
+    r.lights = &lights;
+    r.obs = &observations;
+    r.coverage = {preset.threads[0].coverage, preset.threads[1].coverage};
     // The residual's unit: 2 % of the value (JPEG, noise, the response's fit), floored at 0.5 % of the
     // swatch's mean so a black channel does not count for more than it can be measured.
     for (const auto& o : observations) r.scale.push_back(0.02 * glm::max(o.value, glm::dvec3(0.25 * level)));
@@ -236,9 +375,14 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
     }
     return r;
   };
-  auto run_family = [&](const Fabric& preset, bool broad) {
-    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
-    Residuals r = residuals(g, preset);
+  // Each family's geometry, once: the photos' cells, then the close-up's view (straight above).
+  std::vector<SwatchObservation> seen = observations;
+  if (closeup) seen.push_back({glm::dvec3(0), glm::dvec3(0, 0, 1), closeup->turn, -1});
+  std::vector<Geometry> geometries(presets.size());
+  auto run_family = [&](size_t p, bool broad) {
+    const Fabric& preset = presets[p];
+    if (geometries[p].observations == 0) geometries[p] = precompute(preset, seen, lights, options.tangent_samples);
+    const Residuals r = residuals(geometries[p], preset);
     Run run;
     run.z = r.prior;
     if (broad)
@@ -246,30 +390,22 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
         run.z[6 * j + 4] = to_z(4, glm::radians(kBroadStart[0]));
         run.z[6 * j + 5] = to_z(5, glm::radians(kBroadStart[1]));
       }
-    Eigen::NumericalDiff<Residuals> diff(r);
-    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(diff);
-    lm.parameters.maxfev = 60 * (kParams + 1);
-    lm.parameters.xtol = 1e-8;
-    lm.minimize(run.z);
-    run.iterations = static_cast<int>(lm.iter);
-    Eigen::VectorXd f(r.values());
-    r(run.z, f);
-    run.cost = f.squaredNorm();
+    minimize(r, run);
     return run;
   };
   // Every family from its preset, then again from broad lobes for those within kSecondStartWithin
   // of the lowest cost (the others cannot win).
   std::vector<Run> runs;
   for (size_t p = 0; p < presets.size(); ++p) {
-    runs.push_back(run_family(presets[p], false));
-    if (options.progress) options.progress(0.75 * static_cast<double>(p + 1) / presets.size());
+    runs.push_back(run_family(p, false));
+    if (options.progress) options.progress(0.7 * static_cast<double>(p + 1) / presets.size());
   }
   double lowest = std::numeric_limits<double>::infinity();
   for (const Run& run : runs) lowest = std::min(lowest, run.cost);
   for (size_t p = 0; p < presets.size(); ++p) {
     if (runs[p].cost <= kSecondStartWithin * lowest)
-      if (Run again = run_family(presets[p], true); again.cost < runs[p].cost) runs[p] = std::move(again);
-    if (options.progress) options.progress(0.75 + 0.25 * static_cast<double>(p + 1) / presets.size());
+      if (Run again = run_family(p, true); again.cost < runs[p].cost) runs[p] = std::move(again);
+    if (options.progress) options.progress(0.7 + 0.25 * static_cast<double>(p + 1) / presets.size());
   }
   FabricFit best;
   size_t chosen = 0;
@@ -279,11 +415,12 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
   }
   {
     const Fabric& preset = presets[chosen];
-    const Run& run = runs[chosen];
+    Run& run = runs[chosen];
+    const double cost = run.cost;  // what the family was chosen by
+    Residuals r = residuals(geometries[chosen], preset);
+    if (closeup) best.closeup = refit_with_closeup(r, run, *closeup);
+    if (options.progress) options.progress(1.0);
     const Eigen::VectorXd& z = run.z;
-    const double cost = run.cost;
-    const Geometry g = precompute(preset, observations, lights, options.tangent_samples);
-    Residuals r = residuals(g, preset);
     Eigen::NumericalDiff<Residuals> diff(r);
     best.cost = cost;
     best.preset = preset.name;
@@ -298,12 +435,12 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
     }
     const auto m = r.model(z);
     double rel = 0;
-    for (int o = 0; o < g.observations; ++o)
+    for (int o = 0; o < r.cells(); ++o)
       for (int c = 0; c < 3; ++c) {
         const double d = (m[o][c] - observations[o].value[c]) / std::max(observations[o].value[c], 0.05 * level);
         rel += d * d;
       }
-    best.rms_relative = std::sqrt(rel / (3.0 * g.observations));
+    best.rms_relative = std::sqrt(rel / (3.0 * r.cells()));
     // 1σ (fit_uncertainty.h), carried through the logistic maps.
     r.robust = false;
     Eigen::MatrixXd J(r.values(), kParams);
@@ -313,7 +450,7 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
     std::array<Eigen::VectorXd, 3> level;
     for (int c = 0; c < 3; ++c) {
       level[c] = Eigen::VectorXd::Zero(r.values());
-      for (int o = 0; o < g.observations; ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
+      for (int o = 0; o < r.cells(); ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
     }
     const Eigen::MatrixXd cov = fit_covariance(J, f2, level, kLevelSigma);
     for (int j = 0; j < 2; ++j) {

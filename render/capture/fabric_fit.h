@@ -7,13 +7,18 @@
 //
 // The evaluation is the model itself, arranged for speed: per observation, light and tangent
 // sample, everything but the two Gaussians N(θ_h; γ_s) and N(θ_h; γ_v) is fixed by the weave and
-// the geometry, so it is computed once per preset; A and k_d enter linearly.
+// the geometry, so it is computed once per preset; A and k_d enter linearly. A close-up adds the
+// ratio of the threads' resolved mean radiances straight above: each thread's term of the
+// fabric-level model over its coverage a_j (the resolved weave averages to the fabric level).
+#include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "capture/closeup_shot.h"
 #include "core/fabric.h"
 
 namespace weft {
@@ -33,6 +38,30 @@ struct FitLight {
   glm::dvec3 power;
 };
 
+// The close-up (capture/closeup_shot.h): its splits into two colour clusters, not yet told apart
+// as warp and weft, seen from straight above with the swatch at `turn`.
+struct CloseupObservation {
+  std::vector<CloseupSplit> splits;
+  double turn = 0;
+};
+
+// What the fit made of the close-up.
+struct CloseupFit {
+  // Whether the fit kept it: not when the fabric cannot match both the photos and the close-up
+  // (the fit without it stands, and `rejected` says why).
+  bool used = false;
+  // The split on colour alone does not separate: the close-up shows one hue, and the threads'
+  // chromaticities are tied; when the split with lightness does not either, their lightness too.
+  bool one_colour = false;
+  bool one_lightness = false;
+  std::string rejected;
+  int split = -1;                  // the split taken (CloseupObservation::splits)
+  int warp_cluster = 0;            // its cluster taken as the warp (the other is the weft)
+  double warp_share = 0;           // that cluster's share, against the family's a_1 / (a_1 + a_2)
+  glm::dvec3 measured_ratio{1.0};  // warp ÷ weft mean radiance per channel, from the close-up
+  glm::dvec3 fitted_ratio{1.0};    // the same of the fitted fabric
+};
+
 struct ThreadUncertainty {
   glm::dvec3 albedo{0.0};
   double kd = 0, gamma_s = 0, gamma_v = 0;  // γ in radians
@@ -46,6 +75,7 @@ struct FabricFit {
   std::array<ThreadUncertainty, 2> sigma;  // 1σ from the Jacobian at the optimum
   std::vector<std::pair<std::string, double>> family_costs;  // every preset tried, its cost
   int iterations = 0;
+  std::optional<CloseupFit> closeup;
 };
 
 struct FabricFitOptions {
@@ -53,9 +83,20 @@ struct FabricFitOptions {
   std::function<void(double)> progress;
 };
 
-// Throws std::invalid_argument when there are no observations, lights or presets.
+// Throws std::invalid_argument when there are no observations, lights or presets. With a
+// close-up, the family is still chosen by the turned photos; its fit then also matches the
+// close-up's ratio of the threads' colours, taken from the first split whose clusters cover the
+// family's coverages within kCloseupShare (the warp is the cluster nearer a_1/(a_1 + a_2), or for
+// even coverages the one whose ratio the family's first fit comes closer to), or with the
+// threads' chromaticities tied when the split on colour alone does not separate (one hue), unless that fit then misses the ratio by more than kCloseupMisses in a
+// channel's log or the photos by more than kCloseupCostGrowth times their cost without it: the
+// clusters are then not the threads (a glossy float's highlight can make a cluster of its own).
+inline constexpr double kCloseupMisses = 0.2;
+inline constexpr double kCloseupShare = 0.15;
+inline constexpr double kCloseupCostGrowth = 2.0;
 FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const std::vector<FitLight>& lights,
-                     const std::vector<Fabric>& presets, const FabricFitOptions& options = {});
+                     const std::vector<Fabric>& presets, const FabricFitOptions& options = {},
+                     const std::optional<CloseupObservation>& closeup = std::nullopt);
 
 // The same model, straight: the swatch's radiance at one view (for the report's fitted render).
 glm::dvec3 swatch_radiance(const Fabric& fabric, double turn, const glm::dvec3& wo, const std::vector<FitLight>& lights,

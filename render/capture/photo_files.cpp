@@ -64,9 +64,15 @@ std::optional<std::pair<std::string, double>> bracket_of(const std::filesystem::
 std::vector<std::filesystem::path> list_photos(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir))
-    if (is_photo(entry) && !bracket_of(entry.path())) files.push_back(entry.path());
+    if (is_photo(entry) && !bracket_of(entry.path()) && entry.path().stem() != kCloseupStem) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+std::optional<std::filesystem::path> closeup_photo(const std::filesystem::path& dir) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (is_photo(entry) && entry.path().stem() == kCloseupStem) return entry.path();
+  return std::nullopt;
 }
 
 std::vector<BracketFile> list_brackets(const std::filesystem::path& photo) {

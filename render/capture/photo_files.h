@@ -34,8 +34,15 @@ void write_jpeg(const Photo& photo, const std::filesystem::path& file, int quali
                 JpegChroma chroma = JpegChroma::halved);
 // Throws PhotoError for an unreadable, corrupt or truncated file.
 Photo read_photo(const std::filesystem::path& file);
-// The photos of a capture folder (*.jpg, *.jpeg, *.png), sorted by name, their brackets left out.
+// The photos of a capture folder (*.jpg, *.jpeg, *.png), sorted by name, their brackets and the
+// close-up left out.
 std::vector<std::filesystem::path> list_photos(const std::filesystem::path& dir);
+
+// The close-up (closeup.jpg or .png): the swatch from straight above, close enough that each
+// thread spans several pixels, shot right after the last photo without moving the swatch
+// (capture/closeup_shot.h reads it). Nothing when the folder has none.
+inline constexpr const char* kCloseupStem = "closeup";
+std::optional<std::filesystem::path> closeup_photo(const std::filesystem::path& dir);
 
 // A photo's darker exposures for the mirror ball's highlights (a camera's exposure bracketing,
 // shot from the same pose right after it): <stem>_ev-3.jpg, <stem>_ev-6.jpg, … beside

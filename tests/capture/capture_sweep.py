@@ -61,8 +61,11 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
         return {"name": name, "maps": f"{photo_map} → {check_map}", "error": r.stderr.strip().splitlines()[-1:]}
     cap = json.loads(fitted.read_text())["capture"]
     de = cap["appearance_check"]["thread_delta_e2000"]  # weft's CIEDE2000 of each thread's colour A
+    c = cap.get("closeup")
+    kind = ("one colour" if c.get("one_lightness") else "one hue") if c and c.get("one_colour") else "ratio"
+    closeup = "—" if c is None else kind if c["used"] else "not used: " + c.get("not_used", "")
     return {"name": name, "maps": f"{photo_map} → {check_map}", "family": cap["weave_family"], "family_right": cap["weave_family"] == family,
-            "delta_e": de, "rmse": cap["appearance_check"]["relative_rmse"], "seconds": seconds}
+            "delta_e": de, "rmse": cap["appearance_check"]["relative_rmse"], "seconds": seconds, "closeup": closeup}
 
 
 def main():
@@ -92,14 +95,14 @@ def main():
             row = run_case(a.weft, name, path, family, photo_map, check_map, work, seed=100 + i)
             print("   ", json.dumps(row), file=sys.stderr, flush=True)
             rows.append(row)
-    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s |", "|---|---|---|---|---|---|"]
+    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s | close-up |", "|---|---|---|---|---|---|---|"]
     for r in rows:
         if "error" in r:
-            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | |")
+            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | | |")
         else:
             fam = r["family"] if r["family_right"] else f"**{r['family']} (wrong)**"
             lines.append(f"| {r['name']} | {r['maps']} | {fam} | {r['delta_e'][0]:.1f}, {r['delta_e'][1]:.1f} | "
-                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} |")
+                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} | {r['closeup']} |")
     ok = [r for r in rows if "error" not in r]
     met = sum(r["family_right"] and max(r["delta_e"]) <= 3 and r["rmse"] <= 0.05 for r in ok)
     lines.append("")

@@ -1,0 +1,95 @@
+#include "capture/closeup_simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "capture/card_samples.h"
+#include "core/cloth_bsdf.h"
+#include "core/weave_layout.h"
+
+namespace weft {
+
+namespace {
+
+constexpr int kArcBins = 128;    // along each float: its tilt, so its shading, changes smoothly
+constexpr int kSupersample = 3;  // per side: the yarns' edges are partial pixels, as a lens draws them
+
+}  // namespace
+
+SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLight>& lights, const SimulatedCamera& camera,
+                       const CloseupSimulationOptions& options) {
+  const double t = options.turn;
+  const glm::dvec3 u(std::cos(t), std::sin(t), 0), v(-std::sin(t), std::cos(t), 0), n(0, 0, 1);
+  const glm::dvec3 wo(0, 0, 1);
+  // The radiance of each thread along its float: a float's samples lie uniformly in arc length.
+  const ClothBsdf bsdf(fabric, options.tangent_samples);
+  std::array<std::vector<glm::dvec3>, 2> along{std::vector<glm::dvec3>(kArcBins, glm::dvec3(0)),
+                                               std::vector<glm::dvec3>(kArcBins, glm::dvec3(0))};
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < 2 * kArcBins; ++b) {
+    const int j = b / kArcBins;
+    ClothBsdf::Point point = bsdf.at(SurfaceFrame{n, u, v});
+    const double tilt = weave_tilt(fabric, WeaveSample{j, ((b % kArcBins) + 0.5) / kArcBins, 0.0});
+    glm::dvec3 sum(0);
+    for (const FitLight& l : lights) sum += l.power * point.resolved_integrand(j, tilt, l.direction, wo);
+    along[j][b % kArcBins] = sum;
+  }
+
+  std::mt19937_64 rng(options.seed * 104729 + 17);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double roll = 2 * std::numbers::pi * uniform(rng);
+  const glm::dvec2 phase(uniform(rng), uniform(rng));
+  const WeaveLayout layout(fabric);
+  const glm::dvec2 repeat_mm = 10.0 * weave_repeat_cm(fabric);
+  const int w = options.width, h = options.height;
+  const double mm_per_px = options.field_mm / w;
+  std::vector<glm::dvec3> linear(static_cast<size_t>(w) * h);
+#pragma omp parallel for schedule(static)
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      glm::dvec3 sum(0);
+      for (int s = 0; s < kSupersample * kSupersample; ++s) {
+        const double px = (x + (s % kSupersample + 0.5) / kSupersample - 0.5 * w) * mm_per_px;
+        const double py = (0.5 * h - y - (s / kSupersample + 0.5) / kSupersample) * mm_per_px;
+        const glm::dvec3 p(px * std::cos(roll) - py * std::sin(roll), px * std::sin(roll) + py * std::cos(roll), 0);
+        const WeaveSample at = layout.at(glm::dot(p, u) / repeat_mm.x + phase.x, glm::dot(p, v) / repeat_mm.y + phase.y);
+        if (at.thread >= 0) sum += along[at.thread][std::min(static_cast<int>(at.arc * kArcBins), kArcBins - 1)];
+      }
+      linear[static_cast<size_t>(y) * w + x] = options.exposure_scale * sum / double(kSupersample * kSupersample);
+    }
+
+  std::vector<double> peaks;
+  for (const glm::dvec3& l : linear) {
+    const glm::dvec3 balanced = l * camera.white_balance;
+    peaks.push_back(std::max({balanced.r, balanced.g, balanced.b}));
+  }
+  std::nth_element(peaks.begin(), peaks.begin() + peaks.size() * 995 / 1000, peaks.end());
+  const double peak = peaks[peaks.size() * 995 / 1000];
+  const double exposure = peak > 0.9 ? std::exp2(-std::ceil(std::log2(peak / 0.9))) : 1.0;
+
+  SimulatedCloseup out;
+  glm::dvec3 warp(0), weft(0);
+  for (int b = 0; b < kArcBins; ++b) {
+    warp += along[0][b];
+    weft += along[1][b];
+  }
+  out.warp_over_weft = warp / glm::max(weft, glm::dvec3(1e-300));
+  Photo& photo = out.photo;
+  photo = Photo{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 3)};
+  const CameraResponse curve = camera.response.curve();
+#pragma omp parallel for schedule(static)
+  for (int y = 0; y < h; ++y) {
+    std::mt19937_64 noise_rng(options.seed * 6151 + static_cast<std::uint64_t>(y));
+    std::normal_distribution<double> unit(0.0, 1.0);
+    for (int x = 0; x < w; ++x) {
+      const auto code = camera.develop(exposure * linear[static_cast<size_t>(y) * w + x], image_radius2(photo, x + 0.5, y + 0.5),
+                                       curve, noise_rng, unit);
+      std::copy(code.begin(), code.end(), &photo.rgb[(static_cast<size_t>(y) * w + x) * 3]);
+    }
+  }
+  return out;
+}
+
+}  // namespace weft
