@@ -222,7 +222,7 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
       const glm::dvec3 linear = k * c * truth_cam.white_balance;
       peak = std::max({peak, linear.r, linear.g, linear.b});
     }
-    const int stops_down = peak > 0.9 ? std::min(10, static_cast<int>(std::ceil(std::log2(peak / 0.9)))) : 0;
+    const int stops_down = std::min(10, stops_to_fit(peak));
     const double exposure = std::exp2(-stops_down);
     char name[32];
     std::snprintf(name, sizeof name, "photo_%02d.jpg", i + 1);

@@ -67,7 +67,7 @@ SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLig
   }
   std::nth_element(peaks.begin(), peaks.begin() + peaks.size() * 995 / 1000, peaks.end());
   const double peak = peaks[peaks.size() * 995 / 1000];
-  const double exposure = peak > 0.9 ? std::exp2(-std::ceil(std::log2(peak / 0.9))) : 1.0;
+  const double exposure = std::exp2(-stops_to_fit(peak));
 
   SimulatedCloseup out;
   glm::dvec3 warp(0), weft(0);

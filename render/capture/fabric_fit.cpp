@@ -132,6 +132,17 @@ constexpr int kParams = 12;
 
 double logistic(double z) { return 1.0 / (1.0 + std::exp(-z)); }
 double to_value(int i, double z) { const Bounds& b = kBounds[i % 6]; return b.lo + (b.hi - b.lo) * logistic(z); }
+
+// Thread j's parameters at z.
+struct ThreadValues {
+  glm::dvec3 A;
+  double kd, gamma_s, gamma_v;
+};
+ThreadValues thread_values(const Eigen::VectorXd& z, int j) {
+  const int k = 6 * j;
+  return {glm::dvec3(to_value(k, z[k]), to_value(k + 1, z[k + 1]), to_value(k + 2, z[k + 2])), to_value(k + 3, z[k + 3]),
+          to_value(k + 4, z[k + 4]), to_value(k + 5, z[k + 5])};
+}
 double to_z(int i, double v) {
   const Bounds& b = kBounds[i % 6];
   const double f = std::clamp((v - b.lo) / (b.hi - b.lo), 0.02, 0.98);
@@ -193,27 +204,23 @@ struct Residuals {
     return c.sums;
   }
 
-  // Thread j's share of the swatch's radiance at every observation of g.
-  std::vector<glm::dvec3> thread_model(const Eigen::VectorXd& z, int j) const {
-    std::vector<glm::dvec3> out(g->observations);
-    const glm::dvec3 A(to_value(6 * j, z[6 * j]), to_value(6 * j + 1, z[6 * j + 1]), to_value(6 * j + 2, z[6 * j + 2]));
-    const double kd = to_value(6 * j + 3, z[6 * j + 3]);
-    const auto& s = lobe(j, false, to_value(6 * j + 4, z[6 * j + 4]));
-    const auto& v = lobe(j, true, to_value(6 * j + 5, z[6 * j + 5]));
-    for (int o = 0; o < g->observations; ++o) out[o] = s[o] + A * ((1 - kd) * v[o] + kd * g->flat[j][o]);
-    return out;
+  // Thread j's share of the swatch's radiance at observation o of g.
+  glm::dvec3 thread_at(const ThreadValues& t, int j, int o) const {
+    return lobe(j, false, t.gamma_s)[o] + t.A * ((1 - t.kd) * lobe(j, true, t.gamma_v)[o] + t.kd * g->flat[j][o]);
   }
 
   std::vector<glm::dvec3> model(const Eigen::VectorXd& z) const {
-    std::vector<glm::dvec3> out = thread_model(z, 0);
-    const std::vector<glm::dvec3> weft = thread_model(z, 1);
-    for (int o = 0; o < g->observations; ++o) out[o] += weft[o];
+    const ThreadValues warp = thread_values(z, 0), weft = thread_values(z, 1);
+    std::vector<glm::dvec3> out(g->observations);
+    for (int o = 0; o < g->observations; ++o) out[o] = thread_at(warp, 0, o) + thread_at(weft, 1, o);
     return out;
   }
 
   // Warp ÷ weft resolved mean radiance straight above (the close-up's view, g's last observation).
   glm::dvec3 closeup_ratio(const Eigen::VectorXd& z) const {
-    const glm::dvec3 warp = thread_model(z, 0).back() / coverage[0], weft = thread_model(z, 1).back() / coverage[1];
+    const int o = g->observations - 1;
+    const glm::dvec3 warp = thread_at(thread_values(z, 0), 0, o) / coverage[0];
+    const glm::dvec3 weft = thread_at(thread_values(z, 1), 1, o) / coverage[1];
     return glm::max(warp, glm::dvec3(1e-12)) / glm::max(weft, glm::dvec3(1e-12));
   }
 
@@ -243,7 +250,7 @@ struct Residuals {
       const glm::dvec3 d = closeup_miss(closeup_ratio(z), *closeup) / kCloseupSigma;
       for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c];
     } else if (one_colour) {
-      const glm::dvec3 a(to_value(0, z[0]), to_value(1, z[1]), to_value(2, z[2])), b(to_value(0, z[6]), to_value(1, z[7]), to_value(2, z[8]));
+      const glm::dvec3 a = thread_values(z, 0).A, b = thread_values(z, 1).A;
       const glm::dvec3 d = a / std::max(a.r + a.g + a.b, 1e-6) - b / std::max(b.r + b.g + b.b, 1e-6);
       for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c] / kOneColourSigma;
       if (one_lightness) {
@@ -428,10 +435,11 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
     best.fabric = preset;
     for (int j = 0; j < 2; ++j) {
       ThreadParams& t = best.fabric.threads[j];
-      t.albedo = glm::dvec3(to_value(0, z[6 * j]), to_value(1, z[6 * j + 1]), to_value(2, z[6 * j + 2]));
-      t.kd = to_value(3, z[6 * j + 3]);
-      t.gamma_s = to_value(4, z[6 * j + 4]);
-      t.gamma_v = to_value(5, z[6 * j + 5]);
+      const ThreadValues v = thread_values(z, j);
+      t.albedo = v.A;
+      t.kd = v.kd;
+      t.gamma_s = v.gamma_s;
+      t.gamma_v = v.gamma_v;
     }
     const auto m = r.model(z);
     double rel = 0;

@@ -13,6 +13,10 @@
 
 namespace weft {
 
+// The simulated photographer's exposure: whole stops below the metered one until `peak` (exposed,
+// white-balanced linear value) sits under 90 % of full scale.
+inline int stops_to_fit(double peak) { return peak > 0.9 ? static_cast<int>(std::ceil(std::log2(peak / 0.9))) : 0; }
+
 struct SimulatedCamera {
   ResponseModel response{1.12, 0.10, glm::dvec3(1.0)};
   glm::dvec3 white_balance{1.04, 1.0, 0.93};
