@@ -23,7 +23,7 @@ namespace {
 
 struct CaptureArgs {
   std::string photos_dir, card_out, simulate, map, out, truth_out, report, check_map, truth;
-  int dpi = 300, photos = 4, width = 1024, height = 768;
+  int dpi = 600, photos = 4, width = 1024, height = 768;
   unsigned seed = 1;
   int jpeg_quality = CaptureSimulationOptions{}.jpeg_quality;
 };
@@ -110,7 +110,7 @@ CommandAction add_capture_command(CLI::App& app) {
       "capture", "Fit a fabric file to photos of a swatch on the printed capture card beside a mirror ball");
   sub->footer(
       "Examples:\n"
-      "  weft capture --card card.png --dpi 300\n"
+      "  weft capture --card card.png\n"
       "  weft capture --simulate linen_plain --map interior --out shots/ --photos 4\n"
       "  weft capture shots/ --out fitted.json\n"
       "  weft capture shots/ --out fitted.json --truth linen_plain --check-map courtyard\n"

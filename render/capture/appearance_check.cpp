@@ -43,8 +43,13 @@ std::array<double, 2> thread_delta_e2000(const Fabric& truth, const Fabric& fitt
 
 AppearanceCheck check_appearance(const Fabric& truth, const Fabric& fitted, const EnvMap& map, const std::string& map_name,
                                  const AppearanceCheckOptions& options) {
-  return {map_name, truth.name, appearance_relative_rmse(truth, fitted, map, options), options.elevations * options.turns,
-          thread_delta_e2000(truth, fitted)};
+  return {map_name,
+          truth.name,
+          appearance_relative_rmse(truth, fitted, map, options),
+          options.elevations * options.turns,
+          thread_delta_e2000(truth, fitted),
+          fitted.weave.ends_per_cm / truth.weave.ends_per_cm,
+          fitted.weave.picks_per_cm / truth.weave.picks_per_cm};
 }
 
 }  // namespace weft

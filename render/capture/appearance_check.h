@@ -34,10 +34,13 @@ struct AppearanceCheck {
   double relative_rmse = 0;
   int views = 0;       // elevations × turns
   std::array<double, 2> thread_delta_e2000{};
+  // The fitted ends and picks per cm over the truth's (1 where the fit kept its family's and the
+  // family's are the truth's).
+  double ends_ratio = 1, picks_ratio = 1;
 };
 
-// Both measures of `fitted` against `truth`: the relative RMSE under `map` (named `map_name`) and
-// each thread's ΔE2000.
+// The measures of `fitted` against `truth`: the relative RMSE under `map` (named `map_name`),
+// each thread's ΔE2000, the thread counts' ratios.
 AppearanceCheck check_appearance(const Fabric& truth, const Fabric& fitted, const EnvMap& map, const std::string& map_name,
                                  const AppearanceCheckOptions& options = {});
 

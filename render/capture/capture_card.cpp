@@ -43,9 +43,9 @@ std::array<std::array<bool, 10>, 10> tag_cells(int id) {
 namespace {
 
 const std::array<std::array<bool, 10>, 10>& cached_cells(int id) {
-  static const std::array<std::array<std::array<bool, 10>, 10>, 5> all = [] {
-    std::array<std::array<std::array<bool, 10>, 10>, 5> a;
-    for (int i = 0; i < 5; ++i) a[i] = tag_cells(i);
+  static const std::array<std::array<std::array<bool, 10>, 10>, 6> all = [] {  // the ids the card prints
+    std::array<std::array<std::array<bool, 10>, 10>, 6> a;
+    for (int i = 0; i < 6; ++i) a[i] = tag_cells(i);
     return a;
   }();
   return all.at(id);
@@ -81,8 +81,10 @@ double card_reflectance(glm::dvec2 mm, bool with_strip) {
   if (with_strip && mm.y >= c.height) {
     // The strip: a dashed cut line along its top, the marker.
     if (near_line(mm.y - c.height) && std::fmod(mm.x, 6.0) < 3.0) return c.ink_reflectance;
-    const double r = tag_reflectance(c.swatch_marker.id, c.swatch_marker.size, mm - c.swatch_marker.centre);
-    if (r >= 0) return r;
+    for (const CardTag& t : {c.swatch_marker, c.closeup_tag}) {
+      const double r = tag_reflectance(t.id, t.size, mm - t.centre);
+      if (r >= 0) return r;
+    }
   }
   return c.paper_reflectance;
 }

@@ -9,7 +9,10 @@
 // Markers: AprilTag tag36h11, ids 0–3 at the corners (clockwise from top-left), their black
 // squares `tag_size` wide. Id 4, smaller, is printed on a strip below the card to be cut off
 // and laid on the swatch with its image +x along the warp: its pose in each photo gives the
-// swatch's turn. Six grey patches of known reflectance sit along the bottom edge.
+// swatch's turn. Id 5, tiny, is printed on the strip too, to be cut out and laid on the swatch
+// for the close-up (capture/closeup_scale.h), its image +x along the warp: it gives the close-up's
+// millimetres per pixel and the warp's direction. Six grey patches of known reflectance sit along
+// the bottom edge.
 #include <array>
 #include <filesystem>
 #include <vector>
@@ -40,6 +43,8 @@ struct CaptureCard {
   double strip_height = 25;          // the cut-off strip below it that carries the swatch marker
   std::array<CardTag, 4> corner_tags{{{0, {22, 22}, 30}, {1, {228, 22}, 30}, {2, {228, 148}, 30}, {3, {22, 148}, 30}}};
   CardTag swatch_marker{4, {125, 182.5}, 12};  // as printed on the strip
+  // 3 mm: a 10 mm close-up holds it beside the threads (0.3 mm cells: print at 600 dpi or more).
+  CardTag closeup_tag{5, {165, 182.5}, 3};
   std::array<GreyPatch, 6> patches{{{{46, 135, 70, 160}, 0.04},
                                      {{73, 135, 97, 160}, 0.09},
                                      {{100, 135, 124, 160}, 0.18},

@@ -11,6 +11,7 @@
 #include "capture/card_samples.h"
 #include "capture/closeup_shot.h"
 #include "capture/photo_files.h"
+#include "core/weave_layout.h"
 
 namespace weft {
 
@@ -190,6 +191,16 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
   FabricFitOptions fit_options;
   if (options.open_progress) fit_options.progress = options.open_progress("fit");
   result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options, closeup);
+  // The yarns' counts where the close-up's spectrum resolves them; the family's where it does not.
+  if (result.closeup && result.closeup->spectrum) {
+    const WeaveLayout layout(result.fit.fabric);
+    result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
+    if (result.thread_counts->resolved()) {
+      WeaveSpec& weave = result.fit.fabric.weave;
+      weave.ends_per_cm = std::round(10.0 * result.thread_counts->ends_per_cm) / 10.0;
+      weave.picks_per_cm = std::round(10.0 * result.thread_counts->picks_per_cm) / 10.0;
+    }
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

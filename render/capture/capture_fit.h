@@ -51,6 +51,9 @@ struct CaptureFitResult {
   std::vector<SwatchObservation> observations;
   std::string closeup_file;                // empty without a close-up
   std::optional<CloseupClusters> closeup;
+  // The ends and picks the close-up's spectrum gives for the fitted family's weave, when it holds
+  // the scale tag; the fabric takes them when they are resolved.
+  std::optional<ThreadCounts> thread_counts;
   FabricFit fit;
   double seconds = 0;
 };

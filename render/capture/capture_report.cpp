@@ -63,6 +63,12 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     auto rgb = [](const glm::dvec3& v) { return nlohmann::ordered_json{v.r, v.g, v.b}; };
     nlohmann::ordered_json& j = capture["closeup"];
     j = {{"file", result.closeup_file}, {"gap_share", c.gap_share}, {"used", fit.closeup && fit.closeup->used}};
+    if (c.scale) j["scale_tag_px_per_mm"] = c.scale->px_per_mm;
+    if (const auto& t = result.thread_counts)
+      j["thread_counts"] = {{"ends_per_cm", t->ends_per_cm},     {"picks_per_cm", t->picks_per_cm},
+                            {"resolved", t->resolved()},         {"score", t->score},
+                            {"lattice_points", t->points},       {"warp_off_tag_deg", glm::degrees(t->angle)},
+                            {"resolution_per_cm", t->resolution_per_cm}};
     for (const CloseupSplit& s : c.splits)
       j["splits"].push_back({{"features", s.lightness ? "colour and lightness" : "colour"}, {"pixels", s.pixels},
                              {"shares", {s.share[0], s.share[1]}}, {"valley", s.valley}});
@@ -81,7 +87,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
   if (check)
     capture["appearance_check"] = {{"map", check->map}, {"truth", check->truth}, {"views", check->views},
                                    {"relative_rmse", check->relative_rmse},
-                                   {"thread_delta_e2000", check->thread_delta_e2000}};
+                                   {"thread_delta_e2000", check->thread_delta_e2000},
+                                   {"ends_ratio", check->ends_ratio}, {"picks_ratio", check->picks_ratio}};
   doc["capture"] = capture;
   std::ofstream(file) << doc.dump(2) << "\n";
 }
@@ -143,6 +150,20 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
                   f.fitted_ratio.g, f.fitted_ratio.b, f.used ? "" : "; not used: ", f.rejected.c_str());
     out += line;
   }
+  {
+    const WeaveSpec& weave = r.fit.fabric.weave;
+    std::string source = "from the close-up's spectrum";
+    if (!r.closeup)
+      source = "the family's (no close-up)";
+    else if (!r.closeup->scale)
+      source = "the family's (no scale tag in the close-up)";
+    else if (!r.thread_counts)
+      source = "the family's (the close-up leaves no room beside its scale tag)";
+    else if (!r.thread_counts->resolved())
+      source = "the family's (the weave's lattice not resolved in the close-up: score " + std::to_string(r.thread_counts->score) + ")";
+    std::snprintf(line, sizeof line, "ends %.1f, picks %.1f per cm: %s\n", weave.ends_per_cm, weave.picks_per_cm, source.c_str());
+    out += line;
+  }
   for (int j = 0; j < 2; ++j) {
     const ThreadParams& t = r.fit.fabric.threads[j];
     const ThreadUncertainty& s = r.fit.sigma[j];
@@ -156,6 +177,9 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
                   "appearance under %s: relative RMSE %.4f against %s over %d views; thread colours ΔE2000 %.2f, %.2f\n",
                   check->map.c_str(), check->relative_rmse, check->truth.c_str(), check->views,
                   check->thread_delta_e2000[0], check->thread_delta_e2000[1]);
+    out += line;
+    std::snprintf(line, sizeof line, "thread counts against %s: ends ×%.3f, picks ×%.3f\n", check->truth.c_str(),
+                  check->ends_ratio, check->picks_ratio);
     out += line;
   }
   return out;

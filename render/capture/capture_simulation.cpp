@@ -247,9 +247,7 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
   }
   if (options.closeup) {
     // Straight above the swatch, right after the last photo (the swatch not turned since).
-    CloseupSimulationOptions closeup;
-    closeup.width = w;
-    closeup.height = h;
+    CloseupSimulationOptions closeup;  // the camera's macro mode, at its own size
     closeup.turn = kPi * (options.photos - 1) / options.photos;
     closeup.exposure_scale = k;
     closeup.tangent_samples = options.tangent_samples;

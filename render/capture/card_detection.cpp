@@ -146,7 +146,7 @@ std::vector<TagSighting> detect_tags(const Photo& photo) {
   for (int i = 0; i < zarray_size(found); ++i) {
     apriltag_detection_t* d;
     zarray_get(found, i, &d);
-    if (d->id > 4) continue;
+    if (d->id > 5) continue;  // the card prints ids 0–5
     TagSighting s;
     s.id = d->id;
     s.decision_margin = d->decision_margin;

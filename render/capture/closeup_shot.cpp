@@ -81,11 +81,15 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
   const int x0 = photo.width / 10, x1 = photo.width - photo.width / 10;
   const int y0 = photo.height / 10, y1 = photo.height - photo.height / 10;
   const int w = x1 - x0, h = y1 - y0;
+  CloseupClusters out;
+  out.scale = find_closeup_scale(photo);
   std::vector<glm::dvec3> value(static_cast<size_t>(w) * h);
-  std::vector<double> lum(value.size(), -1);  // −1: clipped
-  long clipped = 0;
+  std::vector<double> lum(value.size(), -1);  // −1: clipped, or the scale tag
+  long clipped = 0, swatch = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
+      if (out.scale && out.scale->covers({x + 0.5, y + 0.5})) continue;
+      ++swatch;
       const size_t i = static_cast<size_t>(y - y0) * w + (x - x0);
       const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
       if (std::max({code[0], code[1], code[2]}) >= kClipCode) {
@@ -95,14 +99,26 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
       value[i] = response.relative(code, image_radius2(photo, x + 0.5, y + 0.5));
       lum[i] = luminance(value[i]);
     }
-  if (static_cast<double>(clipped) / value.size() > 0.02)
-    throw CaptureRejection(name + ": saturated (" + std::to_string(100.0 * clipped / value.size()) +
+  if (swatch == 0 || static_cast<double>(clipped) / swatch > 0.02)
+    throw CaptureRejection(name + ": saturated (" + std::to_string(swatch ? 100.0 * clipped / swatch : 100.0) +
                            " % of its pixels clipped; lower the exposure)");
   std::vector<double> sorted;
   for (double l : lum)
     if (l >= 0) sorted.push_back(l);
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() * 9 / 10, sorted.end());
   const double floor = kGapLevel * sorted[sorted.size() * 9 / 10];
+
+  // The weave's spectrum, where the tag gives the millimetres: the gaps are the yarns' clearest
+  // edges, so they stay in (at the floor), and the log keeps a float's highlight from outweighing them.
+  if (out.scale) {
+    std::vector<double> log_lum(lum.size(), 0.0);
+    std::vector<bool> use(lum.size(), false);
+    for (size_t i = 0; i < lum.size(); ++i)
+      if (lum[i] >= 0) log_lum[i] = std::log(std::max(lum[i], floor)), use[i] = true;
+    CloseupScale inner = *out.scale;  // in the inner frame's pixels
+    inner.centre -= glm::dvec2(x0, y0);
+    out.spectrum = closeup_spectrum(log_lum, use, w, h, inner);
+  }
 
   // The thread pixels.
   std::vector<size_t> index;
@@ -117,7 +133,6 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
   if (index.size() < static_cast<size_t>(kMinPixels))
     throw CaptureRejection(name + ": too few thread pixels (" + std::to_string(index.size()) +
                            "); fill the frame with the swatch, in focus, from straight above");
-  CloseupClusters out;
   out.gap_share = static_cast<double>(gaps) / (gaps + index.size());
 
   // Each split: k-means on log chromaticity and `lightness`-weighted log lightness; its means over

@@ -10,12 +10,15 @@
 // highlight is a few degrees of tilt wide, and only its integral is robust to how the fit samples
 // the tilts and the lights.
 #include <array>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "capture/closeup_scale.h"
 #include "capture/photo_files.h"
 #include "capture/response_calibration.h"
+#include "capture/thread_counts.h"
 
 namespace weft {
 
@@ -39,6 +42,10 @@ struct CloseupClusters {
   // its thread. The fit takes the split whose clusters cover what its weave's threads cover.
   std::vector<CloseupSplit> splits;
   double gap_share = 0;  // pixels too dark to be a thread (the gaps between yarns)
+  // The scale tag (capture_card.h, id 5) when the close-up holds it, and the spectrum its
+  // millimetres give, from which the weave's family gives the ends and picks (thread_counts.h).
+  std::optional<CloseupScale> scale;
+  std::optional<CloseupSpectrum> spectrum;
   // Whether any split separates: if none does, the close-up shows one colour.
   bool separated() const {
     for (const CloseupSplit& s : splits)
@@ -47,8 +54,8 @@ struct CloseupClusters {
   }
 };
 
-// The threads' pixels of a close-up (the middle 80 % of the frame; clipped pixels and gaps left
-// out) split into two clusters both ways, and how well they separate. `response` is the camera's (any of its photos':
+// The threads' pixels of a close-up (the middle 80 % of the frame; clipped pixels, gaps and the
+// scale tag left out) split into two clusters both ways, and how well they separate. `response` is the camera's (any of its photos':
 // a common scale cancels). A cluster of under 2 % of the inner pixels counts as no cluster (one
 // colour). Throws CaptureRejection when the close-up is saturated, shows too few thread pixels,
 // or its threads are too fine to leave pixels inside them.

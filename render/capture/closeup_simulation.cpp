@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 
+#include "capture/capture_card.h"
 #include "capture/card_samples.h"
 #include "core/cloth_bsdf.h"
 #include "core/weave_layout.h"
@@ -45,6 +46,16 @@ SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLig
   const glm::dvec2 repeat_mm = 10.0 * weave_repeat_cm(fabric);
   const int w = options.width, h = options.height;
   const double mm_per_px = options.field_mm / w;
+  // The tag: in a random corner, far enough in that all of its paper is in the frame; its axes are
+  // the warp's and the weft's as the frame sees them (image y up here, as the card's plane).
+  const CardTag& tag = capture_card().closeup_tag;
+  const double inset = 0.75 * tag.size * std::numbers::sqrt2 + 0.1;  // the paper's half-diagonal, mm
+  const int corner = static_cast<int>(uniform(rng) * 4) % 4;
+  const glm::dvec2 tag_centre((corner & 1 ? 1 : -1) * (0.5 * options.field_mm - inset),
+                              (corner & 2 ? 1 : -1) * (0.5 * h * mm_per_px - inset));
+  const glm::dvec2 warp_dir(std::cos(t - roll), std::sin(t - roll)), weft_dir(-warp_dir.y, warp_dir.x);
+  glm::dvec3 white(0);  // radiance of a ρ = 1 diffuser
+  for (const FitLight& l : lights) white += l.power * std::max(l.direction.z, 0.0) / std::numbers::pi;
   std::vector<glm::dvec3> linear(static_cast<size_t>(w) * h);
 #pragma omp parallel for schedule(static)
   for (int y = 0; y < h; ++y)
@@ -53,6 +64,14 @@ SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLig
       for (int s = 0; s < kSupersample * kSupersample; ++s) {
         const double px = (x + (s % kSupersample + 0.5) / kSupersample - 0.5 * w) * mm_per_px;
         const double py = (0.5 * h - y - (s / kSupersample + 0.5) / kSupersample) * mm_per_px;
+        if (options.scale_tag) {
+          const glm::dvec2 m = glm::dvec2(px, py) - tag_centre;
+          const double r = tag_reflectance(tag.id, tag.size, {glm::dot(m, warp_dir), -glm::dot(m, weft_dir)});
+          if (r >= 0) {
+            sum += r * white;
+            continue;
+          }
+        }
         const glm::dvec3 p(px * std::cos(roll) - py * std::sin(roll), px * std::sin(roll) + py * std::cos(roll), 0);
         const WeaveSample at = layout.at(glm::dot(p, u) / repeat_mm.x + phase.x, glm::dot(p, v) / repeat_mm.y + phase.y);
         if (at.thread >= 0) sum += along[at.thread][std::min(static_cast<int>(at.arc * kArcBins), kArcBins - 1)];

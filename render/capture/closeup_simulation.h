@@ -2,7 +2,7 @@
 // The close-up a photographer takes after the last turned photo (capture/closeup_shot.h): the
 // swatch from straight above, `field_mm` across the frame at a random roll and weave phase, each
 // pixel the resolved weave (core/weave_layout.h: the one thread sample that lies there) under the
-// map's lights, then the same camera as the photos.
+// map's lights, with the scale tag laid on it, then the same camera as the photos.
 #include <cstdint>
 #include <vector>
 
@@ -14,8 +14,11 @@
 namespace weft {
 
 struct CloseupSimulationOptions {
-  int width = 1024, height = 768;
-  double field_mm = 6.0;       // across the frame's width: a 1:1 macro on an APS-C sensor's scale
+  int width = 1600, height = 1200;
+  double field_mm = 10.0;      // across the frame's width: a macro lens near 1:2, a phone's macro mode
+  // The scale tag (capture_card.h: id 5) on the swatch in a random corner of the frame, its
+  // image +x along the warp, lit as paper.
+  bool scale_tag = true;
   double turn = 0;             // the swatch's warp angle, radians (the last photo's)
   double exposure_scale = 1;   // linear value per unit radiance at the metered exposure
   int tangent_samples = 32;

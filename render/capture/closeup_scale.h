@@ -1,0 +1,27 @@
+#pragma once
+// The close-up's scale tag (capture_card.h: id 5, 3 mm, laid on the swatch with its image +x
+// along the warp): millimetres per pixel, the warp's direction in the frame, and the pixels the
+// tag and its paper cover, which are not the swatch.
+#include <array>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "capture/photo_files.h"
+
+namespace weft {
+
+struct CloseupScale {
+  std::array<glm::dvec2, 4> corners;  // the black square's, image pixels
+  glm::dvec2 centre{0.0};
+  glm::dvec2 warp{1.0, 0.0};  // unit image direction of the tag's +x: the warp's
+  double px_per_mm = 0;
+  // Whether image point `p` lies on the tag or its paper (the black square grown to 1.6 times its
+  // side: the white border is 1.25, the rest is the paper's edge and the lens's blur).
+  bool covers(glm::dvec2 p) const;
+};
+
+// The scale tag in a close-up, or nothing when it is not there (or not decoded).
+std::optional<CloseupScale> find_closeup_scale(const Photo& photo);
+
+}  // namespace weft

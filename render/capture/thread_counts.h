@@ -1,0 +1,50 @@
+#pragma once
+// Ends and picks per centimetre from the close-up. The weave repeats across the frame, so the 2-D
+// spectrum of the pixels' log luminance is a lattice of lines: the reciprocal lattice of the
+// weave's repeat. Its points follow from the counts and the weave's rows and shift
+// (core/weave_layout.h): the repeat is spanned by T₁ = (rows / p, 0) along the warp and
+// T₂ = (shift / p, 1 / e) (one end across, the floats' start moved by `shift` picks), so the
+// lattice is m·G₁ + n·G₂ with G₁ = (p / rows, −e·shift / rows), G₂ = (0, e). The counts are those
+// whose lattice lies on the spectrum's lines: every point counts, not only the yarns' own lines
+// (a plain weave of yarns with no gaps between them shows its ends only on the diagonal lines).
+// The scale tag gives the millimetres and roughly which way the warp runs; the fit finds the
+// lattice's own direction within 8° of it, so a hand-laid tag a few degrees off costs nothing.
+#include <optional>
+#include <vector>
+
+#include "capture/closeup_scale.h"
+
+namespace weft {
+
+// The close-up's power spectrum over the largest disc clear of the tag, under a radial Hann
+// window, zero-padded to twice the disc: the log of each bin's power over the median bin's.
+struct CloseupSpectrum {
+  int n = 0;                     // the transform's side, pixels
+  std::vector<float> log_power;  // n rows × (n/2 + 1) columns (the other half is the mirror)
+  double px_per_mm = 0;
+  glm::dvec2 warp{1.0, 0.0};     // the tag's +x, image direction
+  double disc_mm = 0;
+  // Bilinear in the bins, at frequency `k` (cycles per pixel, image axes).
+  double at(glm::dvec2 k) const;
+};
+
+// Nothing when the frame leaves no disc of 64 pixels clear of the tag.
+std::optional<CloseupSpectrum> closeup_spectrum(const std::vector<double>& signal, const std::vector<bool>& use,
+                                                int width, int height, const CloseupScale& scale);
+
+struct ThreadCounts {
+  double ends_per_cm = 0, picks_per_cm = 0;
+  double angle = 0;        // the lattice's warp off the tag's +x, radians
+  double score = 0;        // the share of the strong lines' weight on the lattice
+  int points = 0;          // strong lines found (up to 40)
+  double resolution_per_cm = 0;  // one line's width in the spectrum: 1 / the disc's diameter
+  // At least three strong lines, and nearly all of them on the lattice.
+  bool resolved() const { return points >= 3 && score >= kResolvedScore; }
+  static constexpr double kResolvedScore = 0.8;
+};
+
+// The counts (each 3–200 per cm, no finer than 4 pixels a yarn) whose lattice for a weave of
+// `rows` and `shift` scores best.
+ThreadCounts weave_counts(const CloseupSpectrum& spectrum, int rows, int shift);
+
+}  // namespace weft
