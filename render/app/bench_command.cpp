@@ -44,6 +44,7 @@ CommandAction add_bench_command(CLI::App& app) {
   sub->add_option("--sg-count", a->sg_count, "SGs fitted to each map")->capture_default_str();
   sub->add_option("--stress-points", a->stress_points, "Stability table: points per stress case")->capture_default_str();
   sub->add_flag("--no-stability", a->no_stability, "Skip the stability table");
+  sub->add_flag("--no-sweeps", a->no_sweeps, "Skip the cost-knob sweeps (those --quick adds too)");
   sub->add_option("--sweep-sg-counts", a->sweep_sg_counts,
                   "SG counts to sweep on the first scene (e.g. 1,2,5,10,20,40), against its map-lit reference")
       ->delimiter(',');

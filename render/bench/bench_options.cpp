@@ -35,11 +35,14 @@ void apply_quick(BenchOptions& a) {
   a.bake_grid = 12;
   // Smoke versions of iwasaki's knob sweeps (grid-12 tables: seconds each). No SDF sweep:
   // swatch has no occluded cloth.
-  if (a.sweep_tangent_samples.empty()) a.sweep_tangent_samples = {1, 3};
-  if (a.sweep_svd_errors.empty()) a.sweep_svd_errors = {0.1, 0.01};
+  if (!a.no_sweeps && a.sweep_tangent_samples.empty()) a.sweep_tangent_samples = {1, 3};
+  if (!a.no_sweeps && a.sweep_svd_errors.empty()) a.sweep_svd_errors = {0.1, 0.01};
 }
 
 void validate(const BenchOptions& a) {
+  if (a.no_sweeps && !(a.sweep_sg_counts.empty() && a.sweep_tangent_samples.empty() && a.sweep_svd_errors.empty() &&
+                       a.sweep_sdf_resolutions.empty() && a.sweep_sdf_supersamples.empty()))
+    throw InvalidOption("--no-sweeps: leaves no sweep to run, but a --sweep-<knob> flag asks for one");
   if (a.speed_frames < 1 || a.speed_frames > 1000) throw InvalidOption("--speed-frames: must be within 1..1000");
   if (a.width < 8 || a.height < 8 || a.width > 4096 || a.height > 4096 || a.speed_width < 8 || a.speed_height < 8 ||
       a.speed_width > 4096 || a.speed_height > 4096)
@@ -79,6 +82,7 @@ std::string command_line(const BenchOptions& a) {
   c << " --speed-frames " << a.speed_frames << " --sg-count " << a.sg_count;
   if (!a.methods.empty()) c << " --methods " << joined(a.methods);
   if (a.no_stability) c << " --no-stability";
+  if (a.no_sweeps) c << " --no-sweeps";
   if (!a.quick && a.bake_grid > 0) c << " --table-grid " << a.bake_grid;
   c << " --target-error " << fmt(a.target_error, 4);
   if (!a.subdivide.empty()) c << " --subdivide " << joined_numbers(a.subdivide);

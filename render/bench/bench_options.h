@@ -36,6 +36,7 @@ struct BenchOptions {
   double reference_tolerance = 0.01;
   int stress_points = 24;
   bool no_stability = false;
+  bool no_sweeps = false;      // none of the cost-knob sweeps below, --quick's own included
   int bake_grid = 0;           // iwasaki tables' ξ/ω grids n×n; 0: the paper's 48 (12 with --quick)
   double target_error = 0.05;  // > 0: `iwasaki (target E)`, `iwasaki_vertex (target E)` rows (bake/selection/scene_selection.h)
   // Midpoint subdivision levels > 0 (scene/mesh_subdivision.h): each per-vertex method row is

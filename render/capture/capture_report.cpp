@@ -67,7 +67,7 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     if (const auto& t = result.thread_counts)
       j["thread_counts"] = {{"ends_per_cm", t->ends_per_cm},     {"picks_per_cm", t->picks_per_cm},
                             {"resolved", t->resolved()},         {"score", t->score},
-                            {"lattice_points", t->points},       {"warp_off_tag_deg", glm::degrees(t->angle)},
+                            {"strong_lines", t->points}, {"fitted_lines", t->fitted_lines},       {"warp_off_tag_deg", glm::degrees(t->angle)},
                             {"resolution_per_cm", t->resolution_per_cm}};
     for (const CloseupSplit& s : c.splits)
       j["splits"].push_back({{"features", s.lightness ? "colour and lightness" : "colour"}, {"pixels", s.pixels},
@@ -160,7 +160,12 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
     else if (!r.thread_counts)
       source = "the family's (the close-up leaves no room beside its scale tag)";
     else if (!r.thread_counts->resolved())
-      source = "the family's (the weave's lattice not resolved in the close-up: score " + std::to_string(r.thread_counts->score) + ")";
+    {
+      char why[160];
+      std::snprintf(why, sizeof why, "the family's (the weave's lattice not resolved in the close-up: %.0f %% of its lines on it, %d fitted)",
+                    100.0 * r.thread_counts->score, r.thread_counts->fitted_lines);
+      source = why;
+    }
     std::snprintf(line, sizeof line, "ends %.1f, picks %.1f per cm: %s\n", weave.ends_per_cm, weave.picks_per_cm, source.c_str());
     out += line;
   }

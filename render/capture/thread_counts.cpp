@@ -1,10 +1,12 @@
 #include "capture/thread_counts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <numbers>
 
+#include <Eigen/Dense>
 #include <fftw3.h>
 
 #include "capture/capture_card.h"
@@ -20,7 +22,7 @@ constexpr int kMinDiscPx = 64;
 constexpr double kMinRepeats = 5.0;
 constexpr double kStrongLine = 6.0;   // log power over the ring's median: 400 times
 constexpr size_t kMaxLines = 16;
-constexpr double kNearlyAll = 0.95;
+constexpr double kNearlyAll = 0.9;
 const double kMaxAspect = std::log(3.0);  // ends against picks: woven cloth stays within 3 : 1
 
 struct Disc {
@@ -241,23 +243,52 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
     if (c.explained >= kNearlyAll * best && (!chosen || c.e * c.p > chosen->e * chosen->p * 1.0001 ||
                                              (std::abs(c.e * c.p / (chosen->e * chosen->p) - 1) < 1e-4 && c.explained > chosen->explained)))
       chosen = &c;
-  // Fine: the least misfit among lattices explaining as much, about the chosen one.
+  // Fine: each line given its lattice indices (m, n) by the chosen lattice, the basis G₁, G₂ in
+  // image axes by least squares over k_i = m_i·G₁ + n_i·G₂, weighted by the lines' strength; lines
+  // more than a bin off (a sidelobe, an alias of a harmonic past the pixels' Nyquist) are dropped
+  // and the basis solved again.
   sign = chosen->sign;
-  double be = chosen->e, bp = chosen->p, ba = chosen->angle;
-  const double target = fit(be, bp, ba, 0.015).explained;
-  double least = 1e300;
-  for (int i = -24; i <= 24; ++i)
-    for (int j = -24; j <= 24; ++j)
-      for (int k = -20; k <= 20; ++k) {
-        const double e = chosen->e * std::exp(i * step / 10), p = chosen->p * std::exp(j * step / 10);
-        const double angle = chosen->angle + k * std::numbers::pi / 3600.0;  // ±1°, 0.05° steps
-        const Fit f = fit(e, p, angle, 0.0);
-        if (f.explained >= target - 1e-9 && f.misfit < least) least = f.misfit, be = e, bp = p, ba = angle;
-      }
-  out.ends_per_cm = be * px_per_cm;
-  out.picks_per_cm = bp * px_per_cm;
-  out.angle = ba;
-  out.score = fit(be, bp, ba, 0.0).explained;
+  const double shift_along = sign * static_cast<double>(shift);
+  const glm::dvec2 a0(std::cos(chosen->angle) * s.warp.x - std::sin(chosen->angle) * s.warp.y,
+                      std::sin(chosen->angle) * s.warp.x + std::cos(chosen->angle) * s.warp.y);
+  const glm::dvec2 b0(-a0.y, a0.x);
+  glm::dvec2 g1 = (chosen->p / rows) * a0 - (chosen->e * shift_along / rows) * b0, g2 = chosen->e * b0;
+  std::vector<std::array<double, 2>> index(lines.size());
+  std::vector<bool> kept(lines.size(), false);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    // Solve k = m·G₁ + n·G₂ for (m, n) and round.
+    const double det = g1.x * g2.y - g1.y * g2.x;
+    const double m = (lines[i].k.x * g2.y - lines[i].k.y * g2.x) / det, nn = (g1.x * lines[i].k.y - g1.y * lines[i].k.x) / det;
+    index[i] = {std::round(m), std::round(nn)};
+    const glm::dvec2 d = lines[i].k - (index[i][0] * g1 + index[i][1] * g2);
+    kept[i] = glm::length(d) <= 1.5 * bin + 0.015 * glm::length(lines[i].k);
+  }
+  for (int round = 0; round < 3; ++round) {
+    Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+    Eigen::Matrix<double, 2, 2> rhs = Eigen::Matrix2d::Zero();  // columns: x, y of k
+    int used = 0;
+    for (size_t i = 0; i < lines.size(); ++i) {
+      if (!kept[i]) continue;
+      const Eigen::Vector2d mn(index[i][0], index[i][1]);
+      normal += lines[i].weight * mn * mn.transpose();
+      rhs.col(0) += lines[i].weight * mn * lines[i].k.x;
+      rhs.col(1) += lines[i].weight * mn * lines[i].k.y;
+      ++used;
+    }
+    if (used < 3 || std::abs(normal.determinant()) < 1e-12 * normal.squaredNorm()) break;
+    const Eigen::Matrix2d basis = normal.ldlt().solve(rhs);  // rows: G₁, G₂
+    g1 = {basis(0, 0), basis(0, 1)}, g2 = {basis(1, 0), basis(1, 1)};
+    for (size_t i = 0; i < lines.size(); ++i)
+      kept[i] = kept[i] && glm::length(lines[i].k - (index[i][0] * g1 + index[i][1] * g2)) <= bin;
+  }
+  // Back to counts: G₂ = e·b, G₁ = (p / rows)·a − (e·shift / rows)·b.
+  const glm::dvec2 b = glm::normalize(g2), a(b.y, -b.x);
+  out.ends_per_cm = glm::length(g2) * px_per_cm;
+  out.picks_per_cm = std::abs(glm::dot(g1, a)) * rows * px_per_cm;
+  const glm::dvec2 warp = glm::dot(a, s.warp) < 0 ? -a : a;
+  out.angle = std::atan2(s.warp.x * warp.y - s.warp.y * warp.x, glm::dot(s.warp, warp));
+  out.score = chosen->explained;
+  for (size_t i = 0; i < lines.size(); ++i) out.fitted_lines += kept[i];
   return out;
 }
 

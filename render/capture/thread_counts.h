@@ -17,7 +17,8 @@
 namespace weft {
 
 // The close-up's power spectrum over the largest disc clear of the tag, under a radial Hann
-// window, zero-padded to twice the disc: the log of each bin's power over the median bin's.
+// window, zero-padded to twice the disc: the log of each bin's power over the median of its ring
+// (the bins as far from the centre).
 struct CloseupSpectrum {
   int n = 0;                     // the transform's side, pixels
   std::vector<float> log_power;  // n rows × (n/2 + 1) columns (the other half is the mirror)
@@ -35,16 +36,19 @@ std::optional<CloseupSpectrum> closeup_spectrum(const std::vector<double>& signa
 struct ThreadCounts {
   double ends_per_cm = 0, picks_per_cm = 0;
   double angle = 0;        // the lattice's warp off the tag's +x, radians
-  double score = 0;        // the share of the strong lines' weight on the lattice
-  int points = 0;          // strong lines found (up to 40)
+  double score = 0;        // the share of the strong lines' weight on the lattice (to 1.5 lines)
+  int points = 0;          // strong lines found (the lowest 16)
+  int fitted_lines = 0;    // those within a line of the fitted lattice, which set the counts
   double resolution_per_cm = 0;  // one line's width in the spectrum: 1 / the disc's diameter
-  // At least three strong lines, and nearly all of them on the lattice.
-  bool resolved() const { return points >= 3 && score >= kResolvedScore; }
+  // Most of the strong lines on the lattice, and three of them fitting it within a line.
+  bool resolved() const { return fitted_lines >= 3 && score >= kResolvedScore; }
   static constexpr double kResolvedScore = 0.8;
 };
 
-// The counts (each 3–200 per cm, no finer than 4 pixels a yarn) whose lattice for a weave of
-// `rows` and `shift` scores best.
+// The counts (each 3–200 per cm, at least 5 repeats of the disc and 4 pixels a yarn, ends and picks
+// within 3 : 1) of a weave of `rows` and `shift` (or its mirror, −shift): the coarsest lattice on
+// which nearly all of the spectrum's lowest strong lines lie, its basis then fitted to them by
+// weighted least squares.
 ThreadCounts weave_counts(const CloseupSpectrum& spectrum, int rows, int shift);
 
 }  // namespace weft

@@ -2,8 +2,8 @@
 # Smoke test of `weft bench --quick`: it runs, writes a CSV with a finite accuracy for every
 # opaque GPU method (iwasaki's `--target-error` row included), a PNG chart, the knob sweeps and
 # a report with the stability table (3 timed frames a rung: the smoke checks times exist, the
-# bench proper measures them); a second run reads the reference from the cache and
-# measures the same errors, every method included; bad input exits 2.
+# bench proper measures them); a second run (no sweeps, no stability table) reads the reference
+# from the cache and measures the same errors, every method included; bad input exits 2.
 set -eu
 WEFT="$1"
 OUT=$(mktemp -d)
@@ -19,6 +19,10 @@ set +e
 "$WEFT" bench --quick --sweep-svd-error 0 --out "$OUT/bad" >/dev/null 2>&1; rc=$?
 set -e
 [ "$rc" = 2 ] || fail "--sweep-svd-error 0 exited $rc, expected 2"
+set +e
+"$WEFT" bench --quick --no-sweeps --sweep-svd-error 0.1 --out "$OUT/bad" >/dev/null 2>&1; rc=$?
+set -e
+[ "$rc" = 2 ] || fail "--no-sweeps with a sweep exited $rc, expected 2"
 
 "$WEFT" bench --quick --speed-frames 3 --out "$OUT/b" > "$OUT/run1.json" || fail "first run"
 CSV="$OUT/b/results.csv"
@@ -59,7 +63,7 @@ grep -q "0 from the cache" "$OUT/b/report.md" || fail "first run should render i
 grep -q ",iwasaki_vertex," "$CSV" || fail "no row for iwasaki_vertex"
 cut -d, -f1-4,11 "$CSV" > "$OUT/errors1"
 
-"$WEFT" bench --quick --speed-frames 1 --no-stability --out "$OUT/b" > /dev/null || fail "second run"
+"$WEFT" bench --quick --speed-frames 1 --no-stability --no-sweeps --out "$OUT/b" > /dev/null || fail "second run"
 grep -q "1 from the cache" "$OUT/b/report.md" || fail "second run should read the cached reference"
 cut -d, -f1-4,11 "$CSV" > "$OUT/errors2"
 cmp -s "$OUT/errors1" "$OUT/errors2" || fail "cached reference gave different errors"

@@ -34,7 +34,7 @@ def opaque_presets():
 
 def random_fabric(presets, rng, k):
     """A preset's weave (its tangent curves, coverage, η) with each thread's colour, k_d, γ_s and γ_v
-    drawn within the range the opaque presets span."""
+    and the ends and picks per cm drawn within the range the opaque presets span."""
     base = json.loads(json.dumps(presets[rng.choice(sorted(presets))]))
     threads = [t for f in presets.values() for t in f["threads"]]
     span = lambda key: (min(t[key] for t in threads), max(t[key] for t in threads))
@@ -43,6 +43,10 @@ def random_fabric(presets, rng, k):
         t["albedo_scale"] = round(rng.uniform(*span("albedo_scale")), 3)
         for key in ("kd", "gamma_s_deg", "gamma_v_deg"):
             t[key] = round(rng.uniform(*span(key)), 3)
+    weaves = [f.get("weave", {}) for f in presets.values()]
+    for key in ("ends_per_cm", "picks_per_cm"):
+        values = [w[key] for w in weaves if key in w]
+        base.setdefault("weave", {})[key] = round(rng.uniform(min(values), max(values)))
     base["name"] = f"random_{k}_{base['name']}"
     base["description"] = "random fabric for the capture sweep"
     return base
@@ -64,8 +68,16 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     c = cap.get("closeup")
     kind = ("one colour" if c.get("one_lightness") else "one hue") if c and c.get("one_colour") else "ratio"
     closeup = "—" if c is None else kind if c["used"] else "not used: " + c.get("not_used", "")
+    counts = c.get("thread_counts") if c else None
+    check = cap["appearance_check"]
+    if counts and counts["resolved"]:
+        count_text = f"×{check['ends_ratio']:.3f}, ×{check['picks_ratio']:.3f}"
+    else:
+        count_text = "family's" + (" (not resolved)" if counts else "")
     return {"name": name, "maps": f"{photo_map} → {check_map}", "family": cap["weave_family"], "family_right": cap["weave_family"] == family,
-            "delta_e": de, "rmse": cap["appearance_check"]["relative_rmse"], "seconds": seconds, "closeup": closeup}
+            "delta_e": de, "rmse": check["relative_rmse"], "seconds": seconds, "closeup": closeup,
+            "counts_resolved": bool(counts and counts["resolved"]), "ends_ratio": check["ends_ratio"],
+            "picks_ratio": check["picks_ratio"], "counts": count_text}
 
 
 def main():
@@ -95,18 +107,22 @@ def main():
             row = run_case(a.weft, name, path, family, photo_map, check_map, work, seed=100 + i)
             print("   ", json.dumps(row), file=sys.stderr, flush=True)
             rows.append(row)
-    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s | close-up |", "|---|---|---|---|---|---|---|"]
+    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s | close-up | ends, picks ÷ truth |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "error" in r:
-            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | | |")
+            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | | | |")
         else:
             fam = r["family"] if r["family_right"] else f"**{r['family']} (wrong)**"
             lines.append(f"| {r['name']} | {r['maps']} | {fam} | {r['delta_e'][0]:.1f}, {r['delta_e'][1]:.1f} | "
-                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} | {r['closeup']} |")
+                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} | {r['closeup']} | {r['counts']} |")
     ok = [r for r in rows if "error" not in r]
     met = sum(r["family_right"] and max(r["delta_e"]) <= 3 and r["rmse"] <= 0.05 for r in ok)
     lines.append("")
     lines.append(f"{met} of {len(rows)} within the issue's figures (family right, ΔE ≤ 3 for both threads, RMSE ≤ 5 %).")
+    resolved = [r for r in ok if r["counts_resolved"]]
+    worst = max((max(abs(r["ends_ratio"] - 1), abs(r["picks_ratio"] - 1)) for r in resolved), default=0)
+    lines.append(f"Ends and picks from the close-up on {len(resolved)} of {len(ok)}, the worst {100 * worst:.1f} % off.")
     text = "\n".join(lines)
     print(text)
     if a.out:
