@@ -116,7 +116,9 @@ CommandAction add_capture_command(CLI::App& app) {
       "  weft capture shots/ --out fitted.json --truth linen_plain --check-map courtyard\n"
       "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or unusable photos (no card, saturated or\n"
       "blurred, too few swatch turns).");
-  sub->add_option("dir", a->photos_dir, "Folder of photos (JPEG or PNG), capture.json and, optionally, closeup.jpg (the swatch from straight above, its threads resolved) to fit");
+  sub->add_option("dir", a->photos_dir,
+                  "Folder of photos (JPEG or PNG), capture.json and, optionally, closeup.jpg (the swatch from straight above, "
+                  "its threads resolved; with the card's scale tag, id 5, in a corner it also gives the ends and picks per cm) to fit");
   sub->add_option("--card", a->card_out, "Write the capture card to this PNG, for printing");
   sub->add_option("--dpi", a->dpi, "The card's print resolution")->capture_default_str();
   sub->add_option("--simulate", a->simulate, "Photograph this fabric (a preset name or a .json file) on a simulated card");

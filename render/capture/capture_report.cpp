@@ -67,7 +67,7 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     if (const auto& t = result.thread_counts)
       j["thread_counts"] = {{"ends_per_cm", t->ends_per_cm},     {"picks_per_cm", t->picks_per_cm},
                             {"resolved", t->resolved()},         {"score", t->score},
-                            {"strong_lines", t->points}, {"fitted_lines", t->fitted_lines},       {"warp_off_tag_deg", glm::degrees(t->angle)},
+                            {"strong_lines", t->points}, {"fitted_lines", t->fitted_lines}, {"fitted_share", t->fitted_share},       {"warp_off_tag_deg", glm::degrees(t->angle)},
                             {"resolution_per_cm", t->resolution_per_cm}};
     for (const CloseupSplit& s : c.splits)
       j["splits"].push_back({{"features", s.lightness ? "colour and lightness" : "colour"}, {"pixels", s.pixels},

@@ -7,12 +7,6 @@
 
 namespace weft {
 
-namespace {
-
-constexpr double kCoverGrowth = 1.6;
-
-}  // namespace
-
 bool CloseupScale::covers(glm::dvec2 p) const {
   // In the tag's own axes (the detector's corners 0→1 along its +x), half a side out.
   const glm::dvec2 across(-warp.y, warp.x);

@@ -16,9 +16,10 @@ struct CloseupScale {
   glm::dvec2 centre{0.0};
   glm::dvec2 warp{1.0, 0.0};  // unit image direction of the tag's +x: the warp's
   double px_per_mm = 0;
-  // Whether image point `p` lies on the tag or its paper (the black square grown to 1.6 times its
-  // side: the white border is 1.25, the rest is the paper's edge and the lens's blur).
+  // Whether image point `p` lies on the tag or its paper (the black square grown to kCoverGrowth
+  // times its side: the white border is 1.25, the rest is the paper's cut edge and the lens's blur).
   bool covers(glm::dvec2 p) const;
+  static constexpr double kCoverGrowth = 1.4;
 };
 
 // The scale tag in a close-up, or nothing when it is not there (or not decoded).

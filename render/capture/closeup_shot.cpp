@@ -108,16 +108,23 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() * 9 / 10, sorted.end());
   const double floor = kGapLevel * sorted[sorted.size() * 9 / 10];
 
-  // The weave's spectrum, where the tag gives the millimetres: the gaps are the yarns' clearest
-  // edges, so they stay in (at the floor), and the log keeps a float's highlight from outweighing them.
+  // The weave's spectrum, where the tag gives the millimetres, over the whole frame (the disc beside
+  // the tag wants all the room there is): the gaps are the yarns' clearest edges, so they stay in
+  // (at the floor), and the log keeps a float's highlight from outweighing them.
   if (out.scale) {
-    std::vector<double> log_lum(lum.size(), 0.0);
-    std::vector<bool> use(lum.size(), false);
-    for (size_t i = 0; i < lum.size(); ++i)
-      if (lum[i] >= 0) log_lum[i] = std::log(std::max(lum[i], floor)), use[i] = true;
-    CloseupScale inner = *out.scale;  // in the inner frame's pixels
-    inner.centre -= glm::dvec2(x0, y0);
-    out.spectrum = closeup_spectrum(log_lum, use, w, h, inner);
+    const size_t n = static_cast<size_t>(photo.width) * photo.height;
+    std::vector<double> log_lum(n, 0.0);
+    std::vector<bool> use(n, false);
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) {
+        if (out.scale->covers({x + 0.5, y + 0.5})) continue;
+        const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
+        if (std::max({code[0], code[1], code[2]}) >= kClipCode) continue;
+        const size_t i = static_cast<size_t>(y) * photo.width + x;
+        log_lum[i] = std::log(std::max(luminance(response.relative(code, image_radius2(photo, x + 0.5, y + 0.5))), floor));
+        use[i] = true;
+      }
+    out.spectrum = closeup_spectrum(log_lum, use, photo.width, photo.height, *out.scale);
   }
 
   // The thread pixels.

@@ -49,8 +49,9 @@ SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLig
   // The tag: in a random corner, far enough in that all of its paper is in the frame; its axes are
   // the warp's and the weft's as the frame sees them (image y up here, as the card's plane).
   const CardTag& tag = capture_card().closeup_tag;
-  const double inset = 0.75 * tag.size * std::numbers::sqrt2 + 0.1;  // the paper's half-diagonal, mm
   const int corner = static_cast<int>(uniform(rng) * 4) % 4;
+  // The paper's half-extent along the frame's axes at this angle (its side is 1.25 of the tag's).
+  const double inset = 0.625 * tag.size * (std::abs(std::cos(t - roll)) + std::abs(std::sin(t - roll))) + 0.1;
   const glm::dvec2 tag_centre((corner & 1 ? 1 : -1) * (0.5 * options.field_mm - inset),
                               (corner & 2 ? 1 : -1) * (0.5 * h * mm_per_px - inset));
   const glm::dvec2 warp_dir(std::cos(t - roll), std::sin(t - roll)), weft_dir(-warp_dir.y, warp_dir.x);

@@ -14,8 +14,8 @@
 namespace weft {
 
 struct CloseupSimulationOptions {
-  int width = 1600, height = 1200;
-  double field_mm = 10.0;      // across the frame's width: a macro lens near 1:2, a phone's macro mode
+  int width = 2400, height = 1800;
+  double field_mm = 15.0;      // across the frame's width: a macro lens near 1:2, a phone's macro mode
   // The scale tag (capture_card.h: id 5) on the swatch in a random corner of the frame, its
   // image +x along the warp, lit as paper.
   bool scale_tag = true;

@@ -22,6 +22,8 @@ constexpr int kMinDiscPx = 64;
 constexpr double kMinRepeats = 5.0;
 constexpr double kStrongLine = 6.0;   // log power over the ring's median: 400 times
 constexpr size_t kMaxLines = 16;
+constexpr double kSidelobeReach = 4.0;  // lines (twice as many bins: the spectrum is zero-padded 2×)
+constexpr double kSidelobeDrop = 3.0;   // log power
 constexpr double kNearlyAll = 0.9;
 const double kMaxAspect = std::log(3.0);  // ends against picks: woven cloth stays within 3 : 1
 
@@ -30,15 +32,18 @@ struct Disc {
   double radius = 0;
 };
 
-// The largest disc inside the frame that stays clear of the tag's paper (a square 1.6 of its
-// side, so its half-diagonal), from centres on a 16-pixel grid.
+// The largest disc inside the frame that stays clear of the tag's paper (CloseupScale::covers's
+// square), from centres on a 16-pixel grid.
 Disc clear_disc(int width, int height, const CloseupScale& scale) {
-  const double tag_reach = 0.8 * std::numbers::sqrt2 * capture_card().closeup_tag.size * scale.px_per_mm;
+  const double half = 0.5 * CloseupScale::kCoverGrowth * capture_card().closeup_tag.size * scale.px_per_mm;
+  const glm::dvec2 across(-scale.warp.y, scale.warp.x);
   Disc best;
   for (int y = 0; y <= height; y += 16)
     for (int x = 0; x <= width; x += 16) {
-      const glm::dvec2 c(x, y);
-      const double r = std::min({c.x, c.y, width - c.x, height - c.y, glm::length(c - scale.centre) - tag_reach});
+      const glm::dvec2 c(x, y), d = c - scale.centre;
+      // Distance from c to the square, in the tag's own axes.
+      const glm::dvec2 q = glm::max(glm::abs(glm::dvec2(glm::dot(d, scale.warp), glm::dot(d, across))) - half, glm::dvec2(0.0));
+      const double r = std::min({c.x, c.y, width - c.x, height - c.y, glm::length(q)});
       if (r > best.radius) best = {c, r};
     }
   return best;
@@ -184,6 +189,17 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
       const glm::dvec2 k(kx + offset(value(kx - 1, ky), v, value(kx + 1, ky)), ky + offset(value(kx, ky - 1), v, value(kx, ky + 1)));
       lines.push_back({k * bin, v});
     }
+  // A strong line's window sidelobes (2–3 lines out, 31 dB down) are local maxima too: a line
+  // within kSidelobeReach lines of one kSidelobeDrop stronger is dropped.
+  std::sort(lines.begin(), lines.end(), [](const Line& x, const Line& y) { return x.weight > y.weight; });
+  std::vector<Line> peaks;
+  for (const Line& l : lines) {
+    bool sidelobe = false;
+    for (const Line& k : peaks)
+      sidelobe = sidelobe || (k.weight - l.weight >= kSidelobeDrop && glm::length(k.k - l.k) <= 2.0 * kSidelobeReach * bin);
+    if (!sidelobe) peaks.push_back(l);
+  }
+  lines = peaks;
   // The lowest: a yarn's sharp edges keep its harmonics strong far out, where a lattice 2 % off
   // is a whole line off.
   std::sort(lines.begin(), lines.end(), [](const Line& x, const Line& y) { return glm::length(x.k) < glm::length(y.k); });
@@ -288,7 +304,10 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   const glm::dvec2 warp = glm::dot(a, s.warp) < 0 ? -a : a;
   out.angle = std::atan2(s.warp.x * warp.y - s.warp.y * warp.x, glm::dot(s.warp, warp));
   out.score = chosen->explained;
-  for (size_t i = 0; i < lines.size(); ++i) out.fitted_lines += kept[i];
+  double on = 0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (kept[i]) ++out.fitted_lines, on += lines[i].weight;
+  out.fitted_share = on / total;
   return out;
 }
 

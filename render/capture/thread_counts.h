@@ -39,10 +39,13 @@ struct ThreadCounts {
   double score = 0;        // the share of the strong lines' weight on the lattice (to 1.5 lines)
   int points = 0;          // strong lines found (the lowest 16)
   int fitted_lines = 0;    // those within a line of the fitted lattice, which set the counts
+  double fitted_share = 0; // their share of the lines' weight
   double resolution_per_cm = 0;  // one line's width in the spectrum: 1 / the disc's diameter
-  // Most of the strong lines on the lattice, and three of them fitting it within a line.
-  bool resolved() const { return fitted_lines >= 3 && score >= kResolvedScore; }
-  static constexpr double kResolvedScore = 0.8;
+  // Most of the strong lines near the lattice the search found, and most of them (by weight) within
+  // a line of the one fitted to them: a wrong lattice that a coarse step let explain the lines
+  // leaves a third of them off once fitted.
+  bool resolved() const { return fitted_lines >= 3 && score >= kResolvedScore && fitted_share >= kResolvedFit; }
+  static constexpr double kResolvedScore = 0.8, kResolvedFit = 0.8;
 };
 
 // The counts (each 3–200 per cm, at least 5 repeats of the disc and 4 pixels a yarn, ends and picks

@@ -137,7 +137,7 @@ TEST(CloseupShot, SimulatedResolvedWeaveAveragesToTheFabricLevel) {
 // weaves (plain, twill-like, satin, its back; velvet's dark pile under these two lamps leaves
 // too few thread pixels, and is checked end to end by `weft capture`) at counts drawn around
 // their own, the scale tag in a random corner: against the counts the simulation drew the weave
-// with, where the lattice is resolved (3 of the 5 at least).
+// with, where the lattice is resolved (4 of the 5 at least).
 TEST(CloseupThreads, CountsFromTheSpectrumAreTheWeaves) {
   const std::vector<weft::FitLight> lights{{glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), glm::dvec3(1.5, 1.4, 1.2)},
                                            {glm::normalize(glm::dvec3(-0.6, 0.1, 0.7)), glm::dvec3(0.8, 0.9, 1.0)}};
@@ -164,15 +164,15 @@ TEST(CloseupThreads, CountsFromTheSpectrumAreTheWeaves) {
     ASSERT_TRUE(c.spectrum) << name;
     const weft::WeaveLayout layout(fabric);
     const weft::ThreadCounts t = weft::weave_counts(*c.spectrum, layout.rows(), layout.shift());
-    // Not every weave's lattice is resolved (linen's 11–13 per cm are 7 repeats of the disc, and
-    // a satin's back can leave stray lines off its lattice); one that is must be right.
+    // Not every weave's lattice is resolved (a lattice that leaves a fifth of the lines' weight off
+    // once fitted is not taken); one that is must be right.
     if (!t.resolved()) continue;
     ++checked;
     EXPECT_NEAR(t.angle, 0.0, 0.02) << name;  // the simulation lays the tag along the warp
-    EXPECT_NEAR(t.ends_per_cm, fabric.weave.ends_per_cm, 0.03 * fabric.weave.ends_per_cm) << name;
-    EXPECT_NEAR(t.picks_per_cm, fabric.weave.picks_per_cm, 0.03 * fabric.weave.picks_per_cm) << name;
+    EXPECT_NEAR(t.ends_per_cm, fabric.weave.ends_per_cm, 0.02 * fabric.weave.ends_per_cm) << name;
+    EXPECT_NEAR(t.picks_per_cm, fabric.weave.picks_per_cm, 0.02 * fabric.weave.picks_per_cm) << name;
   }
-  EXPECT_GE(checked, 3);
+  EXPECT_GE(checked, 4);
 }
 
 // Without the tag there are no millimetres: no counts, and the clusters as before. A frame of
