@@ -229,7 +229,11 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
       const double nn = std::round(across / e + m * shift_along / rows);
       const glm::dvec2 point = (m * p / rows) * a + e * (nn - m * shift_along / rows) * b;
       const double d = glm::length(l.k - point);
-      if (d <= 1.5 * bin + slack * glm::length(l.k)) f.explained += l.weight, f.misfit += l.weight * d * d;
+      const double tolerance = 1.5 * bin + slack * glm::length(l.k);
+      if (d <= tolerance) f.explained += l.weight, f.misfit += l.weight * d * d;
+      // A line anywhere lies this near a lattice point by chance with the share of the plane the
+      // points' discs cover: a dense lattice explains any lines, and that is discounted.
+      f.explained -= l.weight * std::min(1.0, std::numbers::pi * tolerance * tolerance * rows / (e * p));
     }
     f.explained /= total;
     return f;
@@ -305,8 +309,11 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   out.angle = std::atan2(s.warp.x * warp.y - s.warp.y * warp.x, glm::dot(s.warp, warp));
   out.score = chosen->explained;
   double on = 0;
-  for (size_t i = 0; i < lines.size(); ++i)
+  const double cell = std::abs(g1.x * g2.y - g1.y * g2.x);  // the lattice's area per point
+  for (size_t i = 0; i < lines.size(); ++i) {
     if (kept[i]) ++out.fitted_lines, on += lines[i].weight;
+    on -= lines[i].weight * std::min(1.0, std::numbers::pi * bin * bin / std::max(cell, 1e-300));  // by chance, as above
+  }
   out.fitted_share = on / total;
   return out;
 }

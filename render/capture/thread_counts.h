@@ -36,10 +36,12 @@ std::optional<CloseupSpectrum> closeup_spectrum(const std::vector<double>& signa
 struct ThreadCounts {
   double ends_per_cm = 0, picks_per_cm = 0;
   double angle = 0;        // the lattice's warp off the tag's +x, radians
-  double score = 0;        // the share of the strong lines' weight on the lattice (to 1.5 lines)
+  // The share of the strong lines' weight near the lattice (to 1.5 lines), less the share a lattice
+  // of its density would have near it by chance.
+  double score = 0;
   int points = 0;          // strong lines found (the lowest 16)
   int fitted_lines = 0;    // those within a line of the fitted lattice, which set the counts
-  double fitted_share = 0; // their share of the lines' weight
+  double fitted_share = 0; // their share of the lines' weight, less chance's (as `score`)
   double resolution_per_cm = 0;  // one line's width in the spectrum: 1 / the disc's diameter
   // Most of the strong lines near the lattice the search found, and most of them (by weight) within
   // a line of the one fitted to them: a wrong lattice that a coarse step let explain the lines
