@@ -7,12 +7,11 @@
 
 namespace weft {
 
-bool CloseupScale::covers(glm::dvec2 p) const {
+glm::dvec2 CloseupScale::outside_cover(glm::dvec2 p) const {
   // In the tag's own axes (the detector's corners 0→1 along its +x), half a side out.
-  const glm::dvec2 across(-warp.y, warp.x);
+  const glm::dvec2 across(-warp.y, warp.x), d = p - centre;
   const double half = 0.5 * kCoverGrowth * capture_card().closeup_tag.size * px_per_mm;
-  const glm::dvec2 d = p - centre;
-  return std::abs(glm::dot(d, warp)) < half && std::abs(glm::dot(d, across)) < half;
+  return glm::max(glm::abs(glm::dvec2(glm::dot(d, warp), glm::dot(d, across))) - half, glm::dvec2(0.0));
 }
 
 std::optional<CloseupScale> find_closeup_scale(const Photo& photo) {
@@ -20,7 +19,6 @@ std::optional<CloseupScale> find_closeup_scale(const Photo& photo) {
   for (const TagSighting& t : detect_tags(photo)) {
     if (t.id != tag.id) continue;
     CloseupScale s;
-    s.corners = t.corners;
     double side = 0;
     for (int k = 0; k < 4; ++k) {
       s.centre += 0.25 * t.corners[k];

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Dense>
 
@@ -83,20 +84,28 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
   const int w = x1 - x0, h = y1 - y0;
   CloseupClusters out;
   out.scale = find_closeup_scale(photo);
+  // Whether pixel (x, y) is the tag's paper; its relative linear value, or nothing when clipped.
+  auto on_tag = [&](int x, int y) { return out.scale && out.scale->covers({x + 0.5, y + 0.5}); };
+  auto read = [&](int x, int y) -> std::optional<glm::dvec3> {
+    const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
+    if (std::max({code[0], code[1], code[2]}) >= kClipCode) return std::nullopt;
+    return response.relative(code, image_radius2(photo, x + 0.5, y + 0.5));
+  };
+  auto inner = [&](int x, int y) { return x >= x0 && x < x1 && y >= y0 && y < y1; };
   std::vector<glm::dvec3> value(static_cast<size_t>(w) * h);
   std::vector<double> lum(value.size(), -1);  // −1: clipped, or the scale tag
   long clipped = 0, swatch = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
-      if (out.scale && out.scale->covers({x + 0.5, y + 0.5})) continue;
+      if (on_tag(x, y)) continue;
       ++swatch;
       const size_t i = static_cast<size_t>(y - y0) * w + (x - x0);
-      const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
-      if (std::max({code[0], code[1], code[2]}) >= kClipCode) {
+      const std::optional<glm::dvec3> v = read(x, y);
+      if (!v) {
         ++clipped;
         continue;
       }
-      value[i] = response.relative(code, image_radius2(photo, x + 0.5, y + 0.5));
+      value[i] = *v;
       lum[i] = luminance(value[i]);
     }
   if (swatch == 0 || static_cast<double>(clipped) / swatch > 0.02)
@@ -117,11 +126,14 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
     std::vector<bool> use(n, false);
     for (int y = 0; y < photo.height; ++y)
       for (int x = 0; x < photo.width; ++x) {
-        if (out.scale->covers({x + 0.5, y + 0.5})) continue;
-        const std::array<std::uint8_t, 3> code{photo.at(x, y, 0), photo.at(x, y, 1), photo.at(x, y, 2)};
-        if (std::max({code[0], code[1], code[2]}) >= kClipCode) continue;
+        double l = -1;  // the middle's pixels were read above
+        if (inner(x, y))
+          l = lum[static_cast<size_t>(y - y0) * w + (x - x0)];
+        else if (!on_tag(x, y))
+          if (const std::optional<glm::dvec3> v = read(x, y)) l = luminance(*v);
+        if (l < 0) continue;
         const size_t i = static_cast<size_t>(y) * photo.width + x;
-        log_lum[i] = std::log(std::max(luminance(response.relative(code, image_radius2(photo, x + 0.5, y + 0.5))), floor));
+        log_lum[i] = std::log(std::max(l, floor));
         use[i] = true;
       }
     out.spectrum = closeup_spectrum(log_lum, use, photo.width, photo.height, *out.scale);

@@ -9,8 +9,6 @@
 #include <Eigen/Dense>
 #include <fftw3.h>
 
-#include "capture/capture_card.h"
-
 namespace weft {
 
 namespace {
@@ -25,6 +23,7 @@ constexpr size_t kMaxLines = 16;
 constexpr double kSidelobeReach = 4.0;  // lines (twice as many bins: the spectrum is zero-padded 2×)
 constexpr double kSidelobeDrop = 3.0;   // log power
 constexpr double kNearlyAll = 0.9;
+constexpr double kCoarseSlack = 0.015;  // a 2 % step's drift of a lattice point, in its frequency
 const double kMaxAspect = std::log(3.0);  // ends against picks: woven cloth stays within 3 : 1
 
 struct Disc {
@@ -35,19 +34,24 @@ struct Disc {
 // The largest disc inside the frame that stays clear of the tag's paper (CloseupScale::covers's
 // square), from centres on a 16-pixel grid.
 Disc clear_disc(int width, int height, const CloseupScale& scale) {
-  const double half = 0.5 * CloseupScale::kCoverGrowth * capture_card().closeup_tag.size * scale.px_per_mm;
-  const glm::dvec2 across(-scale.warp.y, scale.warp.x);
   Disc best;
   for (int y = 0; y <= height; y += 16)
     for (int x = 0; x <= width; x += 16) {
-      const glm::dvec2 c(x, y), d = c - scale.centre;
-      // Distance from c to the square, in the tag's own axes.
-      const glm::dvec2 q = glm::max(glm::abs(glm::dvec2(glm::dot(d, scale.warp), glm::dot(d, across))) - half, glm::dvec2(0.0));
-      const double r = std::min({c.x, c.y, width - c.x, height - c.y, glm::length(q)});
+      const glm::dvec2 c(x, y);
+      const double r = std::min({c.x, c.y, width - c.x, height - c.y, glm::length(scale.outside_cover(c))});
       if (r > best.radius) best = {c, r};
     }
   return best;
 }
+
+// `v` turned by `angle` (radians, image axes).
+glm::dvec2 rotated(glm::dvec2 v, double angle) {
+  return {std::cos(angle) * v.x - std::sin(angle) * v.y, std::sin(angle) * v.x + std::cos(angle) * v.y};
+}
+
+// The share of the plane within `tolerance` of a lattice point whose cell has area `cell`: how
+// often a line anywhere lies that near one by chance.
+double chance(double tolerance, double cell) { return std::min(1.0, std::numbers::pi * tolerance * tolerance / cell); }
 
 // FFTW's planner is not thread-safe; its plans' execution is.
 std::mutex& planner_mutex() {
@@ -57,18 +61,11 @@ std::mutex& planner_mutex() {
 
 }  // namespace
 
-double CloseupSpectrum::at(glm::dvec2 k) const {
-  if (k.x < 0) k = -k;  // a real image's spectrum: −k is k
+double CloseupSpectrum::log_power_at(int kx, int ky) const {
+  if (kx < 0) kx = -kx, ky = -ky;
   const int half = n / 2 + 1;
-  const double x = k.x * n, y = k.y * n;
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const double fx = x - x0, fy = y - y0;
-  auto bin = [&](int bx, int by) -> double {
-    if (bx < 0) bx = -bx, by = -by;
-    if (bx >= half) return 0.0;
-    return log_power[static_cast<size_t>((by % n + n) % n) * half + bx];
-  };
-  return (1 - fy) * ((1 - fx) * bin(x0, y0) + fx * bin(x0 + 1, y0)) + fy * ((1 - fx) * bin(x0, y0 + 1) + fx * bin(x0 + 1, y0 + 1));
+  if (kx >= half) return -1e30;
+  return log_power[static_cast<size_t>((ky % n + n) % n) * half + kx];
 }
 
 std::optional<CloseupSpectrum> closeup_spectrum(const std::vector<double>& signal, const std::vector<bool>& use,
@@ -157,13 +154,9 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
 
   // The strong lines: local maxima standing kStrongLine over their ring, from two lines out to
   // twice the finest count searched, the strongest kMaxLines, each centred by a parabola.
-  const int n = s.n, half = n / 2 + 1;
+  const int n = s.n;
   const double bin = 1.0 / n;
-  auto value = [&](int kx, int ky) {
-    if (kx < 0) kx = -kx, ky = -ky;
-    if (kx >= half) return -1e30;
-    return static_cast<double>(s.log_power[static_cast<size_t>((ky % n + n) % n) * half + kx]);
-  };
+  auto value = [&](int kx, int ky) { return s.log_power_at(kx, ky); };
   struct Line {
     glm::dvec2 k;
     double weight;
@@ -209,34 +202,27 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   double total = 0;
   for (const Line& l : lines) total += l.weight;
 
-
-  // How much of the lines' weight lies on the lattice of (e, p, angle), within `tolerance` bins
-  // plus a share of the line's frequency; and their squared distance off it.
-  struct Fit {
-    double explained = 0, misfit = 0;
-  };
+  // A line is on a lattice point within 1.5 bins and `slack` of its frequency (a coarse lattice's
+  // step drifts its points in proportion).
+  auto tolerance = [&](const Line& l, double slack) { return 1.5 * bin + slack * glm::length(l.k); };
   // The floats' diagonal runs one way or its mirror (a satin's face from its back, the photo's
   // handedness against the file's): both are tried.
   int sign = 1;
-  auto fit = [&](double e, double p, double angle, double slack) {
+  // The share of the lines' weight on the lattice of (e, p, angle), less chance's share (a dense
+  // lattice explains any lines).
+  auto explained = [&](double e, double p, double angle, double slack) {
     const double shift_along = sign * static_cast<double>(shift);
-    const glm::dvec2 a(std::cos(angle) * s.warp.x - std::sin(angle) * s.warp.y, std::sin(angle) * s.warp.x + std::cos(angle) * s.warp.y);
-    const glm::dvec2 b(-a.y, a.x);
-    Fit f;
+    const glm::dvec2 a = rotated(s.warp, angle), b(-a.y, a.x);
+    double sum = 0;
     for (const Line& l : lines) {
       const double along = glm::dot(l.k, a), across = glm::dot(l.k, b);
       const double m = std::round(along / (p / rows));
       const double nn = std::round(across / e + m * shift_along / rows);
       const glm::dvec2 point = (m * p / rows) * a + e * (nn - m * shift_along / rows) * b;
-      const double d = glm::length(l.k - point);
-      const double tolerance = 1.5 * bin + slack * glm::length(l.k);
-      if (d <= tolerance) f.explained += l.weight, f.misfit += l.weight * d * d;
-      // A line anywhere lies this near a lattice point by chance with the share of the plane the
-      // points' discs cover: a dense lattice explains any lines, and that is discounted.
-      f.explained -= l.weight * std::min(1.0, std::numbers::pi * tolerance * tolerance * rows / (e * p));
+      if (glm::length(l.k - point) <= tolerance(l, slack)) sum += l.weight;
+      sum -= l.weight * chance(tolerance(l, slack), e * p / rows);
     }
-    f.explained /= total;
-    return f;
+    return sum / total;
   };
   // Coarse: 2 % steps in each count, half a degree in the angle, a line explained within the
   // step's drift. The weave is the coarsest lattice (the largest counts) that explains nearly as
@@ -253,9 +239,9 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   for (double le = std::log(c_lo); le <= std::log(c_hi); le += step)
     for (double lp = std::max(std::log(c_lo), le - kMaxAspect); lp <= std::min(std::log(c_hi), le + kMaxAspect); lp += step)
       for (double angle = -kMaxAngle; angle <= kMaxAngle + 1e-9; angle += std::numbers::pi / 360.0) {
-        const Fit f = fit(std::exp(le), std::exp(lp), angle, 0.015);
-        if (f.explained > 0.5) candidates.push_back({std::exp(le), std::exp(lp), angle, f.explained, sign});
-        best = std::max(best, f.explained);
+        const double v = explained(std::exp(le), std::exp(lp), angle, kCoarseSlack);
+        if (v > 0.5) candidates.push_back({std::exp(le), std::exp(lp), angle, v, sign});
+        best = std::max(best, v);
       }
   if (candidates.empty()) return out;
   const Candidate* chosen = nullptr;
@@ -269,19 +255,17 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   // and the basis solved again.
   sign = chosen->sign;
   const double shift_along = sign * static_cast<double>(shift);
-  const glm::dvec2 a0(std::cos(chosen->angle) * s.warp.x - std::sin(chosen->angle) * s.warp.y,
-                      std::sin(chosen->angle) * s.warp.x + std::cos(chosen->angle) * s.warp.y);
-  const glm::dvec2 b0(-a0.y, a0.x);
+  const glm::dvec2 a0 = rotated(s.warp, chosen->angle), b0(-a0.y, a0.x);
   glm::dvec2 g1 = (chosen->p / rows) * a0 - (chosen->e * shift_along / rows) * b0, g2 = chosen->e * b0;
   std::vector<std::array<double, 2>> index(lines.size());
   std::vector<bool> kept(lines.size(), false);
+  const double det = g1.x * g2.y - g1.y * g2.x;
   for (size_t i = 0; i < lines.size(); ++i) {
     // Solve k = m·G₁ + n·G₂ for (m, n) and round.
-    const double det = g1.x * g2.y - g1.y * g2.x;
     const double m = (lines[i].k.x * g2.y - lines[i].k.y * g2.x) / det, nn = (g1.x * lines[i].k.y - g1.y * lines[i].k.x) / det;
     index[i] = {std::round(m), std::round(nn)};
     const glm::dvec2 d = lines[i].k - (index[i][0] * g1 + index[i][1] * g2);
-    kept[i] = glm::length(d) <= 1.5 * bin + 0.015 * glm::length(lines[i].k);
+    kept[i] = glm::length(d) <= tolerance(lines[i], kCoarseSlack);
   }
   for (int round = 0; round < 3; ++round) {
     Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
@@ -312,7 +296,7 @@ ThreadCounts weave_counts(const CloseupSpectrum& s, int rows, int shift) {
   const double cell = std::abs(g1.x * g2.y - g1.y * g2.x);  // the lattice's area per point
   for (size_t i = 0; i < lines.size(); ++i) {
     if (kept[i]) ++out.fitted_lines, on += lines[i].weight;
-    on -= lines[i].weight * std::min(1.0, std::numbers::pi * bin * bin / std::max(cell, 1e-300));  // by chance, as above
+    on -= lines[i].weight * chance(bin, std::max(cell, 1e-300));
   }
   out.fitted_share = on / total;
   return out;

@@ -25,8 +25,9 @@ struct CloseupSpectrum {
   double px_per_mm = 0;
   glm::dvec2 warp{1.0, 0.0};     // the tag's +x, image direction
   double disc_mm = 0;
-  // Bilinear in the bins, at frequency `k` (cycles per pixel, image axes).
-  double at(glm::dvec2 k) const;
+  // Bin (kx, ky) of the full n × n spectrum, either half (−k is k for a real image); kx ≥ n/2 + 1
+  // after folding is past Nyquist and reads as nothing.
+  double log_power_at(int kx, int ky) const;
 };
 
 // Nothing when the frame leaves no disc of 64 pixels clear of the tag.
