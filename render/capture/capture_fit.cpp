@@ -9,6 +9,7 @@
 #include "capture/capture_rejection.h"
 #include "capture/card_detection.h"
 #include "capture/card_samples.h"
+#include "capture/closeup_registration.h"
 #include "capture/closeup_shot.h"
 #include "capture/photo_files.h"
 #include "core/weave_layout.h"
@@ -183,18 +184,33 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
   }
   // The close-up, read with the camera's response (its scale cancels in the clusters' ratio).
   std::optional<CloseupObservation> closeup;
+  std::optional<Photo> closeup_photo_read;
   if (const auto file = closeup_photo(dir)) {
     result.closeup_file = file->filename().string();
-    result.closeup = measure_closeup(load(*file), result.photos.back().response.model, result.closeup_file);
-    closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn};
+    closeup_photo_read = load(*file);
+    result.closeup = measure_closeup(*closeup_photo_read, result.photos.back().response.model, result.closeup_file);
+    closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn, {}};
+    // The chosen family's lattice from the spectrum, and the close-up registered to its weave.
+    if (result.closeup->spectrum)
+      closeup->registered_means = [&](const Fabric& fitted) -> std::optional<std::array<glm::dvec3, 2>> {
+        const WeaveLayout layout(fitted);
+        result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
+        if (!result.thread_counts->resolved()) return std::nullopt;
+        result.registration = register_closeup(*closeup_photo_read, result.photos.back().response.model, *result.closeup->scale,
+                                               *result.thread_counts, fitted, result.lighting.lights, result.photos.back().turn);
+        if (!result.registration->registered) return std::nullopt;
+        return result.registration->thread_mean;
+      };
   }
   FabricFitOptions fit_options;
   if (options.open_progress) fit_options.progress = options.open_progress("fit");
   result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options, closeup);
   // The yarns' counts where the close-up's spectrum resolves them; the family's where it does not.
   if (result.closeup && result.closeup->spectrum) {
-    const WeaveLayout layout(result.fit.fabric);
-    result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
+    if (!result.thread_counts) {
+      const WeaveLayout layout(result.fit.fabric);
+      result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
+    }
     if (result.thread_counts->resolved()) {
       WeaveSpec& weave = result.fit.fabric.weave;
       weave.ends_per_cm = std::round(10.0 * result.thread_counts->ends_per_cm) / 10.0;

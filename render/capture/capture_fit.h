@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "capture/capture_lighting.h"
+#include "capture/closeup_registration.h"
 #include "capture/closeup_shot.h"
 #include "capture/fabric_fit.h"
 #include "capture/response_calibration.h"
@@ -54,6 +55,7 @@ struct CaptureFitResult {
   // The ends and picks the close-up's spectrum gives for the fitted family's weave, when it holds
   // the scale tag; the fabric takes them when they are resolved.
   std::optional<ThreadCounts> thread_counts;
+  std::optional<CloseupRegistration> registration;
   FabricFit fit;
   double seconds = 0;
 };

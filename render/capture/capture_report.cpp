@@ -69,6 +69,14 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
                             {"resolved", t->resolved()},         {"score", t->score},
                             {"strong_lines", t->points}, {"fitted_lines", t->fitted_lines}, {"fitted_share", t->fitted_share},       {"warp_off_tag_deg", glm::degrees(t->angle)},
                             {"resolution_per_cm", t->resolution_per_cm}};
+    if (const auto& g = result.registration)
+      j["registration"] = {{"registered", g->registered}, {"why_not", g->why}, {"tile_bins", {g->tile_bins.x, g->tile_bins.y}},
+                           {"pixels", g->pixels}, {"phase", {g->phase.x, g->phase.y}}, {"mirrored", g->mirrored},
+                           {"explained", g->explained}, {"explained_median_phase", g->explained_median},
+                           {"exposure", g->exposure}, {"warp_albedo", rgb(g->albedo[0])}, {"weft_albedo", rgb(g->albedo[1])},
+                           {"warp_over_weft_albedo", rgb(g->albedo_ratio)},
+                           {"warp_mean", rgb(g->thread_mean[0])}, {"weft_mean", rgb(g->thread_mean[1])},
+                           {"inner_bins", {g->inner_bins[0], g->inner_bins[1]}}};
     for (const CloseupSplit& s : c.splits)
       j["splits"].push_back({{"features", s.lightness ? "colour and lightness" : "colour"}, {"pixels", s.pixels},
                              {"shares", {s.share[0], s.share[1]}}, {"valley", s.valley}});
@@ -76,6 +84,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
       j["one_colour"] = f->one_colour;
       j["one_lightness"] = f->one_lightness;
       if (!f->used) j["not_used"] = f->rejected;
+      j["registered"] = f->registered;
+      if (f->registered) j["measured_warp_over_weft"] = rgb(f->measured_ratio);
       if (f->split >= 0) {
         j["split"] = f->split;
         j["warp_share"] = f->warp_share;
@@ -145,8 +155,9 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
     out += line;
   } else if (r.closeup && r.fit.closeup) {
     const CloseupFit& f = *r.fit.closeup;
-    std::snprintf(line, sizeof line, "close-up %s: warp ÷ weft (%.3f %.3f %.3f) measured, (%.3f %.3f %.3f) fitted%s%s\n",
-                  r.closeup_file.c_str(), f.measured_ratio.r, f.measured_ratio.g, f.measured_ratio.b, f.fitted_ratio.r,
+    std::snprintf(line, sizeof line, "close-up %s: warp ÷ weft (%.3f %.3f %.3f) measured %s, (%.3f %.3f %.3f) fitted%s%s\n",
+                  r.closeup_file.c_str(), f.measured_ratio.r, f.measured_ratio.g, f.measured_ratio.b,
+                  f.registered ? "where the weave registered to it puts them" : "from its colour clusters", f.fitted_ratio.r,
                   f.fitted_ratio.g, f.fitted_ratio.b, f.used ? "" : "; not used: ", f.rejected.c_str());
     out += line;
   }

@@ -149,6 +149,20 @@ double to_z(int i, double v) {
   return std::log(f / (1 - f));
 }
 
+// The family's preset with the threads of z.
+Fabric fitted_fabric(const Fabric& preset, const Eigen::VectorXd& z) {
+  Fabric f = preset;
+  for (int j = 0; j < 2; ++j) {
+    ThreadParams& t = f.threads[j];
+    const ThreadValues v = thread_values(z, j);
+    t.albedo = v.A;
+    t.kd = v.kd;
+    t.gamma_s = v.gamma_s;
+    t.gamma_v = v.gamma_v;
+  }
+  return f;
+}
+
 constexpr double kHuber = 2.0;
 constexpr double kPriorWeight = 0.5;
 constexpr double kBroadStart[2] = {20.0, 40.0};  // γ_s, γ_v in degrees: the second start's lobes
@@ -283,17 +297,21 @@ void minimize(const Residuals& r, Run& run) {
 
 // The chosen family fitted again with the close-up (fabric_fit.h): `run` and `r` take it when it is
 // used, and are left as they were when it is not.
-CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& closeup) {
+CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& closeup, const Fabric& fitted) {
   CloseupFit fit;
   const glm::dvec3 ratio = r.closeup_ratio(run.z);
   const double expected = r.coverage[0] / (r.coverage[0] + r.coverage[1]);
   std::array<glm::dvec3, 2> measured{};
+  std::optional<std::array<glm::dvec3, 2>> registered;
+  if (closeup.registered_means) registered = closeup.registered_means(fitted);
+  fit.registered = registered.has_value();
   // One hue when the split on colour alone does not separate: a split by lightness then cuts one
   // colour's shading (or two lightnesses of one dye), which no ratio of two threads describes.
-  fit.one_colour = true;
+  fit.one_colour = !fit.registered;
   for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
   double best_share_error = 1;
-  for (size_t k = 0; k < closeup.splits.size() && !fit.one_colour; ++k) {
+  if (registered) measured = *registered;
+  for (size_t k = 0; k < closeup.splits.size() && !fit.one_colour && !fit.registered; ++k) {
     const CloseupSplit& split = closeup.splits[k];
     if (!split.separated()) continue;
     const auto& m = split.mean;
@@ -317,7 +335,7 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
     // Neither split separates: one colour, its lightness too.
     fit.one_lightness = r.one_lightness = !closeup.splits.empty() && std::none_of(closeup.splits.begin(), closeup.splits.end(),
                                                                                   [](const CloseupSplit& s) { return s.separated(); });
-  } else if (fit.split < 0) {
+  } else if (fit.split < 0 && !fit.registered) {
     char why[200];
     const CloseupSplit& s = closeup.splits.front();
     std::snprintf(why, sizeof why, "no split's clusters cover what the family's threads do (%.0f %% and %.0f %% against %.0f %%)",
@@ -405,14 +423,14 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
   std::vector<Run> runs;
   for (size_t p = 0; p < presets.size(); ++p) {
     runs.push_back(run_family(p, false));
-    if (options.progress) options.progress(0.7 * static_cast<double>(p + 1) / presets.size());
+    if (options.progress) options.progress(0.55 * static_cast<double>(p + 1) / presets.size());
   }
   double lowest = std::numeric_limits<double>::infinity();
   for (const Run& run : runs) lowest = std::min(lowest, run.cost);
   for (size_t p = 0; p < presets.size(); ++p) {
     if (runs[p].cost <= kSecondStartWithin * lowest)
       if (Run again = run_family(p, true); again.cost < runs[p].cost) runs[p] = std::move(again);
-    if (options.progress) options.progress(0.7 + 0.25 * static_cast<double>(p + 1) / presets.size());
+    if (options.progress) options.progress(0.55 + 0.25 * static_cast<double>(p + 1) / presets.size());
   }
   FabricFit best;
   size_t chosen = 0;
@@ -424,23 +442,21 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
     const Fabric& preset = presets[chosen];
     Run& run = runs[chosen];
     const double cost = run.cost;  // what the family was chosen by
-    Residuals r = residuals(geometries[chosen], preset);
-    if (closeup) best.closeup = refit_with_closeup(r, run, *closeup);
+    Geometry fine;
+    if (options.final_tangent_samples > options.tangent_samples) {
+      fine = precompute(preset, seen, lights, options.final_tangent_samples);
+      minimize(residuals(fine, preset), run);
+      if (options.progress) options.progress(0.9);
+    }
+    Residuals r = residuals(fine.observations > 0 ? fine : geometries[chosen], preset);
+    if (closeup) best.closeup = refit_with_closeup(r, run, *closeup, fitted_fabric(preset, run.z));
     if (options.progress) options.progress(1.0);
     const Eigen::VectorXd& z = run.z;
     Eigen::NumericalDiff<Residuals> diff(r);
     best.cost = cost;
     best.preset = preset.name;
     best.iterations = run.iterations;
-    best.fabric = preset;
-    for (int j = 0; j < 2; ++j) {
-      ThreadParams& t = best.fabric.threads[j];
-      const ThreadValues v = thread_values(z, j);
-      t.albedo = v.A;
-      t.kd = v.kd;
-      t.gamma_s = v.gamma_s;
-      t.gamma_v = v.gamma_v;
-    }
+    best.fabric = fitted_fabric(preset, z);
     const auto m = r.model(z);
     double rel = 0;
     for (int o = 0; o < r.cells(); ++o)

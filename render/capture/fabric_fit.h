@@ -43,6 +43,11 @@ struct FitLight {
 struct CloseupObservation {
   std::vector<CloseupSplit> splits;
   double turn = 0;
+  // The close-up registered to the chosen family's weave (capture/closeup_registration.h), given
+  // that family's fit to the photos: each thread's mean value where the weave puts it (warp,
+  // weft), or nothing where it does not register. Taken before the splits: it tells the threads
+  // apart by where they lie, not by their colours.
+  std::function<std::optional<std::array<glm::dvec3, 2>>(const Fabric& fitted)> registered_means;
 };
 
 // What the fit made of the close-up.
@@ -55,6 +60,7 @@ struct CloseupFit {
   bool one_colour = false;
   bool one_lightness = false;
   std::string rejected;
+  bool registered = false;         // the threads' means from the registered close-up, not a split
   int split = -1;                  // the split taken (CloseupObservation::splits)
   int warp_cluster = 0;            // its cluster taken as the warp (the other is the weft)
   double warp_share = 0;           // that cluster's share, against the family's a_1 / (a_1 + a_2)
@@ -79,7 +85,11 @@ struct FabricFit {
 };
 
 struct FabricFitOptions {
-  int tangent_samples = 16;  // N_j per thread in the fit
+  // N_j per thread: every family is tried with `tangent_samples`, the chosen one fitted again with
+  // `final_tangent_samples` (a glossy float's highlight is a few degrees of tilt wide, and a coarse
+  // quadrature of its curve misses or doubles it).
+  int tangent_samples = 16;
+  int final_tangent_samples = 64;
   std::function<void(double)> progress;
 };
 
