@@ -192,14 +192,14 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn, {}};
     // The chosen family's lattice from the spectrum, and the close-up registered to its weave.
     if (result.closeup->spectrum)
-      closeup->registered_means = [&](const Fabric& fitted) -> std::optional<std::array<glm::dvec3, 2>> {
+      closeup->registered = [&](const Fabric& fitted) -> std::optional<CloseupObservation::Registered> {
         const WeaveLayout layout(fitted);
         result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
         if (!result.thread_counts->resolved()) return std::nullopt;
         result.registration = register_closeup(*closeup_photo_read, result.photos.back().response.model, *result.closeup->scale,
                                                *result.thread_counts, fitted, result.lighting.lights, result.photos.back().turn);
         if (!result.registration->registered) return std::nullopt;
-        return result.registration->thread_mean;
+        return CloseupObservation::Registered{result.registration->thread_mean, result.registration->albedo};
       };
   }
   FabricFitOptions fit_options;

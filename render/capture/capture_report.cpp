@@ -147,19 +147,23 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
   std::snprintf(line, sizeof line, "weave family %s, RMS relative residual %g over %zu cells of %zu photos, %g s\n",
                 r.fit.preset.c_str(), r.fit.rms_relative, r.observations.size(), r.photos.size(), r.seconds);
   out += line;
-  if (r.closeup && r.fit.closeup && r.fit.closeup->one_colour) {
-    std::snprintf(line, sizeof line, "close-up %s: one %s (its clusters do not separate): the threads' %s %s\n",
-                  r.closeup_file.c_str(), r.fit.closeup->one_lightness ? "colour" : "hue",
-                  r.fit.closeup->one_lightness ? "colours" : "chromaticities",
-                  r.fit.closeup->used ? "tied" : ("not tied, " + r.fit.closeup->rejected).c_str());
-    out += line;
-  } else if (r.closeup && r.fit.closeup) {
+  if (r.closeup && r.fit.closeup) {
     const CloseupFit& f = *r.fit.closeup;
-    std::snprintf(line, sizeof line, "close-up %s: warp ÷ weft (%.3f %.3f %.3f) measured %s, (%.3f %.3f %.3f) fitted%s%s\n",
-                  r.closeup_file.c_str(), f.measured_ratio.r, f.measured_ratio.g, f.measured_ratio.b,
-                  f.registered ? "where the weave registered to it puts them" : "from its colour clusters", f.fitted_ratio.r,
-                  f.fitted_ratio.g, f.fitted_ratio.b, f.used ? "" : "; not used: ", f.rejected.c_str());
-    out += line;
+    std::string what;
+    if (f.registered || f.split >= 0) {
+      std::snprintf(line, sizeof line, "warp ÷ weft (%.3f %.3f %.3f) measured %s, (%.3f %.3f %.3f) fitted", f.measured_ratio.r,
+                    f.measured_ratio.g, f.measured_ratio.b,
+                    f.registered ? "where the weave registered to it puts them" : "from its colour clusters", f.fitted_ratio.r,
+                    f.fitted_ratio.g, f.fitted_ratio.b);
+      what = line;
+    }
+    if (f.one_colour) {
+      std::snprintf(line, sizeof line, "one %s (its clusters do not separate): the threads' %s tied", f.one_lightness ? "colour" : "hue",
+                    f.one_lightness ? "colours" : "chromaticities");
+      what += (what.empty() ? "" : "; ") + std::string(line);
+    }
+    out += "close-up " + r.closeup_file + ": " + (what.empty() ? "nothing taken" : what) +
+           (f.used ? "" : "; not used: " + f.rejected) + "\n";
   }
   {
     const WeaveSpec& weave = r.fit.fabric.weave;

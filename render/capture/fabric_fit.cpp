@@ -173,6 +173,13 @@ constexpr double kLevelSigma = 0.02;
 // 1σ of the close-up's log ratio of the threads' means, per channel: the ball's lighting against
 // the room's (the ratio depends on it through each thread's highlight), the k-means' split, JPEG.
 constexpr double kCloseupSigma = 0.05;
+// ... when the threads' means come from the close-up registered to the weave: thousands of pixels
+// each, the threads told apart by where they lie; what is left is the lighting.
+constexpr double kRegisteredSigma = 0.02;
+// The registered albedos' chromaticities (L1) within which they agree with clusters that show one
+// hue: same-dye threads read 0.01–0.15 apart (velvet's near-black pile the most), an orange and a
+// blue 0.5.
+constexpr double kRegisteredOneHue = 0.2;
 // 1σ of the difference of the chromaticities A/(A_r + A_g + A_b) of two threads a close-up shows
 // as one hue, and of their lightness A_r + A_g + A_b (relative) when it shows one colour.
 constexpr double kOneColourSigma = 0.02;
@@ -192,6 +199,7 @@ struct Residuals {
   bool robust = true;
   // The close-up's cluster means, the warp's first, and the threads' coverages a_j.
   std::optional<std::array<glm::dvec3, 2>> closeup;
+  double closeup_sigma = kCloseupSigma;
   bool one_colour = false;     // the threads' chromaticities tied instead
   bool one_lightness = false;  // ... and their lightness
   std::array<double, 2> coverage{1, 1};
@@ -207,7 +215,7 @@ struct Residuals {
 
   int inputs() const { return kParams; }
   int cells() const { return static_cast<int>(obs->size()); }
-  int values() const { return 3 * cells() + 6 + (closeup || one_colour ? 3 : 0) + (one_lightness ? 1 : 0); }
+  int values() const { return 3 * cells() + 6 + (closeup ? 3 : 0) + (one_colour ? 3 : 0) + (one_lightness ? 1 : 0); }
 
   const std::vector<glm::dvec3>& lobe(int j, bool volume, double gamma) const {
     Cache& c = cache[2 * j + volume];
@@ -260,16 +268,18 @@ struct Residuals {
       }
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 3; ++i) f[3 * cells() + 3 * j + i] = kPriorWeight * (z[6 * j + 3 + i] - prior[6 * j + 3 + i]);
+    int k = 3 * cells() + 6;
     if (closeup) {
-      const glm::dvec3 d = closeup_miss(closeup_ratio(z), *closeup) / kCloseupSigma;
-      for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c];
-    } else if (one_colour) {
+      const glm::dvec3 d = closeup_miss(closeup_ratio(z), *closeup) / closeup_sigma;
+      for (int c = 0; c < 3; ++c) f[k++] = d[c];
+    }
+    if (one_colour) {
       const glm::dvec3 a = thread_values(z, 0).A, b = thread_values(z, 1).A;
       const glm::dvec3 d = a / std::max(a.r + a.g + a.b, 1e-6) - b / std::max(b.r + b.g + b.b, 1e-6);
-      for (int c = 0; c < 3; ++c) f[3 * cells() + 6 + c] = d[c] / kOneColourSigma;
+      for (int c = 0; c < 3; ++c) f[k++] = d[c] / kOneColourSigma;
       if (one_lightness) {
         const double la = a.r + a.g + a.b, lb = b.r + b.g + b.b;
-        f[3 * cells() + 9] = (la - lb) / (kOneLightnessSigma * std::max(0.5 * (la + lb), 1e-6));
+        f[k++] = (la - lb) / (kOneLightnessSigma * std::max(0.5 * (la + lb), 1e-6));
       }
     }
     return 0;
@@ -302,15 +312,25 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
   const glm::dvec3 ratio = r.closeup_ratio(run.z);
   const double expected = r.coverage[0] / (r.coverage[0] + r.coverage[1]);
   std::array<glm::dvec3, 2> measured{};
-  std::optional<std::array<glm::dvec3, 2>> registered;
-  if (closeup.registered_means) registered = closeup.registered_means(fitted);
+  std::optional<CloseupObservation::Registered> registered;
+  if (closeup.registered) registered = closeup.registered(fitted);
   fit.registered = registered.has_value();
   // One hue when the split on colour alone does not separate: a split by lightness then cuts one
-  // colour's shading (or two lightnesses of one dye), which no ratio of two threads describes.
-  fit.one_colour = !fit.registered;
+  // colour's shading (or two lightnesses of one dye), which no ratio of two clusters describes;
+  // one colour when neither separates. When the close-up registered, only if the albedos it read
+  // agree: fine yarns blurred into each other, or a satin's white highlights, leave no valley
+  // between two hues (an orange warp over a blue weft read as one colour).
+  fit.one_colour = !closeup.splits.empty();
   for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
+  if (registered) {
+    auto chromaticity = [](const glm::dvec3& a) { return a / std::max(a.r + a.g + a.b, 1e-12); };
+    const glm::dvec3 d = glm::abs(chromaticity(registered->albedo[0]) - chromaticity(registered->albedo[1]));
+    fit.one_colour = fit.one_colour && d.r + d.g + d.b < kRegisteredOneHue;
+  }
+  fit.one_lightness = fit.one_colour && std::none_of(closeup.splits.begin(), closeup.splits.end(),
+                                                     [](const CloseupSplit& s) { return s.separated(); });
   double best_share_error = 1;
-  if (registered) measured = *registered;
+  if (registered) measured = registered->mean;
   for (size_t k = 0; k < closeup.splits.size() && !fit.one_colour && !fit.registered; ++k) {
     const CloseupSplit& split = closeup.splits[k];
     if (!split.separated()) continue;
@@ -330,12 +350,9 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
       measured = {m[warp], m[1 - warp]};
     }
   }
-  if (fit.one_colour) {
-    r.one_colour = true;
-    // Neither split separates: one colour, its lightness too.
-    fit.one_lightness = r.one_lightness = !closeup.splits.empty() && std::none_of(closeup.splits.begin(), closeup.splits.end(),
-                                                                                  [](const CloseupSplit& s) { return s.separated(); });
-  } else if (fit.split < 0 && !fit.registered) {
+  r.one_colour = fit.one_colour;
+  r.one_lightness = fit.one_lightness;
+  if (!fit.one_colour && !fit.registered && fit.split < 0) {
     char why[200];
     const CloseupSplit& s = closeup.splits.front();
     std::snprintf(why, sizeof why, "no split's clusters cover what the family's threads do (%.0f %% and %.0f %% against %.0f %%)",
@@ -343,20 +360,35 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
     fit.rejected = why;
     fit.fitted_ratio = ratio;
     return fit;
-  } else {
+  }
+  if (fit.registered || fit.split >= 0) {
     fit.measured_ratio = measured[0] / measured[1];
     r.closeup = measured;
+    r.closeup_sigma = fit.registered ? kRegisteredSigma : kCloseupSigma;
   }
   const double cost_without = r.cells_cost(run.z);
   Run with = run;
   minimize(r, with);
+  if (registered) {
+    // Also from the threads' albedos the registration read under the photos' lobes: the photos'
+    // optimum can lie in a valley the close-up's ratio does not lead out of.
+    Run again = run;
+    for (int j = 0; j < 2; ++j)
+      for (int c = 0; c < 3; ++c) again.z[6 * j + c] = to_z(c, registered->albedo[j][c]);
+    minimize(r, again);
+    if (again.cost < with.cost) with = std::move(again);
+  }
   fit.fitted_ratio = r.closeup_ratio(with.z);
-  const glm::dvec3 miss = glm::abs(Residuals::closeup_miss(fit.fitted_ratio, measured));
-  const double worst = fit.one_colour ? 0.0 : std::max({miss.r, miss.g, miss.b}), cost_with = r.cells_cost(with.z);
+  double worst = 0;
+  if (r.closeup) {
+    const glm::dvec3 miss = glm::abs(Residuals::closeup_miss(fit.fitted_ratio, measured));
+    worst = std::max({miss.r, miss.g, miss.b});
+  }
+  const double cost_with = r.cells_cost(with.z);
   char why[160] = "";
   if (worst > kCloseupMisses)
     std::snprintf(why, sizeof why, "the fitted threads miss its warp ÷ weft ratio by %.0f %% in a channel", 100 * (std::exp(worst) - 1));
-  else if (cost_with > kCloseupCostGrowth * cost_without)
+  else if (cost_with > (fit.registered ? kRegisteredCostGrowth : kCloseupCostGrowth) * cost_without)
     std::snprintf(why, sizeof why, "matching it costs the photos' fit %.1f× its cost without", cost_with / cost_without);
   fit.used = why[0] == 0;
   fit.rejected = why;

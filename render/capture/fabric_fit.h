@@ -44,10 +44,13 @@ struct CloseupObservation {
   std::vector<CloseupSplit> splits;
   double turn = 0;
   // The close-up registered to the chosen family's weave (capture/closeup_registration.h), given
-  // that family's fit to the photos: each thread's mean value where the weave puts it (warp,
-  // weft), or nothing where it does not register. Taken before the splits: it tells the threads
-  // apart by where they lie, not by their colours.
-  std::function<std::optional<std::array<glm::dvec3, 2>>(const Fabric& fitted)> registered_means;
+  // that family's fit to the photos, or nothing where it does not register. Taken before the
+  // splits: it tells the threads apart by where they lie, not by their colours.
+  struct Registered {
+    std::array<glm::dvec3, 2> mean;    // each thread's mean value where the weave puts it (warp, weft)
+    std::array<glm::dvec3, 2> albedo;  // each thread's albedo under the fitted lobes: a start for the refit
+  };
+  std::function<std::optional<Registered>(const Fabric& fitted)> registered;
 };
 
 // What the fit made of the close-up.
@@ -94,16 +97,23 @@ struct FabricFitOptions {
 };
 
 // Throws std::invalid_argument when there are no observations, lights or presets. With a
-// close-up, the family is still chosen by the turned photos; its fit then also matches the
-// close-up's ratio of the threads' colours, taken from the first split whose clusters cover the
-// family's coverages within kCloseupShare (the warp is the cluster nearer a_1/(a_1 + a_2), or for
-// even coverages the one whose ratio the family's first fit comes closer to), or with the
-// threads' chromaticities tied when the split on colour alone does not separate (one hue), unless that fit then misses the ratio by more than kCloseupMisses in a
-// channel's log or the photos by more than kCloseupCostGrowth times their cost without it: the
-// clusters are then not the threads (a glossy float's highlight can make a cluster of its own).
+// close-up, the family is still chosen by the turned photos, then fitted again with
+// `final_tangent_samples`; that fit then also matches the close-up's ratio of the threads' means:
+// where the close-up registers to the family's weave, the means read where the weave puts each
+// thread (from the photos' optimum and from the albedos the registration read, the lower cost
+// kept); otherwise from the first split whose clusters cover the family's coverages within
+// kCloseupShare (the warp is the cluster nearer a_1/(a_1 + a_2), or for even coverages the one
+// whose ratio the family's first fit comes closer to). The threads' chromaticities are tied when
+// the split on colour alone does not separate (one hue; registered, only if its albedos agree).
+// The close-up is dropped when that fit misses the ratio by more than kCloseupMisses in a
+// channel's log, or the photos by more than kCloseupCostGrowth times their cost without it
+// (kRegisteredCostGrowth for registered means): clusters can be other than the threads (a glossy
+// float's highlight makes a cluster of its own); registered means are measured to about 1 %, and
+// the photos' own optimum takes up the ball's lighting error, so holding them costs more.
 inline constexpr double kCloseupMisses = 0.2;
 inline constexpr double kCloseupShare = 0.15;
 inline constexpr double kCloseupCostGrowth = 2.0;
+inline constexpr double kRegisteredCostGrowth = 4.0;
 FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const std::vector<FitLight>& lights,
                      const std::vector<Fabric>& presets, const FabricFitOptions& options = {},
                      const std::optional<CloseupObservation>& closeup = std::nullopt);

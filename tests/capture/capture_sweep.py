@@ -66,7 +66,7 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     cap = json.loads(fitted.read_text())["capture"]
     de = cap["appearance_check"]["thread_delta_e2000"]  # weft's CIEDE2000 of each thread's colour A
     c = cap.get("closeup")
-    kind = ("one colour" if c.get("one_lightness") else "one hue") if c and c.get("one_colour") else "registered" if c and c.get("registered") else "ratio"
+    kind = ("registered" + (", one colour" if c.get("one_lightness") else ", one hue" if c.get("one_colour") else "") if c.get("registered") else ("one colour" if c.get("one_lightness") else "one hue") if c.get("one_colour") else "ratio") if c else "—"
     closeup = "—" if c is None else kind if c["used"] else "not used: " + c.get("not_used", "")
     counts = c.get("thread_counts") if c else None
     check = cap["appearance_check"]
