@@ -367,30 +367,44 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
     r.closeup_sigma = fit.registered ? kRegisteredSigma : kCloseupSigma;
   }
   const double cost_without = r.cells_cost(run.z);
+  // Whether a refit holds the close-up: what it misses of the measured ratio (log, worst
+  // channel) and the photos' cost it costs.
+  auto verdict = [&](const Run& with) {
+    std::string why;
+    char line[160];
+    double worst = 0;
+    if (r.closeup) {
+      const glm::dvec3 miss = glm::abs(Residuals::closeup_miss(r.closeup_ratio(with.z), measured));
+      worst = std::max({miss.r, miss.g, miss.b});
+    }
+    const double cost_with = r.cells_cost(with.z);
+    const double growth = fit.registered ? kRegisteredCostGrowth : kCloseupCostGrowth;
+    if (worst > kCloseupMisses) {
+      std::snprintf(line, sizeof line, "the fitted threads miss its warp ÷ weft ratio by %.0f %% in a channel", 100 * (std::exp(worst) - 1));
+      why = line;
+    } else if (cost_with > growth * cost_without) {
+      std::snprintf(line, sizeof line, "matching it costs the photos' fit %.1f× its cost without", cost_with / cost_without);
+      why = line;
+    }
+    return why;
+  };
   Run with = run;
   minimize(r, with);
-  if (registered) {
-    // Also from the threads' albedos the registration read under the photos' lobes: the photos'
+  std::string why = verdict(with);
+  if (registered && !why.empty()) {
+    // Again from the threads' albedos the registration read under the photos' lobes: the photos'
     // optimum can lie in a valley the close-up's ratio does not lead out of.
     Run again = run;
     for (int j = 0; j < 2; ++j)
       for (int c = 0; c < 3; ++c) again.z[6 * j + c] = to_z(c, registered->albedo[j][c]);
     minimize(r, again);
-    if (again.cost < with.cost) with = std::move(again);
+    if (const std::string again_why = verdict(again); again_why.empty() || again.cost < with.cost) {
+      with = std::move(again);
+      why = again_why;
+    }
   }
   fit.fitted_ratio = r.closeup_ratio(with.z);
-  double worst = 0;
-  if (r.closeup) {
-    const glm::dvec3 miss = glm::abs(Residuals::closeup_miss(fit.fitted_ratio, measured));
-    worst = std::max({miss.r, miss.g, miss.b});
-  }
-  const double cost_with = r.cells_cost(with.z);
-  char why[160] = "";
-  if (worst > kCloseupMisses)
-    std::snprintf(why, sizeof why, "the fitted threads miss its warp ÷ weft ratio by %.0f %% in a channel", 100 * (std::exp(worst) - 1));
-  else if (cost_with > (fit.registered ? kRegisteredCostGrowth : kCloseupCostGrowth) * cost_without)
-    std::snprintf(why, sizeof why, "matching it costs the photos' fit %.1f× its cost without", cost_with / cost_without);
-  fit.used = why[0] == 0;
+  fit.used = why.empty();
   fit.rejected = why;
   if (fit.used) {
     run = with;
