@@ -199,7 +199,8 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
         result.registration = register_closeup(*closeup_photo_read, result.photos.back().response.model, *result.closeup->scale,
                                                *result.thread_counts, fitted, result.lighting.lights, result.photos.back().turn);
         if (!result.registration->registered) return std::nullopt;
-        return CloseupObservation::Registered{result.registration->thread_mean, result.registration->albedo};
+        return CloseupObservation::Registered{result.registration->thread_mean, result.registration->albedo,
+                                              result.registration->explained};
       };
   }
   FabricFitOptions fit_options;

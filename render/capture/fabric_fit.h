@@ -49,6 +49,7 @@ struct CloseupObservation {
   struct Registered {
     std::array<glm::dvec3, 2> mean;    // each thread's mean value where the weave puts it (warp, weft)
     std::array<glm::dvec3, 2> albedo;  // each thread's albedo under the fitted lobes: a start for the refit
+    double explained = 0;              // the share of the folded tile the weave's model explains
   };
   std::function<std::optional<Registered>(const Fabric& fitted)> registered;
 };
