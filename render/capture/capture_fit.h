@@ -3,7 +3,9 @@
 // and its grey patches and paper (card_samples.h); the response, fitted across every photo
 // (response_calibration.h); per photo again, the swatch's cells and the mirror ball read through
 // it; then the lighting from every ball (capture_lighting.h), the close-up's thread clusters when
-// the folder has one (closeup_shot.h), and the fabric (fabric_fit.h).
+// the folder has one (closeup_shot.h), and the fabric (fabric_fit.h): for the family the photos
+// choose, the close-up's lattice (thread_counts.h) and its registration to that weave
+// (closeup_registration.h), whose threads' means the family's refit then holds.
 // Unusable input is a CaptureRejection: the card not found, the swatch marker missing, a blurred
 // or saturated photo, fewer than three photos or swatch turns.
 #include <filesystem>
@@ -55,7 +57,7 @@ struct CaptureFitResult {
   // The ends and picks the close-up's spectrum gives for the fitted family's weave, when it holds
   // the scale tag; the fabric takes them when they are resolved.
   std::optional<ThreadCounts> thread_counts;
-  std::optional<CloseupRegistration> registration;
+  std::optional<CloseupRegistration> registration;  // where the counts are resolved
   FabricFit fit;
   double seconds = 0;
 };

@@ -230,14 +230,16 @@ CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& re
   }
   if (out.exposure > 0) out.albedo[0] /= out.exposure, out.albedo[1] /= out.exposure;
   char why[200] = "";
-  const double floor = 1e-3 * std::max({x[1], x[2], x[3], x[4], x[5], x[6]});
+  const double least = 1e-3 * std::max({x[1], x[2], x[3], x[4], x[5], x[6]});
   if (out.explained < CloseupRegistration::kMinExplained)
     std::snprintf(why, sizeof why, "the weave's model explains %.0f %% of the folded tile (under %.0f %%)", 100 * out.explained,
                   100 * CloseupRegistration::kMinExplained);
   else if (out.explained - out.explained_median < CloseupRegistration::kMinPhaseGain)
     std::snprintf(why, sizeof why, "no phase stands out (%.0f %% explained against %.0f %% at the median phase)", 100 * out.explained,
                   100 * out.explained_median);
-  else if (floor <= 0 || std::min({x[1], x[2], x[3], x[4], x[5], x[6]}) < floor)
+  else if (out.exposure <= 0)
+    std::snprintf(why, sizeof why, "the model's highlights are not where the close-up's are (its exposure came out %.3g)", out.exposure);
+  else if (least <= 0 || std::min({x[1], x[2], x[3], x[4], x[5], x[6]}) < least)
     std::snprintf(why, sizeof why, "a thread's colour came out negative in a channel");
   out.why = why;
   out.registered = why[0] == 0;
@@ -259,7 +261,8 @@ CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& re
     out.registered = false;
     out.why = "a thread fills no bin of the tile by itself";
   }
-  for (int ch = 0; ch < 3; ++ch) out.albedo_ratio[ch] = std::max(x[1 + ch], floor) / std::max(x[4 + ch], floor);
+  if (least > 0)
+    for (int ch = 0; ch < 3; ++ch) out.albedo_ratio[ch] = std::max(x[1 + ch], least) / std::max(x[4 + ch], least);
   return out;
 }
 
