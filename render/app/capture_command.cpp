@@ -118,7 +118,8 @@ CommandAction add_capture_command(CLI::App& app) {
       "blurred, too few swatch turns).");
   sub->add_option("dir", a->photos_dir,
                   "Folder of photos (JPEG or PNG), capture.json and, optionally, closeup.jpg (the swatch from straight above, "
-                  "its threads resolved; with the card's scale tag, id 5, in a corner it also gives the ends and picks per cm) to fit");
+                  "its threads resolved; with the card's scale tag, id 5, in a corner it also gives the ends and picks per cm and "
+                  "each thread's colour where the weave puts it) to fit");
   sub->add_option("--card", a->card_out, "Write the capture card to this PNG, for printing");
   sub->add_option("--dpi", a->dpi, "The card's print resolution")->capture_default_str();
   sub->add_option("--simulate", a->simulate, "Photograph this fabric (a preset name or a .json file) on a simulated card");
