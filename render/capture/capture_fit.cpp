@@ -206,17 +206,12 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
   FabricFitOptions fit_options;
   if (options.open_progress) fit_options.progress = options.open_progress("fit");
   result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options, closeup);
-  // The yarns' counts where the close-up's spectrum resolves them; the family's where it does not.
-  if (result.closeup && result.closeup->spectrum) {
-    if (!result.thread_counts) {
-      const WeaveLayout layout(result.fit.fabric);
-      result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
-    }
-    if (result.thread_counts->resolved()) {
-      WeaveSpec& weave = result.fit.fabric.weave;
-      weave.ends_per_cm = std::round(10.0 * result.thread_counts->ends_per_cm) / 10.0;
-      weave.picks_per_cm = std::round(10.0 * result.thread_counts->picks_per_cm) / 10.0;
-    }
+  // The yarns' counts (the refit's registration read them for the chosen family) where the
+  // close-up's spectrum resolves them; the family's where it does not.
+  if (result.thread_counts && result.thread_counts->resolved()) {
+    WeaveSpec& weave = result.fit.fabric.weave;
+    weave.ends_per_cm = std::round(10.0 * result.thread_counts->ends_per_cm) / 10.0;
+    weave.picks_per_cm = std::round(10.0 * result.thread_counts->picks_per_cm) / 10.0;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

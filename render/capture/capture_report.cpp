@@ -67,7 +67,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     if (const auto& t = result.thread_counts)
       j["thread_counts"] = {{"ends_per_cm", t->ends_per_cm},     {"picks_per_cm", t->picks_per_cm},
                             {"resolved", t->resolved()},         {"score", t->score},
-                            {"strong_lines", t->points}, {"fitted_lines", t->fitted_lines}, {"fitted_share", t->fitted_share},       {"warp_off_tag_deg", glm::degrees(t->angle)},
+                            {"strong_lines", t->points},         {"fitted_lines", t->fitted_lines},
+                            {"fitted_share", t->fitted_share},   {"warp_off_tag_deg", glm::degrees(t->angle)},
                             {"resolution_per_cm", t->resolution_per_cm}};
     if (const auto& g = result.registration)
       j["registration"] = {{"registered", g->registered}, {"why_not", g->why}, {"tile_bins", {g->tile_bins.x, g->tile_bins.y}},
@@ -85,12 +86,11 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
       j["one_lightness"] = f->one_lightness;
       if (!f->used) j["not_used"] = f->rejected;
       j["registered"] = f->registered;
-      if (f->registered) j["measured_warp_over_weft"] = rgb(f->measured_ratio);
       if (f->split >= 0) {
         j["split"] = f->split;
         j["warp_share"] = f->warp_share;
-        j["measured_warp_over_weft"] = rgb(f->measured_ratio);
       }
+      if (f->registered || f->split >= 0) j["measured_warp_over_weft"] = rgb(f->measured_ratio);
       j["fitted_warp_over_weft"] = rgb(f->fitted_ratio);
     }
   }

@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include "capture/card_samples.h"
-#include "core/cloth_bsdf.h"
+#include "capture/float_radiance.h"
 #include "core/weave_layout.h"
 
 namespace weft {
@@ -19,6 +19,7 @@ constexpr int kClipCode = 250;
 constexpr int kMaxBinsPerThread = 16;
 constexpr int kMinBinsPerThread = 4;
 constexpr int kArcBins = 128;    // along each float, as the close-up's simulator draws it
+constexpr int kTangentSamples = 32;  // the tangent quadrature of the model's Q, as the simulator's default
 constexpr int kSubsamples = 4;   // per side of a bin: a yarn's edge is a partial bin
 constexpr int kUnknowns = 10;    // k, B_warp (RGB), B_weft (RGB), g (RGB)
 
@@ -116,26 +117,14 @@ CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& re
     fill_empty(tile, fold[h], hits[h]);
   }
 
-  // The model's parts along each thread's float (per unit albedo for the volume), straight above
-  // under the lights, the swatch's warp at `turn`.
+  // The model's parts along each thread's float straight above: the surface's (no albedo), and the
+  // volume's per unit albedo (the radiance is linear in A).
   Fabric clear = fabric, white = fabric;
   for (int j = 0; j < 2; ++j) clear.threads[j].albedo = glm::dvec3(0), white.threads[j].albedo = glm::dvec3(1);
-  const ClothBsdf surface_bsdf(clear, 32), white_bsdf(white, 32);
-  const SurfaceFrame frame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}};
-  std::array<std::array<glm::dvec3, kArcBins>, 2> surface{}, volume{};
-  for (int j = 0; j < 2; ++j) {
-    ClothBsdf::Point p0 = surface_bsdf.at(frame), p1 = white_bsdf.at(frame);
-    for (int k = 0; k < kArcBins; ++k) {
-      const double tilt = weave_tilt(fabric, WeaveSample{j, (k + 0.5) / kArcBins, 0.0});
-      glm::dvec3 s(0), sv(0);
-      for (const FitLight& l : lights) {
-        s += l.power * p0.resolved_integrand(j, tilt, l.direction, {0, 0, 1});
-        sv += l.power * p1.resolved_integrand(j, tilt, l.direction, {0, 0, 1});
-      }
-      surface[j][k] = s;
-      volume[j][k] = sv - s;
-    }
-  }
+  const FloatRadiance surface = float_radiance(clear, lights, turn, kArcBins, kTangentSamples);
+  FloatRadiance volume = float_radiance(white, lights, turn, kArcBins, kTangentSamples);
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < kArcBins; ++k) volume[j][k] -= surface[j][k];
   // The prediction's columns at phase 0, per bin and channel: S, V_warp, V_weft, G.
   struct Parts {
     glm::dvec3 s{0.0}, v0{0.0}, v1{0.0};
@@ -154,7 +143,7 @@ CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& re
             q.gap += kWeight;
             continue;
           }
-          const int k = std::min(static_cast<int>(at.arc * kArcBins), kArcBins - 1);
+          const int k = arc_bin(at.arc, kArcBins);
           q.s += kWeight * surface[at.thread][k];
           q.share[at.thread] += kWeight;
           (at.thread == 0 ? q.v0 : q.v1) += kWeight * volume[at.thread][k];

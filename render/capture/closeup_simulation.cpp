@@ -7,7 +7,7 @@
 
 #include "capture/capture_card.h"
 #include "capture/card_samples.h"
-#include "core/cloth_bsdf.h"
+#include "capture/float_radiance.h"
 #include "core/weave_layout.h"
 
 namespace weft {
@@ -22,21 +22,8 @@ constexpr int kSupersample = 3;  // per side: the yarns' edges are partial pixel
 SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLight>& lights, const SimulatedCamera& camera,
                        const CloseupSimulationOptions& options) {
   const double t = options.turn;
-  const glm::dvec3 u(std::cos(t), std::sin(t), 0), v(-std::sin(t), std::cos(t), 0), n(0, 0, 1);
-  const glm::dvec3 wo(0, 0, 1);
-  // The radiance of each thread along its float: a float's samples lie uniformly in arc length.
-  const ClothBsdf bsdf(fabric, options.tangent_samples);
-  std::array<std::vector<glm::dvec3>, 2> along{std::vector<glm::dvec3>(kArcBins, glm::dvec3(0)),
-                                               std::vector<glm::dvec3>(kArcBins, glm::dvec3(0))};
-#pragma omp parallel for schedule(static)
-  for (int b = 0; b < 2 * kArcBins; ++b) {
-    const int j = b / kArcBins;
-    ClothBsdf::Point point = bsdf.at(SurfaceFrame{n, u, v});
-    const double tilt = weave_tilt(fabric, WeaveSample{j, ((b % kArcBins) + 0.5) / kArcBins, 0.0});
-    glm::dvec3 sum(0);
-    for (const FitLight& l : lights) sum += l.power * point.resolved_integrand(j, tilt, l.direction, wo);
-    along[j][b % kArcBins] = sum;
-  }
+  const glm::dvec3 u(std::cos(t), std::sin(t), 0), v(-std::sin(t), std::cos(t), 0);
+  const FloatRadiance along = float_radiance(fabric, lights, t, kArcBins, options.tangent_samples);
 
   std::mt19937_64 rng(options.seed * 104729 + 17);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -75,7 +62,7 @@ SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLig
         }
         const glm::dvec3 p(px * std::cos(roll) - py * std::sin(roll), px * std::sin(roll) + py * std::cos(roll), 0);
         const WeaveSample at = layout.at(glm::dot(p, u) / repeat_mm.x + phase.x, glm::dot(p, v) / repeat_mm.y + phase.y);
-        if (at.thread >= 0) sum += along[at.thread][std::min(static_cast<int>(at.arc * kArcBins), kArcBins - 1)];
+        if (at.thread >= 0) sum += along[at.thread][arc_bin(at.arc, kArcBins)];
       }
       linear[static_cast<size_t>(y) * w + x] = options.exposure_scale * sum / double(kSupersample * kSupersample);
     }

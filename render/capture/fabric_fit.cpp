@@ -149,6 +149,9 @@ double to_z(int i, double v) {
   return std::log(f / (1 - f));
 }
 
+// A/(A_r + A_g + A_b): the colour without its lightness.
+glm::dvec3 chromaticity(const glm::dvec3& a) { return a / std::max(a.r + a.g + a.b, 1e-6); }
+
 // The family's preset with the threads of z.
 Fabric fitted_fabric(const Fabric& preset, const Eigen::VectorXd& z) {
   Fabric f = preset;
@@ -278,7 +281,7 @@ struct Residuals {
     }
     if (one_colour) {
       const glm::dvec3 a = thread_values(z, 0).A, b = thread_values(z, 1).A;
-      const glm::dvec3 d = a / std::max(a.r + a.g + a.b, 1e-6) - b / std::max(b.r + b.g + b.b, 1e-6);
+      const glm::dvec3 d = chromaticity(a) - chromaticity(b);
       for (int c = 0; c < 3; ++c) f[k++] = d[c] / kOneColourSigma;
       if (one_lightness) {
         const double la = a.r + a.g + a.b, lb = b.r + b.g + b.b;
@@ -329,12 +332,12 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
   fit.one_colour = !closeup.splits.empty();
   for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
   if (registered) {
-    auto chromaticity = [](const glm::dvec3& a) { return a / std::max(a.r + a.g + a.b, 1e-12); };
     const glm::dvec3 d = glm::abs(chromaticity(registered->albedo[0]) - chromaticity(registered->albedo[1]));
     fit.one_colour = fit.one_colour && d.r + d.g + d.b < kRegisteredOneHue;
   }
-  fit.one_lightness = fit.one_colour && (!registered || registered->explained < kRegisteredClose) && std::none_of(closeup.splits.begin(), closeup.splits.end(),
-                                                     [](const CloseupSplit& s) { return s.separated(); });
+  const bool none_separates =
+      std::none_of(closeup.splits.begin(), closeup.splits.end(), [](const CloseupSplit& s) { return s.separated(); });
+  fit.one_lightness = fit.one_colour && none_separates && (!registered || registered->explained < kRegisteredClose);
   double best_share_error = 1;
   if (registered) measured = registered->mean;
   for (size_t k = 0; k < closeup.splits.size() && !fit.one_colour && !fit.registered; ++k) {

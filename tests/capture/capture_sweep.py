@@ -52,6 +52,15 @@ def random_fabric(presets, rng, k):
     return base
 
 
+def closeup_kind(c):
+    """What the fit took from the close-up: the registered threads' means, the clusters' ratio,
+    and the ties beside either."""
+    tie = "one colour" if c.get("one_lightness") else "one hue" if c.get("one_colour") else ""
+    if c.get("registered"):
+        return "registered" + (", " + tie if tie else "")
+    return tie or "ratio"
+
+
 def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     shots = work / f"{name}_shots"
     subprocess.run([weft, "capture", "--simulate", str(truth_file), "--map", photo_map, "--out", str(shots),
@@ -66,8 +75,7 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     cap = json.loads(fitted.read_text())["capture"]
     de = cap["appearance_check"]["thread_delta_e2000"]  # weft's CIEDE2000 of each thread's colour A
     c = cap.get("closeup")
-    kind = ("registered" + (", one colour" if c.get("one_lightness") else ", one hue" if c.get("one_colour") else "") if c.get("registered") else ("one colour" if c.get("one_lightness") else "one hue") if c.get("one_colour") else "ratio") if c else "—"
-    closeup = "—" if c is None else kind if c["used"] else "not used: " + c.get("not_used", "")
+    closeup = "—" if c is None else closeup_kind(c) if c["used"] else "not used: " + c.get("not_used", "")
     counts = c.get("thread_counts") if c else None
     check = cap["appearance_check"]
     if counts and counts["resolved"]:
