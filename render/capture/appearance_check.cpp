@@ -7,6 +7,7 @@
 
 #include "capture/capture_simulation.h"
 #include "capture/colour_difference.h"
+#include "capture/swatch_frame.h"
 #include "core/cloth_bsdf.h"
 
 namespace weft {
@@ -19,7 +20,7 @@ double appearance_relative_rmse(const Fabric& truth, const Fabric& fitted, const
   double diff2 = 0, truth2 = 0;
   for (int t = 0; t < options.turns; ++t) {
     const double turn = 2 * std::numbers::pi * t / options.turns;
-    const SurfaceFrame frame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}};
+    const SurfaceFrame frame = swatch_frame(turn);
     ClothBsdf::Point truth_point = truth_bsdf.at(frame), fitted_point = fitted_bsdf.at(frame);
     for (int e = 0; e < options.elevations; ++e) {
       // Seen from the card's bottom edge (−Y), as the photos are taken.

@@ -189,26 +189,27 @@ CaptureFitResult fit_capture(const std::filesystem::path& dir, const std::filesy
     result.closeup_file = file->filename().string();
     closeup_photo_read = load(*file);
     result.closeup = measure_closeup(*closeup_photo_read, result.photos.back().response.model, result.closeup_file);
-    closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn, {}};
+    closeup = CloseupObservation{result.closeup->splits, result.photos.back().turn, result.closeup->level, {}};
     // The chosen family's lattice from the spectrum, and the close-up registered to its weave.
     if (result.closeup->spectrum)
       closeup->registered = [&](const Fabric& fitted) -> std::optional<CloseupObservation::Registered> {
         const WeaveLayout layout(fitted);
         result.thread_counts = weave_counts(*result.closeup->spectrum, layout.rows(), layout.shift());
-        if (!result.thread_counts->resolved()) return std::nullopt;
+        if (!result.thread_counts->candidate()) return std::nullopt;
         result.registration = register_closeup(*closeup_photo_read, result.photos.back().response.model, *result.closeup->scale,
                                                *result.thread_counts, fitted, result.lighting.lights, result.photos.back().turn);
         if (!result.registration->registered) return std::nullopt;
-        return CloseupObservation::Registered{result.registration->thread_mean, result.registration->albedo,
-                                              result.registration->explained};
+        std::optional<std::array<glm::dvec3, 2>> albedo;
+        if (result.registration->albedo_read) albedo = result.registration->albedo;
+        return CloseupObservation::Registered{result.registration->thread_mean, albedo, result.registration->explained};
       };
   }
   FabricFitOptions fit_options;
   if (options.open_progress) fit_options.progress = options.open_progress("fit");
   result.fit = fit_fabric(result.observations, result.lighting.lights, presets, fit_options, closeup);
   // The yarns' counts (the refit's registration read them for the chosen family) where the
-  // close-up's spectrum resolves them; the family's where it does not.
-  if (result.thread_counts && result.thread_counts->resolved()) {
+  // close-up's spectrum resolves them or the close-up registers to them; the family's otherwise.
+  if (result.counts_resolved()) {
     WeaveSpec& weave = result.fit.fabric.weave;
     weave.ends_per_cm = std::round(10.0 * result.thread_counts->ends_per_cm) / 10.0;
     weave.picks_per_cm = std::round(10.0 * result.thread_counts->picks_per_cm) / 10.0;

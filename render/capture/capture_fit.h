@@ -57,9 +57,14 @@ struct CaptureFitResult {
   // The ends and picks the close-up's spectrum gives for the fitted family's weave, when it holds
   // the scale tag; the fabric takes them when they are resolved.
   std::optional<ThreadCounts> thread_counts;
-  std::optional<CloseupRegistration> registration;  // where the counts are resolved
+  std::optional<CloseupRegistration> registration;  // where the counts are a candidate lattice
   FabricFit fit;
   double seconds = 0;
+  // Whether the fabric took the counts: the spectrum resolved them, or a candidate lattice the
+  // close-up registered to.
+  bool counts_resolved() const {
+    return thread_counts && (thread_counts->resolved() || (thread_counts->candidate() && registration && registration->registered));
+  }
 };
 
 // Fits the capture in `dir` with the presets of `presets_dir` as weave families.

@@ -66,7 +66,7 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
     if (c.scale) j["scale_tag_px_per_mm"] = c.scale->px_per_mm;
     if (const auto& t = result.thread_counts)
       j["thread_counts"] = {{"ends_per_cm", t->ends_per_cm},     {"picks_per_cm", t->picks_per_cm},
-                            {"resolved", t->resolved()},         {"score", t->score},
+                            {"resolved", result.counts_resolved()},         {"score", t->score},
                             {"strong_lines", t->points},         {"fitted_lines", t->fitted_lines},
                             {"fitted_share", t->fitted_share},   {"warp_off_tag_deg", glm::degrees(t->angle)},
                             {"resolution_per_cm", t->resolution_per_cm}};
@@ -75,7 +75,7 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
                            {"pixels", g->pixels}, {"phase", {g->phase.x, g->phase.y}}, {"mirrored", g->mirrored},
                            {"explained", g->explained}, {"explained_median_phase", g->explained_median},
                            {"exposure", g->exposure}, {"warp_albedo", rgb(g->albedo[0])}, {"weft_albedo", rgb(g->albedo[1])},
-                           {"warp_over_weft_albedo", rgb(g->albedo_ratio)},
+                           {"warp_over_weft_albedo", rgb(g->albedo_ratio)}, {"albedo_read", g->albedo_read},
                            {"warp_mean", rgb(g->thread_mean[0])}, {"weft_mean", rgb(g->thread_mean[1])},
                            {"inner_bins", {g->inner_bins[0], g->inner_bins[1]}}};
     for (const CloseupSplit& s : c.splits)
@@ -92,6 +92,8 @@ void write_fitted_fabric(const CaptureFitResult& result, const std::filesystem::
       }
       if (f->registered || f->split >= 0) j["measured_warp_over_weft"] = rgb(f->measured_ratio);
       j["fitted_warp_over_weft"] = rgb(f->fitted_ratio);
+      if (f->measured_level) j["measured_level"] = rgb(*f->measured_level);
+      if (f->fitted_level) j["fitted_level"] = rgb(*f->fitted_level);
     }
   }
   if (check)
@@ -162,6 +164,12 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
                     f.one_lightness ? "colours" : "chromaticities");
       what += (what.empty() ? "" : "; ") + std::string(line);
     }
+    if (f.measured_level && f.fitted_level) {
+      std::snprintf(line, sizeof line, "the swatch straight above (%.3f %.3f %.3f) over the tag's paper, (%.3f %.3f %.3f) fitted",
+                    f.measured_level->r, f.measured_level->g, f.measured_level->b, f.fitted_level->r, f.fitted_level->g,
+                    f.fitted_level->b);
+      what += (what.empty() ? "" : "; ") + std::string(line);
+    }
     out += "close-up " + r.closeup_file + ": " + (what.empty() ? "nothing taken" : what) +
            (f.used ? "" : "; not used: " + f.rejected) + "\n";
   }
@@ -174,7 +182,9 @@ std::string fit_summary(const CaptureFitResult& r, const std::optional<Appearanc
       source = "the family's (no scale tag in the close-up)";
     else if (!r.thread_counts)
       source = "the family's (the close-up leaves no room beside its scale tag)";
-    else if (!r.thread_counts->resolved())
+    else if (r.counts_resolved() && !r.thread_counts->resolved())
+      source = "from the close-up's spectrum, its lattice confirmed by the close-up's registration to it";
+    else if (!r.counts_resolved())
     {
       char why[160];
       std::snprintf(why, sizeof why, "the family's (the weave's lattice not resolved in the close-up: %.0f %% of its lines on it, %d fitted)",

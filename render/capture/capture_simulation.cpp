@@ -17,6 +17,7 @@
 #include "capture/photo_files.h"
 #include "capture/response_calibration.h"
 #include "capture/simulated_camera.h"
+#include "capture/swatch_frame.h"
 #include "core/cloth_bsdf.h"
 #include "probe/mock_probe_source.h"
 #include "reference/environment_samples.h"
@@ -115,12 +116,12 @@ void simulate_capture(const Fabric& fabric, const EnvMap& map, const CaptureSimu
     const glm::dvec3 target = card_centre + glm::dvec3(0.005 * jitter(rng), 0.005 * jitter(rng), 0);
     const glm::dvec3 centre = target + dist * glm::dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
     const CardCamera cam = CardCamera::look_at(w, h, f, centre, target, glm::radians(2.0 * jitter(rng)));
-    const glm::dvec3 u(std::cos(turn), std::sin(turn), 0), v(-std::sin(turn), std::cos(turn), 0), n(0, 0, 1);
+    const SurfaceFrame frame = swatch_frame(turn);
+    const glm::dvec3 u = frame.u, v = frame.v;
     const glm::dvec3 marker = window_centre - v * (card.marker_offset / 1000.0);
 
     // The swatch's radiance on a grid of view points (it changes slowly across the swatch).
     std::vector<glm::dvec3> cloth(kClothGrid * kClothGrid);
-    const SurfaceFrame frame{n, u, v};
 #pragma omp parallel for schedule(dynamic)
     for (int g = 0; g < kClothGrid * kClothGrid; ++g) {
       const glm::dvec3 p = window_centre + glm::dvec3((g % kClothGrid) / (kClothGrid - 1.0) * 0.1 - 0.05,

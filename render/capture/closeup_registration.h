@@ -42,6 +42,10 @@ struct CloseupRegistration {
   double explained = 0, explained_median = 0;
   double exposure = 0;            // k, close-up units per unit of the lights' radiance
   std::array<glm::dvec3, 2> albedo{glm::dvec3(0), glm::dvec3(0)};  // B_j / k
+  // Whether k and every B_j came out positive. Broad lobes leave S and V_j alike straight above,
+  // and the solve then trades one for the other: the phase and each thread's mean still hold, the
+  // albedos do not.
+  bool albedo_read = false;
   glm::dvec3 albedo_ratio{1.0};   // warp ÷ weft
   // Each thread's mean value (the close-up's relative units) over the tile's bins that it fills
   // alone, and how many.
@@ -53,7 +57,7 @@ struct CloseupRegistration {
 
 // Registers the close-up `photo` (read through `response`) to the weave of `fabric` (its
 // family's layout, its threads' lobes as the photos fitted them) under `lights`, the swatch's warp
-// at `turn` in the world as in the last photo. `counts` must be resolved.
+// at `turn` in the world as in the last photo. `counts` must be at least a candidate lattice.
 CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& response, const CloseupScale& scale,
                                      const ThreadCounts& counts, const Fabric& fabric, const std::vector<FitLight>& lights,
                                      double turn);

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "capture/capture_card.h"
 #include "capture/capture_rejection.h"
 #include "capture/card_samples.h"
 #include "image/tone_map.h"
@@ -19,6 +20,11 @@ constexpr double kLightnessWeight = 0.5;  // log lightness against log chromatic
 constexpr int kClipCode = 250;
 constexpr int kMinPixels = 2000;
 constexpr double kMinShare = 0.02;  // of the inner pixels: a smaller cluster is stray pixels
+// The tag's white border lies between 0.5 and 0.625 of the black square's side from its centre
+// (Chebyshev); a margin each side for the lens's blur and the corners' detection.
+constexpr double kBorderIn = 0.53, kBorderOut = 0.6;
+// The share of the swatch's pixels that may clip before its mean is no longer its level.
+constexpr double kLevelClipped = 0.002;
 
 struct TwoMeans {
   std::vector<int> label;
@@ -74,6 +80,43 @@ double valley_between(const std::vector<Eigen::Vector3d>& x, const TwoMeans& m) 
   const auto peak0 = std::max_element(s.begin(), mid), peak1 = std::max_element(mid, s.end());
   const double low = *std::min_element(peak0, peak1 + 1);
   return std::min(*peak0, *peak1) > 0 ? low / std::min(*peak0, *peak1) : 1;
+}
+
+// The close-up's swatch level over its tag's white border (CloseupClusters::level): the border's
+// median (the lens blurs its edges into the ink and the cloth), the swatch's mean over the whole
+// frame off the tag, gaps and highlights included, as the photos' cells average them.
+template <class Read>
+std::optional<glm::dvec3> swatch_level(const Photo& photo, const CloseupScale& scale, const Read& read) {
+  const CaptureCard& card = capture_card();
+  const double side = card.closeup_tag.size * scale.px_per_mm;  // the black square's, pixels
+  const glm::dvec2 across(-scale.warp.y, scale.warp.x);
+  std::array<std::vector<double>, 3> border;
+  glm::dvec3 sum(0);
+  long swatch = 0, clipped = 0;
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      const glm::dvec2 p(x + 0.5, y + 0.5), d = p - scale.centre;
+      const double r = std::max(std::abs(glm::dot(d, scale.warp)), std::abs(glm::dot(d, across))) / side;
+      const std::optional<glm::dvec3> v = read(x, y);
+      if (r >= kBorderIn && r <= kBorderOut) {
+        if (!v) return std::nullopt;
+        for (int c = 0; c < 3; ++c) border[c].push_back((*v)[c]);
+      } else if (!scale.covers(p)) {
+        ++swatch;
+        if (v)
+          sum += *v;
+        else
+          ++clipped;
+      }
+    }
+  if (border[0].size() < 100 || swatch == 0 || static_cast<double>(clipped) / swatch > kLevelClipped) return std::nullopt;
+  glm::dvec3 paper;
+  for (int c = 0; c < 3; ++c) {
+    std::nth_element(border[c].begin(), border[c].begin() + border[c].size() / 2, border[c].end());
+    paper[c] = border[c][border[c].size() / 2];
+  }
+  if (glm::any(glm::lessThanEqual(paper, glm::dvec3(0)))) return std::nullopt;
+  return sum / static_cast<double>(swatch) / paper * card.paper_reflectance;
 }
 
 }  // namespace
@@ -138,6 +181,8 @@ CloseupClusters measure_closeup(const Photo& photo, const ResponseModel& respons
       }
     out.spectrum = closeup_spectrum(log_lum, use, photo.width, photo.height, *out.scale);
   }
+
+  if (out.scale) out.level = swatch_level(photo, *out.scale, read);
 
   // The thread pixels.
   std::vector<size_t> index;

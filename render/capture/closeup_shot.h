@@ -46,6 +46,11 @@ struct CloseupClusters {
   // millimetres give, from which the weave's family gives the ends and picks (thread_counts.h).
   std::optional<CloseupScale> scale;
   std::optional<CloseupSpectrum> spectrum;
+  // The swatch's mean radiance straight above in the photos' units (a white diffuser reads 1):
+  // the frame's mean off the tag over the tag's white border, times the paper's reflectance. The
+  // photos see the swatch from the side; this sees it from above, at the close-up's own exposure.
+  // Nothing without the tag, or where the border or the swatch clip.
+  std::optional<glm::dvec3> level;
   // Whether any split separates: if none does, the close-up shows one colour.
   bool separated() const {
     for (const CloseupSplit& s : splits)

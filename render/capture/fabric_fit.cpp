@@ -11,6 +11,7 @@
 #include <unsupported/Eigen/NumericalDiff>
 
 #include "capture/fit_uncertainty.h"
+#include "capture/swatch_frame.h"
 #include "core/cloth_bsdf.h"
 #include "core/fresnel.h"
 
@@ -48,7 +49,7 @@ Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& 
 #pragma omp parallel for schedule(dynamic)
   for (int o = 0; o < g.observations; ++o) {
     const double t = obs[o].turn;
-    const SurfaceFrame frame{{0, 0, 1}, {std::cos(t), std::sin(t), 0}, {-std::sin(t), std::cos(t), 0}};
+    const SurfaceFrame frame = swatch_frame(t);
     const glm::dvec3 wo = obs[o].wo;
     std::array<std::vector<ThreadFrame>, 2> frames;
     for (int j = 0; j < 2; ++j)
@@ -179,6 +180,9 @@ constexpr double kCloseupSigma = 0.05;
 // ... when the threads' means come from the close-up registered to the weave: thousands of pixels
 // each, the threads told apart by where they lie; what is left is the lighting.
 constexpr double kRegisteredSigma = 0.02;
+// 1σ of the close-up's swatch level, relative, per channel (floored at a quarter of its mean): the
+// tag's paper against the card's, the ball's light from straight above against the room's.
+constexpr double kCloseupLevelSigma = 0.03;
 // The registered albedos' chromaticities (L1) within which they agree with clusters that show one
 // hue: same-dye threads read 0.01–0.15 apart (velvet's near-black pile the most), an orange and a
 // blue 0.5.
@@ -206,6 +210,7 @@ struct Residuals {
   // The close-up's cluster means, the warp's first, and the threads' coverages a_j.
   std::optional<std::array<glm::dvec3, 2>> closeup;
   double closeup_sigma = kCloseupSigma;
+  std::optional<glm::dvec3> level;  // the close-up's swatch level straight above
   bool one_colour = false;     // the threads' chromaticities tied instead
   bool one_lightness = false;  // ... and their lightness
   std::array<double, 2> coverage{1, 1};
@@ -221,7 +226,9 @@ struct Residuals {
 
   int inputs() const { return kParams; }
   int cells() const { return static_cast<int>(obs->size()); }
-  int values() const { return 3 * cells() + 6 + (closeup ? 3 : 0) + (one_colour ? 3 : 0) + (one_lightness ? 1 : 0); }
+  int values() const {
+    return 3 * cells() + 6 + (closeup ? 3 : 0) + (level ? 3 : 0) + (one_colour ? 3 : 0) + (one_lightness ? 1 : 0);
+  }
 
   const std::vector<glm::dvec3>& lobe(int j, bool volume, double gamma) const {
     Cache& c = cache[2 * j + volume];
@@ -252,6 +259,12 @@ struct Residuals {
     return glm::max(warp, glm::dvec3(1e-12)) / glm::max(weft, glm::dvec3(1e-12));
   }
 
+  // The swatch's mean radiance straight above.
+  glm::dvec3 closeup_level(const Eigen::VectorXd& z) const {
+    const int o = g->observations - 1;
+    return glm::max(thread_at(thread_values(z, 0), 0, o) + thread_at(thread_values(z, 1), 1, o), glm::dvec3(1e-12));
+  }
+
   // How far a warp ÷ weft ratio misses the measured one, per channel (log).
   static glm::dvec3 closeup_miss(const glm::dvec3& fitted, const std::array<glm::dvec3, 2>& measured) {
     return glm::log(fitted) - glm::log(measured[0] / measured[1]);
@@ -277,6 +290,12 @@ struct Residuals {
     int k = 3 * cells() + 6;
     if (closeup) {
       const glm::dvec3 d = closeup_miss(closeup_ratio(z), *closeup) / closeup_sigma;
+      for (int c = 0; c < 3; ++c) f[k++] = d[c];
+    }
+    if (level) {
+      // Floored as the photos' cells are: a near-black channel reads JPEG and noise, not the cloth.
+      const double floor = 0.25 * (level->r + level->g + level->b) / 3;
+      const glm::dvec3 d = (closeup_level(z) - *level) / (kCloseupLevelSigma * glm::max(*level, glm::dvec3(floor)));
       for (int c = 0; c < 3; ++c) f[k++] = d[c];
     }
     if (one_colour) {
@@ -332,7 +351,10 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
   fit.one_colour = !closeup.splits.empty();
   for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
   if (registered) {
-    const glm::dvec3 d = glm::abs(chromaticity(registered->albedo[0]) - chromaticity(registered->albedo[1]));
+    // The albedos where it read them; else the means (the surface's white in them draws two hues
+    // together, so this ties no more than the albedos would).
+    const auto& hue = registered->albedo ? *registered->albedo : registered->mean;
+    const glm::dvec3 d = glm::abs(chromaticity(hue[0]) - chromaticity(hue[1]));
     fit.one_colour = fit.one_colour && d.r + d.g + d.b < kRegisteredOneHue;
   }
   const bool none_separates =
@@ -375,6 +397,10 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
     r.closeup = measured;
     r.closeup_sigma = fit.registered ? kRegisteredSigma : kCloseupSigma;
   }
+  if (closeup.level && glm::all(glm::greaterThan(*closeup.level, glm::dvec3(0)))) {
+    r.level = closeup.level;
+    fit.measured_level = closeup.level;
+  }
   const double cost_without = r.cells_cost(run.z);
   // Whether a refit holds the close-up: what it misses of the measured ratio (log, worst
   // channel) and the photos' cost it costs.
@@ -400,12 +426,12 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
   Run with = run;
   minimize(r, with);
   std::string why = verdict(with);
-  if (registered && !why.empty()) {
+  if (registered && registered->albedo && !why.empty()) {
     // Again from the threads' albedos the registration read under the photos' lobes: the photos'
     // optimum can lie in a valley the close-up's ratio does not lead out of.
     Run again = run;
     for (int j = 0; j < 2; ++j)
-      for (int c = 0; c < 3; ++c) again.z[6 * j + c] = to_z(c, registered->albedo[j][c]);
+      for (int c = 0; c < 3; ++c) again.z[6 * j + c] = to_z(c, (*registered->albedo)[j][c]);
     minimize(r, again);
     if (const std::string again_why = verdict(again); again_why.empty() || again.cost < with.cost) {
       with = std::move(again);
@@ -413,12 +439,14 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
     }
   }
   fit.fitted_ratio = r.closeup_ratio(with.z);
+  if (r.level) fit.fitted_level = r.closeup_level(with.z);
   fit.used = why.empty();
   fit.rejected = why;
   if (fit.used) {
     run = with;
   } else {
     r.closeup.reset();
+    r.level.reset();
     r.one_colour = r.one_lightness = false;
     fit.fitted_ratio = ratio;
   }
@@ -548,7 +576,7 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
 glm::dvec3 swatch_radiance(const Fabric& fabric, double turn, const glm::dvec3& wo, const std::vector<FitLight>& lights,
                            int tangent_samples) {
   const ClothBsdf bsdf(fabric, tangent_samples);
-  ClothBsdf::Point point = bsdf.at(SurfaceFrame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}});
+  ClothBsdf::Point point = bsdf.at(swatch_frame(turn));
   glm::dvec3 sum(0);
   for (const FitLight& l : lights) sum += l.power * point.integrand(l.direction, wo);
   return sum;

@@ -43,12 +43,18 @@ struct FitLight {
 struct CloseupObservation {
   std::vector<CloseupSplit> splits;
   double turn = 0;
+  // The swatch's mean straight above in the photos' units (CloseupClusters::level), where the
+  // close-up's tag gives it: a view the turned photos do not have, which tells a thread's
+  // albedo from the shape of its volume lobe better than their one elevation does.
+  std::optional<glm::dvec3> level;
   // The close-up registered to the chosen family's weave (capture/closeup_registration.h), given
   // that family's fit to the photos, or nothing where it does not register. Taken before the
   // splits: it tells the threads apart by where they lie, not by their colours.
   struct Registered {
     std::array<glm::dvec3, 2> mean;    // each thread's mean value where the weave puts it (warp, weft)
-    std::array<glm::dvec3, 2> albedo;  // each thread's albedo under the fitted lobes: a start for the refit
+    // Each thread's albedo under the fitted lobes, where the registration could read it: a start
+    // for the refit.
+    std::optional<std::array<glm::dvec3, 2>> albedo;
     double explained = 0;              // the share of the folded tile the weave's model explains
   };
   std::function<std::optional<Registered>(const Fabric& fitted)> registered;
@@ -70,6 +76,7 @@ struct CloseupFit {
   double warp_share = 0;           // that cluster's share, against the family's a_1 / (a_1 + a_2)
   glm::dvec3 measured_ratio{1.0};  // warp ÷ weft mean radiance per channel, from the close-up
   glm::dvec3 fitted_ratio{1.0};    // the same of the fitted fabric
+  std::optional<glm::dvec3> measured_level, fitted_level;  // the swatch's mean straight above
 };
 
 struct ThreadUncertainty {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "capture/swatch_frame.h"
 #include "core/cloth_bsdf.h"
 #include "core/weave_layout.h"
 
@@ -9,7 +10,7 @@ namespace weft {
 
 FloatRadiance float_radiance(const Fabric& fabric, const std::vector<FitLight>& lights, double turn, int arc_bins,
                              int tangent_samples) {
-  const SurfaceFrame frame{{0, 0, 1}, {std::cos(turn), std::sin(turn), 0}, {-std::sin(turn), std::cos(turn), 0}};
+  const SurfaceFrame frame = swatch_frame(turn);
   const glm::dvec3 wo(0, 0, 1);
   const ClothBsdf bsdf(fabric, tangent_samples);
   FloatRadiance out{std::vector<glm::dvec3>(arc_bins, glm::dvec3(0)), std::vector<glm::dvec3>(arc_bins, glm::dvec3(0))};

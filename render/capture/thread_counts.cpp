@@ -61,6 +61,8 @@ std::mutex& planner_mutex() {
 
 }  // namespace
 
+glm::dvec2 ThreadCounts::warp(glm::dvec2 tag_warp) const { return rotated(tag_warp, angle); }
+
 double CloseupSpectrum::log_power_at(int kx, int ky) const {
   if (kx < 0) kx = -kx, ky = -ky;
   const int half = n / 2 + 1;

@@ -37,6 +37,8 @@ std::optional<CloseupSpectrum> closeup_spectrum(const std::vector<double>& signa
 struct ThreadCounts {
   double ends_per_cm = 0, picks_per_cm = 0;
   double angle = 0;        // the lattice's warp off the tag's +x, radians
+  // The lattice's warp in the image: the tag's +x `tag_warp` turned by `angle`.
+  glm::dvec2 warp(glm::dvec2 tag_warp) const;
   // The share of the strong lines' weight near the lattice (to 1.5 lines), less the share a lattice
   // of its density would have near it by chance.
   double score = 0;
@@ -48,7 +50,12 @@ struct ThreadCounts {
   // a line of the one fitted to them: a wrong lattice that a coarse step let explain the lines
   // leaves a third of them off once fitted.
   bool resolved() const { return fitted_lines >= 3 && score >= kResolvedScore && fitted_share >= kResolvedFit; }
+  // Short of that, still worth registering the close-up to: the registration then confirms the
+  // lattice or not (a plain weave of two unequal counts leaves a third of its strong lines on
+  // harmonics the coarse search does not fit).
+  bool candidate() const { return fitted_lines >= 3 && score >= kCandidateScore && fitted_share >= kCandidateFit; }
   static constexpr double kResolvedScore = 0.8, kResolvedFit = 0.8;
+  static constexpr double kCandidateScore = 0.6, kCandidateFit = 0.6;
 };
 
 // The counts (each 3–200 per cm, at least 5 repeats of the disc and 4 pixels a yarn, ends and picks

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "capture/capture_card.h"
@@ -131,6 +132,37 @@ TEST(CloseupShot, SimulatedResolvedWeaveAveragesToTheFabricLevel) {
   for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(std::log(ratio[ch]), std::log(shot.warp_over_weft[ch]), 0.03) << "channel " << ch;
   // The warp covers 86 % of the weave; the weft's floats are the rest.
   EXPECT_NEAR(c.share[warp], fabric.threads[0].coverage / (fabric.threads[0].coverage + fabric.threads[1].coverage), 0.08);
+}
+
+// The swatch's level straight above, read over the scale tag's white border (its exposure and
+// white balance the close-up's own, not the photos'): against the model's mean radiance of the
+// swatch straight above (core's swatch_radiance, the photos' own simulation) over a white
+// diffuser's under the same lamps, with the camera's noise, its JPEG and a 1.7× exposure.
+TEST(CloseupShot, LevelOverTheTagsPaperIsTheSwatchStraightAbove) {
+  const std::vector<weft::FitLight> lights{{glm::normalize(glm::dvec3(0.3, 0.2, 1.0)), glm::dvec3(1.5, 1.4, 1.2)},
+                                           {glm::normalize(glm::dvec3(-0.6, 0.1, 0.7)), glm::dvec3(0.8, 0.9, 1.0)},
+                                           {glm::normalize(glm::dvec3(0.1, -0.8, 0.4)), glm::dvec3(0.5, 0.5, 0.6)}};
+  glm::dvec3 white(0);
+  for (const weft::FitLight& l : lights) white += l.power * std::max(l.direction.z, 0.0) / std::numbers::pi;
+  const weft::SimulatedCamera camera;
+  weft::ResponseModel response = camera.response;
+  response.scale = glm::dvec3(1.7);  // any photo's scale: the paper's cancels it
+  int k = 0;
+  for (const char* name : {"silk_shot", "linen_plain", "polyester_satin_charmeuse_back"}) {
+    const weft::Fabric fabric = weft::load_fabric_preset(name, WEFT_SOURCE_ASSETS "/fabrics");
+    weft::CloseupSimulationOptions options;
+    options.turn = 0.4 + 0.9 * k;
+    options.seed = 11 + k++;
+    const weft::CloseupClusters c = weft::measure_closeup(weft::simulate_closeup(fabric, lights, camera, options).photo, response, name);
+    ASSERT_TRUE(c.level.has_value()) << name;
+    const glm::dvec3 expected = weft::swatch_radiance(fabric, options.turn, glm::dvec3(0, 0, 1), lights, 32) / white;
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(std::log((*c.level)[ch]), std::log(expected[ch]), 0.03) << name << " channel " << ch;
+  }
+  // No tag, no level.
+  weft::CloseupSimulationOptions bare;
+  bare.scale_tag = false;
+  const weft::Fabric linen = weft::load_fabric_preset("linen_plain", WEFT_SOURCE_ASSETS "/fabrics");
+  EXPECT_FALSE(weft::measure_closeup(weft::simulate_closeup(linen, lights, camera, bare).photo, response, "bare").level);
 }
 
 // Ends and picks per cm (capture/thread_counts.h) from simulated close-ups of the opaque presets'
