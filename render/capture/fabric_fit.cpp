@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -174,6 +175,9 @@ constexpr double kSecondStartWithin = 4.0;        // × the lowest cost after th
 // 1σ of a level error common to every cell, per channel (the response's scale, the ball's
 // calibration): taken as the 2 % a cell's residual unit allows.
 constexpr double kLevelSigma = 0.02;
+// 1σ of the lighting's shape as the ball gives it: each light's power off by this fraction of its
+// height above the lights' mean (and of its direction's x and y), common to every photo.
+constexpr double kShapeSigma = 0.1;
 // 1σ of the close-up's log ratio of the threads' means, per channel: the ball's lighting against
 // the room's (the ratio depends on it through each thread's highlight), the k-means' split, JPEG.
 constexpr double kCloseupSigma = 0.05;
@@ -242,6 +246,31 @@ struct Residuals {
   // Thread j's share of the swatch's radiance at observation o of g.
   glm::dvec3 thread_at(const ThreadValues& t, int j, int o) const {
     return lobe(j, false, t.gamma_s)[o] + t.A * ((1 - t.kd) * lobe(j, true, t.gamma_v)[o] + t.kd * g->flat[j][o]);
+  }
+
+  // The photos' cells at z with each light's power times weight[l]: the model is linear in the
+  // lights, so this is how a change in the lighting's shape moves them.
+  std::vector<glm::dvec3> cells_with_weights(const Eigen::VectorXd& z, const std::vector<double>& weight) const {
+    std::vector<glm::dvec3> out(cells(), glm::dvec3(0));
+    for (int j = 0; j < 2; ++j) {
+      const ThreadValues t = thread_values(z, j);
+      const double cs = -0.5 / (t.gamma_s * t.gamma_s), cv = -0.5 / (t.gamma_v * t.gamma_v);
+      const double ns = 1.0 / (t.gamma_s * std::sqrt(2.0 * std::numbers::pi)), nv = 1.0 / (t.gamma_v * std::sqrt(2.0 * std::numbers::pi));
+      const int n = g->samples[j];
+      for (int o = 0; o < cells(); ++o)
+        for (int l = 0; l < g->lights; ++l) {
+          const Term* term = &g->terms[j][(static_cast<size_t>(o) * g->lights + l) * n];
+          double surface = 0, volume = 0, flat = 0;
+          for (int k = 0; k < n; ++k) {
+            const double h2 = term[k].theta_h * term[k].theta_h;
+            surface += term[k].surface * std::exp(cs * h2);
+            volume += term[k].volume * std::exp(cv * h2);
+            flat += term[k].volume;
+          }
+          out[o] += weight[l] * (*lights)[l].power * (surface * ns + t.A * ((1 - t.kd) * volume * nv + t.kd * flat));
+        }
+    }
+    return out;
   }
 
   std::vector<glm::dvec3> model(const Eigen::VectorXd& z) const {
@@ -559,7 +588,27 @@ FabricFit fit_fabric(const std::vector<SwatchObservation>& observations, const s
       level[c] = Eigen::VectorXd::Zero(r.values());
       for (int o = 0; o < r.cells(); ++o) level[c][3 * o + c] = -observations[o].value[c] / r.scale[o][c];
     }
-    const Eigen::MatrixXd cov = fit_covariance(J, f2, level, kLevelSigma);
+    // The lighting's shape, which the residuals cannot show either: the ball's reading of how
+    // much light comes from high against low, and from either side (fit_uncertainty.h).
+    std::array<Eigen::VectorXd, 3> shape;
+    {
+      double power = 0, height = 0;
+      for (const FitLight& l : lights) {
+        const double p = l.power.r + l.power.g + l.power.b;
+        power += p;
+        height += p * l.direction.z;
+      }
+      height /= std::max(power, 1e-12);
+      for (int a = 0; a < 3; ++a) {
+        std::vector<double> weight(lights.size());
+        for (size_t l = 0; l < lights.size(); ++l) weight[l] = a == 0 ? lights[l].direction.z - height : lights[l].direction[a - 1];
+        const std::vector<glm::dvec3> moved = r.cells_with_weights(z, weight);
+        shape[a] = Eigen::VectorXd::Zero(r.values());
+        for (int o = 0; o < r.cells(); ++o)
+          for (int c = 0; c < 3; ++c) shape[a][3 * o + c] = moved[o][c] / r.scale[o][c];
+      }
+    }
+    const Eigen::MatrixXd cov = fit_covariance(J, f2, {{{level, kLevelSigma}, {shape, kShapeSigma}}});
     for (int j = 0; j < 2; ++j) {
       double sd[6];
       for (int i = 0; i < 6; ++i) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """weft capture on captures nobody tuned for: every opaque preset and random fabrics within the
 presets' ranges, each simulated under one map and checked under another. Per case: the weave
-family found, each thread's colour A (albedo × albedo_scale) against the truth in ΔE2000 and the
+family found, each thread's colour A (albedo × albedo_scale) against the truth in ΔE2000 and in
+its own reported 1σ (the worst channel), the
 fitted fabric's relative RMSE against the truth under the other map (both as weft records them in
 the fitted file's appearance_check), the fit's wall time.
 
@@ -72,7 +73,15 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     seconds = time.monotonic() - t0
     if r.returncode != 0:
         return {"name": name, "maps": f"{photo_map} → {check_map}", "error": r.stderr.strip().splitlines()[-1:]}
-    cap = json.loads(fitted.read_text())["capture"]
+    fitted_file = json.loads(fitted.read_text())
+    cap = fitted_file["capture"]
+    truth = json.loads(Path(truth_file).read_text())
+    # How far each thread's colour A lies from the truth in its own reported 1σ (worst channel).
+    sigmas = []
+    for t, tt, sg in zip(fitted_file["threads"], truth["threads"], cap["sigma"]):
+        a = [v * t["albedo_scale"] for v in t["albedo"]]
+        at = [v * tt["albedo_scale"] for v in tt["albedo"]]
+        sigmas.append(max(abs(x - y) / max(s, 1e-9) for x, y, s in zip(a, at, sg["albedo"])))
     de = cap["appearance_check"]["thread_delta_e2000"]  # weft's CIEDE2000 of each thread's colour A
     c = cap.get("closeup")
     closeup = "—" if c is None else closeup_kind(c) if c["used"] else "not used: " + c.get("not_used", "")
@@ -83,7 +92,7 @@ def run_case(weft, name, truth_file, family, photo_map, check_map, work, seed):
     else:
         count_text = "family's" + (" (not resolved)" if counts else "")
     return {"name": name, "maps": f"{photo_map} → {check_map}", "family": cap["weave_family"], "family_right": cap["weave_family"] == family,
-            "delta_e": de, "rmse": check["relative_rmse"], "seconds": seconds, "closeup": closeup,
+            "delta_e": de, "sigmas": sigmas, "rmse": check["relative_rmse"], "seconds": seconds, "closeup": closeup,
             "counts_resolved": bool(counts and counts["resolved"]), "ends_ratio": check["ends_ratio"],
             "picks_ratio": check["picks_ratio"], "counts": count_text}
 
@@ -115,19 +124,22 @@ def main():
             row = run_case(a.weft, name, path, family, photo_map, check_map, work, seed=100 + i)
             print("   ", json.dumps(row), file=sys.stderr, flush=True)
             rows.append(row)
-    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | relative RMSE | fit s | close-up | ends, picks ÷ truth |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| fabric | photos → check | family | ΔE2000 warp, weft | A off, in its 1σ | relative RMSE | fit s | close-up | ends, picks ÷ truth |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "error" in r:
-            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | | | |")
+            lines.append(f"| {r['name']} | {r['maps']} | refused: {' '.join(r['error'])} | | | | | | |")
         else:
             fam = r["family"] if r["family_right"] else f"**{r['family']} (wrong)**"
             lines.append(f"| {r['name']} | {r['maps']} | {fam} | {r['delta_e'][0]:.1f}, {r['delta_e'][1]:.1f} | "
-                         f"{100 * r['rmse']:.1f} % | {r['seconds']:.0f} | {r['closeup']} | {r['counts']} |")
+                         f"{r['sigmas'][0]:.1f}σ, {r['sigmas'][1]:.1f}σ | {100 * r['rmse']:.1f} % | {r['seconds']:.0f} | {r['closeup']} | {r['counts']} |")
     ok = [r for r in rows if "error" not in r]
     met = sum(r["family_right"] and max(r["delta_e"]) <= 3 and r["rmse"] <= 0.05 for r in ok)
     lines.append("")
     lines.append(f"{met} of {len(rows)} within the issue's figures (family right, ΔE ≤ 3 for both threads, RMSE ≤ 5 %).")
+    within = [x for r in ok for x in r["sigmas"]]
+    lines.append(f"Thread colours within 1σ of the truth (worst channel) {sum(x <= 1 for x in within)} of {len(within)}, "
+                 f"within 2σ {sum(x <= 2 for x in within)}, within 3σ {sum(x <= 3 for x in within)}.")
     resolved = [r for r in ok if r["counts_resolved"]]
     worst = max((max(abs(r["ends_ratio"] - 1), abs(r["picks_ratio"] - 1)) for r in resolved), default=0)
     lines.append(f"Ends and picks from the close-up on {len(resolved)} of {len(ok)}, the worst {100 * worst:.1f} % off.")

@@ -1,5 +1,6 @@
 // The fit's covariance against a straight line fitted by least squares, whose covariance is known
-// in closed form, and against a pure scale y = a·x, which a level error ε moves by exactly a·ε.
+// in closed form, and against a pure scale y = a·x, which a level error ε moves by exactly a·ε
+// (two independent such errors in quadrature).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,8 +20,7 @@ TEST(CaptureFitUncertainty, LineFitMatchesTheClosedForm) {
     sx += i;
     sxx += i * i;
   }
-  const std::array<Eigen::VectorXd, 3> none{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
-  const Eigen::MatrixXd cov = weft::fit_covariance(J, f, none, 0.0);
+  const Eigen::MatrixXd cov = weft::fit_covariance(J, f, {});
   const double s2 = n * 0.01 / (n - 2), det = n * sxx - sx * sx;
   EXPECT_NEAR(cov(0, 0), s2 * n / det, 1e-9);
   EXPECT_NEAR(cov(1, 1), s2 * sxx / det, 1e-9);
@@ -40,6 +40,9 @@ TEST(CaptureFitUncertainty, LevelErrorMovesAScaleByItsShare) {
     J(i, 0) = x;              // r = a·x − y
     level[0][i] = -(a * x);   // y → y·(1 + ε)
   }
-  const Eigen::MatrixXd cov = weft::fit_covariance(J, f, level, sigma);
+  const Eigen::MatrixXd cov = weft::fit_covariance(J, f, {{level, sigma}});
   EXPECT_NEAR(std::sqrt(cov(0, 0)), a * sigma, 1e-9);
+  // A second, independent error of the same effect at 3σ: the two add in quadrature.
+  const Eigen::MatrixXd both = weft::fit_covariance(J, f, {{level, sigma}, {level, 3 * sigma}});
+  EXPECT_NEAR(std::sqrt(both(0, 0)), a * sigma * std::sqrt(10.0), 1e-9);
 }

@@ -18,7 +18,7 @@ echo "1/6 the card"
 
 echo "2/6 four photos of linen_plain under the interior map"
 "$weft" capture --simulate linen_plain --map interior --out "$work/shots" --photos 4 --seed 3 --width 800 --height 600
-cp "$(ls "$work/shots"/*.jpg | head -1)" "$out/photo.jpg"
+cp "$work/shots/photo_01.jpg" "$out/photo.jpg"
 
 echo "3/6 the fit"
 "$weft" capture "$work/shots" --out "$work/fitted.json" --report "$out/side_by_side.png" --truth linen_plain --check-map courtyard
