@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -32,8 +31,22 @@ struct Geometry {
   int observations = 0, lights = 0;
   std::array<int, 2> samples{};
   std::array<std::vector<Term>, 2> terms;      // [j][(o·L + l)·N_j + k]
-  std::array<std::vector<glm::dvec3>, 2> flat;  // [j][o]: Σ_l P_l Σ_k volume (what k_d weighs)
+  std::array<std::vector<glm::dvec3>, 2> flat;  // [j][o]: flat_sums
 };
+
+// Σ_l P_l Σ_k (volume factor) for thread j at every observation: what k_d weighs.
+std::vector<glm::dvec3> flat_sums(const Geometry& g, const std::vector<FitLight>& lights, int j) {
+  std::vector<glm::dvec3> out(g.observations, glm::dvec3(0));
+  const int n = g.samples[j];
+  for (int o = 0; o < g.observations; ++o)
+    for (int l = 0; l < g.lights; ++l) {
+      const Term* t = &g.terms[j][(static_cast<size_t>(o) * g.lights + l) * n];
+      double s = 0;
+      for (int k = 0; k < n; ++k) s += t[k].volume;
+      out[o] += s * lights[l].power;
+    }
+  return out;
+}
 
 Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& obs, const std::vector<FitLight>& lights,
                     int tangent_samples) {
@@ -45,7 +58,6 @@ Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& 
     tilts[j] = fabric.threads[j].curve.sample_tilts(tangent_samples);
     g.samples[j] = static_cast<int>(tilts[j].size());
     g.terms[j].assign(static_cast<size_t>(g.observations) * g.lights * g.samples[j], Term{0, 0, 0});
-    g.flat[j].assign(g.observations, glm::dvec3(0));
   }
 #pragma omp parallel for schedule(dynamic)
   for (int o = 0; o < g.observations; ++o) {
@@ -77,7 +89,6 @@ Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& 
       if (q <= kQFloor) continue;
       for (int j = 0; j < 2; ++j) {
         const ThreadParams& p = fabric.threads[j];
-        double volume_sum = 0;
         for (int k = 0; k < g.samples[j]; ++k) {
           if (proj[j][k] <= 0) continue;
           const double w = p.coverage * masking(in[j][k], out[j][k]) * proj[j][k] / q;
@@ -92,12 +103,11 @@ Geometry precompute(const Fabric& fabric, const std::vector<SwatchObservation>& 
           term.theta_h = static_cast<float>(theta_h);
           term.surface = static_cast<float>(fr * cos_half_phi * factor);
           term.volume = static_cast<float>((1 - fr) * (1 - fr) / denom * factor);
-          volume_sum += term.volume;
         }
-        g.flat[j][o] += lights[l].power * volume_sum;
       }
     }
   }
+  for (int j = 0; j < 2; ++j) g.flat[j] = flat_sums(g, lights, j);
   return g;
 }
 
@@ -251,24 +261,14 @@ struct Residuals {
   // The photos' cells at z with each light's power times weight[l]: the model is linear in the
   // lights, so this is how a change in the lighting's shape moves them.
   std::vector<glm::dvec3> cells_with_weights(const Eigen::VectorXd& z, const std::vector<double>& weight) const {
+    std::vector<FitLight> weighted = *lights;
+    for (size_t l = 0; l < weighted.size(); ++l) weighted[l].power *= weight[l];
     std::vector<glm::dvec3> out(cells(), glm::dvec3(0));
     for (int j = 0; j < 2; ++j) {
       const ThreadValues t = thread_values(z, j);
-      const double cs = -0.5 / (t.gamma_s * t.gamma_s), cv = -0.5 / (t.gamma_v * t.gamma_v);
-      const double ns = 1.0 / (t.gamma_s * std::sqrt(2.0 * std::numbers::pi)), nv = 1.0 / (t.gamma_v * std::sqrt(2.0 * std::numbers::pi));
-      const int n = g->samples[j];
-      for (int o = 0; o < cells(); ++o)
-        for (int l = 0; l < g->lights; ++l) {
-          const Term* term = &g->terms[j][(static_cast<size_t>(o) * g->lights + l) * n];
-          double surface = 0, volume = 0, flat = 0;
-          for (int k = 0; k < n; ++k) {
-            const double h2 = term[k].theta_h * term[k].theta_h;
-            surface += term[k].surface * std::exp(cs * h2);
-            volume += term[k].volume * std::exp(cv * h2);
-            flat += term[k].volume;
-          }
-          out[o] += weight[l] * (*lights)[l].power * (surface * ns + t.A * ((1 - t.kd) * volume * nv + t.kd * flat));
-        }
+      const auto surface = lobe_sums(*g, weighted, j, false, t.gamma_s), volume = lobe_sums(*g, weighted, j, true, t.gamma_v);
+      const auto flat = flat_sums(*g, weighted, j);
+      for (int o = 0; o < cells(); ++o) out[o] += surface[o] + t.A * ((1 - t.kd) * volume[o] + t.kd * flat[o]);
     }
     return out;
   }
@@ -381,7 +381,7 @@ CloseupFit refit_with_closeup(Residuals& r, Run& run, const CloseupObservation& 
   for (const CloseupSplit& split : closeup.splits) fit.one_colour = fit.one_colour && (split.lightness || !split.separated());
   if (registered) {
     // The albedos where it read them; else the means (the surface's white in them draws two hues
-    // together, so this ties no more than the albedos would).
+    // together: a looser test than the albedos', which only the clusters' own one hue gates).
     const auto& hue = registered->albedo ? *registered->albedo : registered->mean;
     const glm::dvec3 d = glm::abs(chromaticity(hue[0]) - chromaticity(hue[1]));
     fit.one_colour = fit.one_colour && d.r + d.g + d.b < kRegisteredOneHue;
