@@ -68,7 +68,7 @@ CloseupRegistration register_closeup(const Photo& photo, const ResponseModel& re
                                      double turn) {
   CloseupRegistration out;
   if (!counts.candidate() || counts.ends_per_cm <= 0 || counts.picks_per_cm <= 0 || scale.px_per_mm <= 0 || lights.empty()) {
-    out.why = "the lattice is not resolved";
+    out.why = "the lattice is not resolved, nor a candidate";
     return out;
   }
   const WeaveLayout layout(fabric);

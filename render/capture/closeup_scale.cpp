@@ -7,11 +7,15 @@
 
 namespace weft {
 
-glm::dvec2 CloseupScale::outside_cover(glm::dvec2 p) const {
-  // In the tag's own axes (the detector's corners 0→1 along its +x), half a side out.
+glm::dvec2 CloseupScale::in_tag_axes(glm::dvec2 p) const {
+  // The detector's corners 0→1 along the tag's +x.
   const glm::dvec2 across(-warp.y, warp.x), d = p - centre;
+  return {glm::dot(d, warp), glm::dot(d, across)};
+}
+
+glm::dvec2 CloseupScale::outside_cover(glm::dvec2 p) const {
   const double half = 0.5 * kCoverGrowth * capture_card().closeup_tag.size * px_per_mm;
-  return glm::max(glm::abs(glm::dvec2(glm::dot(d, warp), glm::dot(d, across))) - half, glm::dvec2(0.0));
+  return glm::max(glm::abs(in_tag_axes(p)) - half, glm::dvec2(0.0));
 }
 
 std::optional<CloseupScale> find_closeup_scale(const Photo& photo) {

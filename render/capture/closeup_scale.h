@@ -17,6 +17,8 @@ struct CloseupScale {
   // The square the tag and its paper cover: the black square grown to kCoverGrowth times its side
   // (the white border is 1.25, the rest is the paper's cut edge and the lens's blur).
   static constexpr double kCoverGrowth = 1.4;
+  // Image point `p` from the black square's centre along the tag's +x and its +y, pixels.
+  glm::dvec2 in_tag_axes(glm::dvec2 p) const;
   // How far image point `p` lies outside that square along the tag's two axes (0 within it).
   glm::dvec2 outside_cover(glm::dvec2 p) const;
   bool covers(glm::dvec2 p) const { return outside_cover(p) == glm::dvec2(0.0); }

@@ -89,14 +89,13 @@ template <class Read>
 std::optional<glm::dvec3> swatch_level(const Photo& photo, const CloseupScale& scale, const Read& read) {
   const CaptureCard& card = capture_card();
   const double side = card.closeup_tag.size * scale.px_per_mm;  // the black square's, pixels
-  const glm::dvec2 across(-scale.warp.y, scale.warp.x);
   std::array<std::vector<double>, 3> border;
   glm::dvec3 sum(0);
   long swatch = 0, clipped = 0;
   for (int y = 0; y < photo.height; ++y)
     for (int x = 0; x < photo.width; ++x) {
-      const glm::dvec2 p(x + 0.5, y + 0.5), d = p - scale.centre;
-      const double r = std::max(std::abs(glm::dot(d, scale.warp)), std::abs(glm::dot(d, across))) / side;
+      const glm::dvec2 p(x + 0.5, y + 0.5), d = glm::abs(scale.in_tag_axes(p));
+      const double r = std::max(d.x, d.y) / side;
       const std::optional<glm::dvec3> v = read(x, y);
       if (r >= kBorderIn && r <= kBorderOut) {
         if (!v) return std::nullopt;

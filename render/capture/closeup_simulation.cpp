@@ -8,6 +8,7 @@
 #include "capture/capture_card.h"
 #include "capture/card_samples.h"
 #include "capture/float_radiance.h"
+#include "capture/swatch_frame.h"
 #include "core/weave_layout.h"
 
 namespace weft {
@@ -22,7 +23,8 @@ constexpr int kSupersample = 3;  // per side: the yarns' edges are partial pixel
 SimulatedCloseup simulate_closeup(const Fabric& fabric, const std::vector<FitLight>& lights, const SimulatedCamera& camera,
                        const CloseupSimulationOptions& options) {
   const double t = options.turn;
-  const glm::dvec3 u(std::cos(t), std::sin(t), 0), v(-std::sin(t), std::cos(t), 0);
+  const SurfaceFrame frame = swatch_frame(t);
+  const glm::dvec3 u = frame.u, v = frame.v;
   const FloatRadiance along = float_radiance(fabric, lights, t, kArcBins, options.tangent_samples);
 
   std::mt19937_64 rng(options.seed * 104729 + 17);

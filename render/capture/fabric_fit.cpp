@@ -253,9 +253,15 @@ struct Residuals {
     return c.sums;
   }
 
+  // A thread's share of the swatch's radiance from its lobe sums: the surface's, the volume's and
+  // the flat term k_d weighs (design §2's f_rs + f_rv, summed over the lights).
+  static glm::dvec3 thread_radiance(const ThreadValues& t, const glm::dvec3& surface, const glm::dvec3& volume, const glm::dvec3& flat) {
+    return surface + t.A * ((1 - t.kd) * volume + t.kd * flat);
+  }
+
   // Thread j's share of the swatch's radiance at observation o of g.
   glm::dvec3 thread_at(const ThreadValues& t, int j, int o) const {
-    return lobe(j, false, t.gamma_s)[o] + t.A * ((1 - t.kd) * lobe(j, true, t.gamma_v)[o] + t.kd * g->flat[j][o]);
+    return thread_radiance(t, lobe(j, false, t.gamma_s)[o], lobe(j, true, t.gamma_v)[o], g->flat[j][o]);
   }
 
   // The photos' cells at z with each light's power times weight[l]: the model is linear in the
@@ -268,7 +274,7 @@ struct Residuals {
       const ThreadValues t = thread_values(z, j);
       const auto surface = lobe_sums(*g, weighted, j, false, t.gamma_s), volume = lobe_sums(*g, weighted, j, true, t.gamma_v);
       const auto flat = flat_sums(*g, weighted, j);
-      for (int o = 0; o < cells(); ++o) out[o] += surface[o] + t.A * ((1 - t.kd) * volume[o] + t.kd * flat[o]);
+      for (int o = 0; o < cells(); ++o) out[o] += thread_radiance(t, surface[o], volume[o], flat[o]);
     }
     return out;
   }
